@@ -1,0 +1,113 @@
+/// @file game_object.hpp
+/// @brief The object model students recognise: GameObject and its three kinds.
+///
+/// The hierarchy follows the classic games-physics assignment:
+///
+///     GameObject                  name, position, orientation, scale, colour
+///     ├── DynamicObject           simulated: has mass, is pushed by gravity and contacts
+///     ├── KinematicsObject        moves with a prescribed velocity, pushes, is never pushed
+///     └── CollisionPlane          an infinite plane: a point and a unit normal
+///
+/// The classes hold plain data and have no virtual functions. The World keeps
+/// one contiguous `std::vector` per concrete class, so each stage of the step
+/// loops over an array of one type: the hierarchy is the model you read, not a
+/// virtual call per body or per pair. Nothing here knows about rendering.
+#pragma once
+
+#include <string>
+
+#include "core/types.hpp"
+
+namespace stepwise {
+
+/// @brief Collision shape of a dynamic or kinematic object.
+enum class Shape : std::uint8_t {
+    Sphere,  ///< Ball of `radius` metres around the object's position.
+    Box,     ///< Oriented box whose full edge lengths are the object's `scale`.
+};
+
+/// @brief Display colour, each channel from 0 to 1. Used only by viewers.
+struct Color {
+    float r = 0.8f;  ///< Red, 0–1.
+    float g = 0.8f;  ///< Green, 0–1.
+    float b = 0.8f;  ///< Blue, 0–1.
+};
+
+/// @brief What every object in a scene has: a name, a pose, a size and a colour.
+class GameObject {
+public:
+    std::string name;            ///< Unique within a scene; used in output and errors.
+    Vec3 position{0, 0, 0};      ///< Centre of the object in world space, m.
+    Quat orientation{1, 0, 0, 0};///< Rotation from body to world space (unit quaternion, w first).
+    Vec3 scale{1, 1, 1};         ///< Full size, m: a box's edge lengths; a sphere's diameter when no radius is given.
+    Color color;                 ///< Display colour.
+};
+
+/// @brief A simulated rigid body: gravity and contacts change its motion.
+///
+/// The body's state is (position, orientation, velocity, angular velocity).
+/// Its per-object `constantAcceleration` (m/s², from the scene's
+/// Acceleration fields) is added to the World's gravity every step;
+/// `acceleration` is the total computed for the current step by the
+/// apply-forces stage, kept on the body so the integrators and a debugger
+/// can see it.
+class DynamicObject : public GameObject {
+public:
+    Shape shape = Shape::Sphere;     ///< Collision shape.
+    Real radius = Real(0.5);         ///< Sphere radius, m (unused by boxes).
+    Real mass = Real(1);             ///< Mass, kg; always > 0.
+    Real inverseMass = Real(1);      ///< 1/mass, 1/kg; what the impulse formulas use.
+    Vec3 velocity{0, 0, 0};          ///< Linear velocity of the centre of mass, m/s.
+    Vec3 angularVelocity{0, 0, 0};   ///< Angular velocity in world space, rad/s.
+    Vec3 constantAcceleration{0, 0, 0}; ///< The scene's per-object acceleration, m/s² (added to gravity).
+    Vec3 acceleration{0, 0, 0};      ///< Total acceleration this step, m/s² (written by apply-forces).
+    Real elasticity = Real(0.5);     ///< Coefficient of restitution, 0–1.
+    Real friction = Real(0.5);       ///< Coulomb friction coefficient, ≥ 0.
+
+    /// @brief Sets `mass` and keeps `inverseMass` consistent with it.
+    /// @param kilograms mass in kg; the scene loader has checked it is > 0.
+    void setMass(Real kilograms) {
+        mass = kilograms;
+        inverseMass = Real(1) / kilograms;
+    }
+
+    /// @brief Half the box's edge lengths, m (the box extends ±halfExtents in body space).
+    Vec3 halfExtents() const { return scale * Real(0.5); }
+};
+
+/// @brief A body whose motion is prescribed: it moves with constant velocity
+/// and angular velocity, pushes dynamic bodies and is never pushed back.
+///
+/// In the impulse formulas it behaves as if it had infinite mass
+/// (inverse mass 0) but a non-zero velocity.
+class KinematicsObject : public GameObject {
+public:
+    Shape shape = Shape::Box;        ///< Collision shape.
+    Real radius = Real(0.5);         ///< Sphere radius, m (unused by boxes).
+    Vec3 velocity{0, 0, 0};          ///< Prescribed linear velocity, m/s.
+    Vec3 angularVelocity{0, 0, 0};   ///< Prescribed angular velocity in world space, rad/s.
+    Real elasticity = Real(1);       ///< Restitution factor, 0–1 (combined by product).
+    Real friction = Real(1);         ///< Friction factor, ≥ 0 (combined by product).
+
+    /// @brief Half the box's edge lengths, m.
+    Vec3 halfExtents() const { return scale * Real(0.5); }
+};
+
+/// @brief An infinite, immovable plane: every point p with (p − position)·normal = 0.
+///
+/// The half-space behind the plane, (p − position)·normal < 0, is solid:
+/// a sphere is pushed out along `normal`.
+class CollisionPlane : public GameObject {
+public:
+    Vec3 normal{0, 1, 0};            ///< Unit normal pointing out of the solid side.
+    Real elasticity = Real(1);       ///< Restitution factor, 0–1 (combined by product).
+    Real friction = Real(1);         ///< Friction factor, ≥ 0 (combined by product).
+
+    /// @brief Signed distance of point @p p from the plane, m (positive on the normal's side).
+    Real signedDistance(const Vec3& p) const { return glm::dot(p - position, normal); }
+};
+
+/// @brief Human-readable name of a shape ("Sphere", "Box").
+const char* toString(Shape shape);
+
+}  // namespace stepwise

@@ -1,0 +1,26 @@
+/// @file scene.hpp
+/// @brief A scene as loaded from a file: settings plus the objects of each kind.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "objects/game_object.hpp"
+#include "world/world_settings.hpp"
+
+namespace stepwise {
+
+/// @brief Everything a scene file describes, before it becomes a World.
+///
+/// The scene loader fills a Scene completely or throws: there is never a
+/// half-loaded Scene. Objects keep the order of the file within each kind.
+struct Scene {
+    std::string sourcePath;                  ///< File it came from ("" when built in code).
+    WorldSettings settings;                  ///< From the `World` record, or defaults.
+    std::vector<DynamicObject> dynamics;     ///< Simulated bodies.
+    std::vector<KinematicsObject> kinematics;///< Prescribed-motion bodies.
+    std::vector<CollisionPlane> planes;      ///< Infinite planes.
+    std::vector<std::string> warnings;       ///< Things that load but may surprise (e.g. features not yet simulated).
+};
+
+}  // namespace stepwise

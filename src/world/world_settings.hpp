@@ -1,0 +1,32 @@
+/// @file world_settings.hpp
+/// @brief The simulation parameters a scene's `World` record sets.
+#pragma once
+
+#include "core/types.hpp"
+
+namespace stepwise {
+
+/// @brief Which time integrator advances the bodies (see src/integrators/).
+enum class IntegratorKind : std::uint8_t {
+    ExplicitEuler,    ///< x ← x + h·v, v ← v + h·a, both from the old state. First order; gains energy.
+    SymplecticEuler,  ///< v ← v + h·a, then x ← x + h·v_new. First order; energy bounded.
+    Verlet,           ///< Velocity Verlet. Second order; energy bounded; exact for constant a.
+};
+
+/// @brief Scene-file spelling of an integrator ("Euler", "SymplecticEuler", "Verlet").
+const char* toString(IntegratorKind kind);
+
+/// @brief Default time step, s: 60 steps per second, the usual display rate.
+inline constexpr Real kDefaultTimeStep = Real(1) / Real(60);
+/// @brief Default run length of `stepwise run`, s.
+inline constexpr Real kDefaultDuration = Real(10);
+
+/// @brief Global simulation settings: one per World.
+struct WorldSettings {
+    Vec3 gravity{0, -kStandardGravity, 0};             ///< Uniform gravitational acceleration, m/s².
+    Real timeStep = kDefaultTimeStep;                  ///< Fixed step h, s; > 0.
+    IntegratorKind integrator = IntegratorKind::SymplecticEuler; ///< Time integrator.
+    Real duration = kDefaultDuration;                  ///< Default run length, s; > 0.
+};
+
+}  // namespace stepwise
