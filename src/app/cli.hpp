@@ -1,0 +1,45 @@
+/// @file cli.hpp
+/// @brief The `stepwise` command line: parsed options and the commands they run.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace stepwise::cli {
+
+/// Exit codes, as documented in the README.
+inline constexpr int kExitOk = 0;              ///< Success.
+inline constexpr int kExitSimulationError = 1; ///< The simulation reached an impossible state.
+inline constexpr int kExitUsageError = 2;      ///< Bad command line or bad scene file.
+
+/// @brief Thrown for a malformed command line; the message says what and how to fix it.
+class UsageError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+/// @brief Options of `stepwise run`.
+struct RunOptions {
+    std::string scenePath;                ///< Scene file; the default scene when not given.
+    std::optional<double> duration;       ///< --duration S: simulated seconds (overrides the scene's Duration).
+    std::optional<std::uint64_t> steps;   ///< --steps N: number of steps (alternative to --duration).
+    std::optional<std::string> csvPath;   ///< --csv PATH: write the trajectory here.
+    std::uint64_t every = 1;              ///< --every K: write a CSV sample every K steps.
+};
+
+/// @brief Parses the arguments after `run`. @throws UsageError.
+RunOptions parseRunOptions(const std::vector<std::string>& args, const std::string& defaultScene);
+
+/// @brief `stepwise run`: simulate, print a summary, optionally write CSV. Returns the exit code.
+int runCommand(const RunOptions& options);
+
+/// @brief `stepwise check FILE`: validate and describe a scene. Returns the exit code.
+int checkCommand(const std::string& scenePath);
+
+/// @brief The usage text printed by `stepwise` and `stepwise --help`.
+const char* usageText();
+
+}  // namespace stepwise::cli

@@ -1,0 +1,203 @@
+/// @file commands.cpp
+/// @brief `stepwise run` and `stepwise check`: load, simulate, report.
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <string>
+
+#include "app/cli.hpp"
+#include "config/scene_loader.hpp"
+#include "core/errors.hpp"
+#include "io/trajectory_csv.hpp"
+#include "world/measurements.hpp"
+#include "world/world.hpp"
+
+namespace stepwise::cli {
+
+namespace {
+
+/// Objects listed one per line in a summary; beyond this the table would scroll away.
+constexpr std::size_t kMaxListedObjects = 20;
+/// Runs shorter than this many steps finish before a progress line is worth drawing.
+constexpr std::uint64_t kProgressMinSteps = 2000;
+/// Seconds between progress redraws.
+constexpr double kProgressInterval = 0.1;
+
+using Clock = std::chrono::steady_clock;
+
+std::string vec(const Vec3& v) {
+    char text[96];
+    std::snprintf(text, sizeof text, "(%.4f, %.4f, %.4f)", double(v.x), double(v.y), double(v.z));
+    return text;
+}
+
+/// Loads a scene, printing every diagnostic; nullptr on failure.
+std::unique_ptr<Scene> loadOrReport(const std::string& path) {
+    try {
+        auto scene = std::make_unique<Scene>(loadSceneFile(path));
+        for (const std::string& warning : scene->warnings) std::fprintf(stderr, "%s\n", warning.c_str());
+        return scene;
+    } catch (const ConfigError& error) {
+        for (const ConfigDiagnostic& d : error.diagnostics()) std::fprintf(stderr, "%s\n", d.message().c_str());
+        std::fprintf(stderr, "stepwise: %zu error(s) in %s; nothing was loaded.\n", error.diagnostics().size(),
+                     path.c_str());
+        return nullptr;
+    }
+}
+
+void printSceneHeader(const std::string& path, const Scene& scene) {
+    const WorldSettings& s = scene.settings;
+    std::printf("Scene %s\n", path.c_str());
+    std::printf("  integrator %s, time step %.6g s (%.4g steps/s), gravity %s m/s^2\n", toString(s.integrator),
+                double(s.timeStep), 1.0 / double(s.timeStep), vec(s.gravity).c_str());
+    std::printf("  %zu dynamic, %zu kinematic, %zu plane(s)\n", scene.dynamics.size(), scene.kinematics.size(),
+                scene.planes.size());
+}
+
+class Progress {
+public:
+    Progress(std::uint64_t totalSteps) : enabled_(isatty(STDERR_FILENO) && totalSteps >= kProgressMinSteps),
+                                         total_(totalSteps) {}
+    void update(std::uint64_t step, double time) {
+        if (!enabled_) return;
+        const auto now = Clock::now();
+        if (std::chrono::duration<double>(now - last_).count() < kProgressInterval) return;
+        last_ = now;
+        const int percent = static_cast<int>(100.0 * double(step) / double(total_));
+        std::fprintf(stderr, "\r  simulating: t = %.3f s, step %llu of %llu (%d%%)  ", time,
+                     static_cast<unsigned long long>(step), static_cast<unsigned long long>(total_), percent);
+    }
+    ~Progress() {
+        if (enabled_) std::fprintf(stderr, "\r%70s\r", "");
+    }
+
+private:
+    bool enabled_;
+    std::uint64_t total_;
+    Clock::time_point last_{};
+};
+
+void printFinalState(const World& world) {
+    std::printf("\nFinal state at t = %.6g s\n", double(world.time()));
+    std::printf("  %-20s %-7s %-32s %s\n", "name", "shape", "position (m)", "velocity (m/s)");
+    std::size_t listed = 0;
+    const std::size_t total = world.dynamics().size() + world.kinematics().size();
+    for (const DynamicObject& b : world.dynamics()) {
+        if (listed++ == kMaxListedObjects) break;
+        std::printf("  %-20s %-7s %-32s %s\n", b.name.c_str(), toString(b.shape), vec(b.position).c_str(),
+                    vec(b.velocity).c_str());
+    }
+    for (const KinematicsObject& b : world.kinematics()) {
+        if (listed++ >= kMaxListedObjects) break;
+        std::printf("  %-20s %-7s %-32s %s  (kinematic)\n", b.name.c_str(), toString(b.shape),
+                    vec(b.position).c_str(), vec(b.velocity).c_str());
+    }
+    if (total > kMaxListedObjects) std::printf("  ... and %zu more\n", total - kMaxListedObjects);
+}
+
+void printConservation(const Energy& before, const Energy& after, const Vec3& p0, const Vec3& p1) {
+    const double e0 = double(before.total());
+    const double e1 = double(after.total());
+    std::printf("\nEnergy (translational kinetic + potential), J\n");
+    std::printf("  start %.6g (kinetic %.6g), end %.6g (kinetic %.6g), change %+.6g",
+                e0, double(before.kinetic), e1, double(after.kinetic), e1 - e0);
+    if (std::abs(e0) > 0) std::printf(" (%+.3f %%)", 100.0 * (e1 - e0) / std::abs(e0));
+    std::printf("\nLinear momentum, kg*m/s\n  start %s, end %s\n", vec(p0).c_str(), vec(p1).c_str());
+}
+
+void printStageTimes(const World& world, double wallSeconds) {
+    std::printf("\nTime per stage (mean over the steps it ran)\n");
+    std::printf("  %-20s %8s %12s %12s\n", "stage", "runs", "us/step", "total ms");
+    for (std::size_t i = 0; i < kStageCount; ++i) {
+        const StageRecord& r = world.stageRecords()[i];
+        const double mean = r.runs ? 1e6 * r.totalSeconds / double(r.runs) : 0.0;
+        std::printf("  %-20s %8llu %12.3f %12.3f\n", stageName(static_cast<Stage>(i)),
+                    static_cast<unsigned long long>(r.runs), mean, 1e3 * r.totalSeconds);
+    }
+    std::printf("  wall time %.3f ms for %llu steps\n", 1e3 * wallSeconds,
+                static_cast<unsigned long long>(world.stepCount()));
+}
+
+}  // namespace
+
+int runCommand(const RunOptions& options) {
+    std::unique_ptr<Scene> scene = loadOrReport(options.scenePath);
+    if (!scene) return kExitUsageError;
+    printSceneHeader(options.scenePath, *scene);
+
+    World world(std::move(*scene));
+    const double h = double(world.settings().timeStep);
+    const double duration = options.duration.value_or(double(world.settings().duration));
+    // Round to the nearest whole step: 10 s at 1/60 s is 600 steps, not 599.99.
+    const std::uint64_t steps = options.steps.value_or(static_cast<std::uint64_t>(std::llround(duration / h)));
+
+    std::FILE* csv = nullptr;
+    if (options.csvPath) {
+        csv = std::fopen(options.csvPath->c_str(), "w");
+        if (!csv) {
+            std::fprintf(stderr, "stepwise: error: cannot write CSV file '%s'\n", options.csvPath->c_str());
+            return kExitUsageError;
+        }
+        writeTrajectoryHeader(csv);
+        writeTrajectoryRows(csv, world);
+    }
+
+    const Energy energyBefore = energyOf(world);
+    const Vec3 momentumBefore = linearMomentumOf(world);
+    const auto start = Clock::now();
+    int exitCode = kExitOk;
+    {
+        Progress progress(steps);
+        try {
+            for (std::uint64_t i = 0; i < steps; ++i) {
+                world.step();
+                if (csv && world.stepCount() % options.every == 0) writeTrajectoryRows(csv, world);
+                progress.update(world.stepCount(), double(world.time()));
+            }
+        } catch (const SimulationError& error) {
+            std::fprintf(stderr, "stepwise: simulation failed: %s\n", error.what());
+            exitCode = kExitSimulationError;
+        }
+    }
+    const double wall = std::chrono::duration<double>(Clock::now() - start).count();
+    if (csv) std::fclose(csv);
+
+    std::printf("Simulated %.6g s in %llu steps\n", double(world.time()),
+                static_cast<unsigned long long>(world.stepCount()));
+    printFinalState(world);
+    printConservation(energyBefore, energyOf(world), momentumBefore, linearMomentumOf(world));
+    printStageTimes(world, wall);
+    if (csv) std::printf("\nTrajectory written to %s\n", options.csvPath->c_str());
+    return exitCode;
+}
+
+int checkCommand(const std::string& scenePath) {
+    std::unique_ptr<Scene> scene = loadOrReport(scenePath);
+    if (!scene) return kExitUsageError;
+    printSceneHeader(scenePath, *scene);
+    std::printf("  duration %.6g s\n", double(scene->settings.duration));
+    for (const DynamicObject& b : scene->dynamics) {
+        std::printf("  DynamicObject    %-16s %-6s at %s m, v %s m/s, mass %.6g kg, ", b.name.c_str(),
+                    toString(b.shape), vec(b.position).c_str(), vec(b.velocity).c_str(), double(b.mass));
+        if (b.shape == Shape::Sphere) std::printf("radius %.6g m, ", double(b.radius));
+        else std::printf("size %s m, ", vec(b.scale).c_str());
+        std::printf("elasticity %.3g, friction %.3g\n", double(b.elasticity), double(b.friction));
+    }
+    for (const KinematicsObject& b : scene->kinematics) {
+        std::printf("  KinematicsObject %-16s %-6s at %s m, v %s m/s, ", b.name.c_str(), toString(b.shape),
+                    vec(b.position).c_str(), vec(b.velocity).c_str());
+        if (b.shape == Shape::Sphere) std::printf("radius %.6g m\n", double(b.radius));
+        else std::printf("size %s m\n", vec(b.scale).c_str());
+    }
+    for (const CollisionPlane& p : scene->planes) {
+        std::printf("  CollisionPlane   %-16s through %s m, normal %s\n", p.name.c_str(), vec(p.position).c_str(),
+                    vec(p.normal).c_str());
+    }
+    std::printf("OK: %s is a valid scene.\n", scenePath.c_str());
+    return kExitOk;
+}
+
+}  // namespace stepwise::cli

@@ -1,0 +1,86 @@
+/// @file options.cpp
+/// @brief Parsing and usage text of the command line.
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+
+#include "app/cli.hpp"
+
+namespace stepwise::cli {
+
+const char* usageText() {
+    return "Stepwise - a rigid-body physics engine for teaching\n"
+           "\n"
+           "Usage:\n"
+           "  stepwise run [FILE] [--duration S | --steps N] [--csv PATH] [--every K]\n"
+           "      Simulate the scene in FILE (the default scene when omitted) and print a\n"
+           "      summary: objects, final state, energy, momentum, time per stage.\n"
+           "      --duration S  simulated seconds (default: the scene's World Duration)\n"
+           "      --steps N     number of time steps instead of a duration\n"
+           "      --csv PATH    write the trajectory as CSV: time,name,px,py,pz,vx,vy,vz,\n"
+           "                    qw,qx,qy,qz,wx,wy,wz, one row per object per sample,\n"
+           "                    starting with the initial state at time 0\n"
+           "      --every K     write a CSV sample every K steps (default 1)\n"
+           "  stepwise check FILE\n"
+           "      Validate FILE and print what it contains.\n"
+           "  stepwise --help\n"
+           "\n"
+           "Exit codes: 0 success, 1 the simulation failed (non-finite state),\n"
+           "            2 bad command line or bad scene file.\n"
+           "Scene format: docs/config-format.md\n";
+}
+
+namespace {
+
+double parsePositiveSeconds(const std::string& option, const std::string& text) {
+    char* end = nullptr;
+    const double value = std::strtod(text.c_str(), &end);
+    if (text.empty() || *end != '\0' || !std::isfinite(value) || value <= 0) {
+        throw UsageError(option + " expects a number of seconds > 0, found '" + text + "'");
+    }
+    return value;
+}
+
+std::uint64_t parsePositiveCount(const std::string& option, const std::string& text) {
+    std::uint64_t value = 0;
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (text.empty() || error != std::errc() || end != text.data() + text.size() || value == 0) {
+        throw UsageError(option + " expects a whole number > 0, found '" + text + "'");
+    }
+    return value;
+}
+
+}  // namespace
+
+RunOptions parseRunOptions(const std::vector<std::string>& args, const std::string& defaultScene) {
+    RunOptions options;
+    bool sceneGiven = false;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        const std::string& arg = args[i];
+        auto value = [&]() -> const std::string& {
+            if (i + 1 >= args.size()) throw UsageError(arg + " needs a value");
+            return args[++i];
+        };
+        if (arg == "--duration") {
+            options.duration = parsePositiveSeconds(arg, value());
+        } else if (arg == "--steps") {
+            options.steps = parsePositiveCount(arg, value());
+        } else if (arg == "--csv") {
+            options.csvPath = value();
+        } else if (arg == "--every") {
+            options.every = parsePositiveCount(arg, value());
+        } else if (arg.size() > 1 && arg[0] == '-') {
+            throw UsageError("unknown option '" + arg + "' for 'run'");
+        } else if (sceneGiven) {
+            throw UsageError("'run' takes one scene file, got '" + options.scenePath + "' and '" + arg + "'");
+        } else {
+            options.scenePath = arg;
+            sceneGiven = true;
+        }
+    }
+    if (options.duration && options.steps) throw UsageError("give --duration or --steps, not both");
+    if (!sceneGiven) options.scenePath = defaultScene;
+    return options;
+}
+
+}  // namespace stepwise::cli

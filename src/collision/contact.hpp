@@ -1,0 +1,43 @@
+/// @file contact.hpp
+/// @brief What collision detection hands to collision response.
+#pragma once
+
+#include <cstdint>
+
+#include "core/types.hpp"
+
+namespace stepwise {
+
+/// @brief Which array a body lives in.
+enum class BodyKind : std::uint8_t {
+    Dynamic,    ///< World dynamics array.
+    Kinematic,  ///< World kinematics array.
+    Plane,      ///< World planes array.
+};
+
+/// @brief A reference to one object of the World: its kind and its index in that kind's array.
+struct BodyRef {
+    BodyKind kind = BodyKind::Dynamic;  ///< Which array.
+    std::uint32_t index = 0;            ///< Index in that array.
+};
+
+/// @brief A pair the broadphase could not rule out. Body A is always dynamic.
+struct CandidatePair {
+    std::uint32_t a = 0;  ///< Index of the dynamic body A.
+    BodyRef b;            ///< The other body.
+};
+
+/// @brief One point of contact between dynamic body A and body B.
+///
+/// Convention (as in Box2D): the normal points from A towards B. A moves
+/// along −normal and B along +normal to separate. The relative normal
+/// velocity v_n = (v_B − v_A)·n is negative while the bodies approach.
+struct Contact {
+    std::uint32_t a = 0;  ///< Index of the dynamic body A.
+    BodyRef b;            ///< The other body.
+    Vec3 normal{0, 1, 0}; ///< Unit vector from A towards B.
+    Vec3 point{0, 0, 0};  ///< World-space point midway through the overlap, m.
+    Real depth = 0;       ///< Penetration depth along the normal, m (≥ 0 when touching).
+};
+
+}  // namespace stepwise

@@ -1,0 +1,59 @@
+/// @file narrowphase.hpp
+/// @brief Stage 5 of the step: exact shape tests, one file per shape pair, chosen from one table.
+#pragma once
+
+#include <vector>
+
+#include "collision/contact.hpp"
+#include "world/body_set.hpp"
+
+namespace stepwise {
+
+/// Two surfaces closer than this count as touching, m. It absorbs round-off
+/// (a sphere pushed out to exactly touching may land a few ulps away), so a
+/// resting body keeps its contact from step to step instead of flickering.
+inline constexpr Real kTouchTolerance = Real(1e-6);
+
+/// @brief Kinds of geometry the pair tests understand.
+enum class GeometryType : std::uint8_t { Sphere, Box, Plane, Count };
+
+/// @brief The shape of one object in world space, as the pair tests see it.
+struct Geometry {
+    GeometryType type = GeometryType::Sphere;  ///< Which fields below are meaningful.
+    Vec3 centre{0, 0, 0};                      ///< Sphere/box centre, or a point on a plane, m.
+    Quat orientation{1, 0, 0, 0};              ///< Box orientation.
+    Vec3 halfExtents{0, 0, 0};                 ///< Box half edge lengths, m.
+    Real radius = 0;                           ///< Sphere radius, m.
+    Vec3 normal{0, 1, 0};                      ///< Plane unit normal.
+};
+
+/// @brief Result of a pair test: where and how deep, normal from the first shape to the second.
+struct ContactGeometry {
+    Vec3 normal{0, 1, 0};  ///< Unit, from shape A towards shape B.
+    Vec3 point{0, 0, 0};   ///< World point midway through the overlap, m.
+    Real depth = 0;        ///< Overlap along the normal, m.
+};
+
+/// @brief A pair test: true (and @p out filled) when A and B touch or overlap.
+using PairTest = bool (*)(const Geometry& a, const Geometry& b, ContactGeometry& out);
+
+/// @brief Sphere against sphere (src/collision/sphere_sphere.cpp).
+bool collideSphereSphere(const Geometry& a, const Geometry& b, ContactGeometry& out);
+/// @brief Sphere against plane (src/collision/sphere_plane.cpp).
+bool collideSpherePlane(const Geometry& a, const Geometry& b, ContactGeometry& out);
+/// @brief Sphere against oriented box (src/collision/sphere_box.cpp).
+bool collideSphereBox(const Geometry& a, const Geometry& b, ContactGeometry& out);
+
+/// @brief The pair test for shape A against shape B, or nullptr when that pair has none yet.
+PairTest pairTestFor(GeometryType a, GeometryType b);
+
+/// @brief The geometry of a dynamic body, a kinematic body or a plane.
+Geometry geometryOf(const DynamicObject& body);
+Geometry geometryOf(const KinematicsObject& body);  ///< @copydoc geometryOf(const DynamicObject&)
+Geometry geometryOf(const CollisionPlane& plane);   ///< @copydoc geometryOf(const DynamicObject&)
+
+/// @brief Runs the exact test on every candidate pair and collects the contacts.
+/// @param contacts output, cleared first
+void findContacts(const BodySet& bodies, const std::vector<CandidatePair>& pairs, std::vector<Contact>& contacts);
+
+}  // namespace stepwise

@@ -1,0 +1,26 @@
+/// @file sphere_plane.cpp
+/// @brief Sphere against an infinite plane: one dot product.
+///
+/// The signed distance of the centre c from the plane through p with unit
+/// normal n is s = (c − p)·n. The sphere overlaps the solid half-space when
+/// s < r; the depth is r − s and the sphere is pushed out along n. The
+/// contact normal (from the sphere towards the plane) is therefore −n.
+/// Reference: Ericson, *Real-Time Collision Detection*, §5.2.2.
+#include <cmath>
+
+#include "collision/narrowphase.hpp"
+
+namespace stepwise {
+
+bool collideSpherePlane(const Geometry& sphere, const Geometry& plane, ContactGeometry& out) {
+    const Real signedDistance = glm::dot(sphere.centre - plane.centre, plane.normal);
+    if (signedDistance > sphere.radius + kTouchTolerance) return false;
+
+    out.normal = -plane.normal;
+    out.depth = sphere.radius - signedDistance;
+    // Midway between the sphere's deepest point and the plane surface.
+    out.point = sphere.centre - plane.normal * (signedDistance + Real(0.5) * out.depth);
+    return true;
+}
+
+}  // namespace stepwise

@@ -1,0 +1,63 @@
+/// @file contact_body.hpp
+/// @brief The other body of a contact, whatever its kind, as the impulse formulas see it.
+#pragma once
+
+#include "collision/contact.hpp"
+#include "world/body_set.hpp"
+
+namespace stepwise {
+
+/// @brief Body B of a contact: a dynamic body, a kinematic body (infinite
+/// mass, prescribed velocity) or a plane (infinite mass, at rest).
+///
+/// Folding the three kinds into one view lets the impulse formula be
+/// written once: a kinematic body or plane is simply one with m⁻¹ = 0.
+struct ContactBody {
+    DynamicObject* dynamic = nullptr;  ///< The body when it is dynamic, else nullptr.
+    Vec3 velocity{0, 0, 0};            ///< Velocity of B's material at the contact point, m/s.
+    Vec3 acceleration{0, 0, 0};        ///< Acceleration of B, m/s² (zero unless dynamic).
+    Real inverseMass = 0;              ///< 1/m, 1/kg (0 for kinematic bodies and planes).
+    Real elasticity = 1;               ///< Restitution factor of B's material.
+    Real friction = 1;                 ///< Friction factor of B's material.
+
+    /// @brief Changes B's velocity by impulse/mass (nothing when B cannot be pushed).
+    void applyImpulse(const Vec3& impulse) {
+        if (dynamic == nullptr) return;
+        dynamic->velocity += impulse * inverseMass;
+        velocity = dynamic->velocity;
+    }
+};
+
+/// @brief Looks up body @p ref and describes it at world point @p point.
+inline ContactBody contactBody(const BodySet& bodies, const BodyRef& ref, const Vec3& point) {
+    ContactBody view;
+    switch (ref.kind) {
+        case BodyKind::Dynamic: {
+            DynamicObject& body = bodies.dynamics[ref.index];
+            view.dynamic = &body;
+            view.velocity = body.velocity;
+            view.acceleration = body.acceleration;
+            view.inverseMass = body.inverseMass;
+            view.elasticity = body.elasticity;
+            view.friction = body.friction;
+            break;
+        }
+        case BodyKind::Kinematic: {
+            const KinematicsObject& body = bodies.kinematics[ref.index];
+            // A turning kinematic body's surface moves at v + ω × r.
+            view.velocity = body.velocity + glm::cross(body.angularVelocity, point - body.position);
+            view.elasticity = body.elasticity;
+            view.friction = body.friction;
+            break;
+        }
+        case BodyKind::Plane: {
+            const CollisionPlane& plane = bodies.planes[ref.index];
+            view.elasticity = plane.elasticity;
+            view.friction = plane.friction;
+            break;
+        }
+    }
+    return view;
+}
+
+}  // namespace stepwise

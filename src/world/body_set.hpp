@@ -1,0 +1,22 @@
+/// @file body_set.hpp
+/// @brief The World's arrays of objects, handed to each stage as one argument.
+#pragma once
+
+#include <span>
+
+#include "objects/game_object.hpp"
+
+namespace stepwise {
+
+/// @brief Views of the World's three contiguous object arrays.
+///
+/// Stages receive this instead of the World so that each stage declares,
+/// by its signature, that it only works on bodies: it cannot reach the
+/// settings, the clock or the renderer.
+struct BodySet {
+    std::span<DynamicObject> dynamics;             ///< Simulated bodies (stages may change them).
+    std::span<const KinematicsObject> kinematics;  ///< Prescribed-motion bodies (read-only here).
+    std::span<const CollisionPlane> planes;        ///< Infinite planes (read-only).
+};
+
+}  // namespace stepwise

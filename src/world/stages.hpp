@@ -1,0 +1,39 @@
+/// @file stages.hpp
+/// @brief The named stages of one step, and what the World records about each.
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+namespace stepwise {
+
+/// @brief Stages of World::step(), in the order they run.
+enum class Stage : std::uint8_t {
+    ApplyForces,       ///< Gravity and per-object accelerations → DynamicObject::acceleration.
+    Integrate,         ///< Advance dynamic bodies by one time step (Euler, symplectic Euler or Verlet).
+    MoveKinematics,    ///< Advance kinematic bodies along their prescribed motion.
+    Broadphase,        ///< Cheap bounding-box tests → candidate pairs.
+    Narrowphase,       ///< Exact shape tests on candidate pairs → contacts.
+    ResolveImpulses,   ///< Normal (restitution) and friction impulses change velocities.
+    CorrectPositions,  ///< Push overlapping bodies apart (positions only).
+    Count              ///< Number of stages (not a stage).
+};
+
+/// @brief Number of stages in a step.
+inline constexpr std::size_t kStageCount = static_cast<std::size_t>(Stage::Count);
+
+/// @brief Short name of a stage, as printed in summaries and errors ("integrate", …).
+const char* stageName(Stage stage);
+
+/// @brief What the World measured about one stage.
+struct StageRecord {
+    bool ranLastStep = false;    ///< Did the stage run in the most recent step?
+    std::uint64_t runs = 0;      ///< Steps in which it ran.
+    double lastSeconds = 0;      ///< Wall-clock time of its most recent run, s.
+    double totalSeconds = 0;     ///< Wall-clock time summed over all runs, s.
+};
+
+/// @brief One record per stage, indexed by Stage.
+using StageRecords = std::array<StageRecord, kStageCount>;
+
+}  // namespace stepwise

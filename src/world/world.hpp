@@ -1,0 +1,76 @@
+/// @file world.hpp
+/// @brief The World: owns the objects and runs the step pipeline.
+#pragma once
+
+#include <cstdint>
+#include <string_view>
+#include <vector>
+
+#include "collision/broadphase.hpp"
+#include "collision/contact.hpp"
+#include "dynamics/impulse_resolver.hpp"
+#include "world/body_set.hpp"
+#include "world/scene.hpp"
+#include "world/stages.hpp"
+#include "world/world_settings.hpp"
+
+namespace stepwise {
+
+/// @brief A running simulation: the objects of a Scene plus the clock and the step pipeline.
+///
+/// Call step() to advance by one fixed time step. The World keeps one
+/// contiguous array per kind of object; everything a stage produces
+/// (candidate pairs, contacts, impulses) lives in arrays that are reused from
+/// step to step, so a step allocates no memory once the scene has settled.
+class World {
+public:
+    /// @brief Takes the objects and settings of @p scene.
+    /// @throws std::invalid_argument naming the object when a value is impossible
+    ///         (mass ≤ 0, radius ≤ 0, non-finite numbers, zero plane normal, time step ≤ 0).
+    explicit World(Scene scene);
+
+    /// @brief Advances the simulation by one time step (see world.cpp for the stages).
+    /// @throws SimulationError when a stage leaves a non-finite state, naming object, stage and step.
+    void step();
+
+    const WorldSettings& settings() const { return settings_; }  ///< The scene's World record.
+    Real time() const { return time_; }                           ///< Simulated time, s.
+    std::uint64_t stepCount() const { return stepCount_; }        ///< Steps taken so far.
+
+    std::vector<DynamicObject>& dynamics() { return dynamics_; }              ///< Simulated bodies.
+    const std::vector<DynamicObject>& dynamics() const { return dynamics_; }  ///< Simulated bodies.
+    std::vector<KinematicsObject>& kinematics() { return kinematics_; }       ///< Prescribed-motion bodies.
+    const std::vector<KinematicsObject>& kinematics() const { return kinematics_; }  ///< Prescribed-motion bodies.
+    const std::vector<CollisionPlane>& planes() const { return planes_; }     ///< Infinite planes.
+
+    /// @brief The dynamic body called @p name, or nullptr.
+    const DynamicObject* findDynamic(std::string_view name) const;
+
+    const std::vector<CandidatePair>& candidatePairs() const { return pairs_; }  ///< Last broadphase output.
+    const std::vector<Contact>& contacts() const { return contacts_; }           ///< Last narrowphase output.
+    const std::vector<ImpulseReport>& impulses() const { return impulses_; }     ///< One per contact, last step.
+    const StageRecords& stageRecords() const { return stageRecords_; }           ///< Per-stage timing.
+
+private:
+    /// Runs one stage: times it, records it, then checks the state it left.
+    template <class StageBody>
+    void runStage(Stage stage, StageBody&& body);
+    void checkFinite(Stage stage) const;
+    BodySet bodies();
+
+    WorldSettings settings_;
+    std::vector<DynamicObject> dynamics_;
+    std::vector<KinematicsObject> kinematics_;
+    std::vector<CollisionPlane> planes_;
+
+    std::vector<Aabb> boundingBoxes_;
+    std::vector<CandidatePair> pairs_;
+    std::vector<Contact> contacts_;
+    std::vector<ImpulseReport> impulses_;
+
+    StageRecords stageRecords_{};
+    Real time_ = 0;
+    std::uint64_t stepCount_ = 0;
+};
+
+}  // namespace stepwise

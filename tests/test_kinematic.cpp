@@ -1,0 +1,125 @@
+// Kinematic objects: prescribed motion, pushing, never pushed; sphere-box detection.
+// Tags: [kinematic], [sphere-box].
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "collision/narrowphase.hpp"
+#include "test_support.hpp"
+
+using namespace stepwise;
+using Catch::Matchers::WithinAbs;
+
+namespace {
+
+KinematicsObject kinematicBox(const std::string& name, Vec3 position, Vec3 size, Vec3 velocity = Vec3(0)) {
+    KinematicsObject box;
+    box.name = name;
+    box.shape = Shape::Box;
+    box.position = position;
+    box.scale = size;
+    box.velocity = velocity;
+    return box;
+}
+
+Geometry boxGeometry(Vec3 centre, Vec3 halfExtents, Quat orientation = Quat(1, 0, 0, 0)) {
+    Geometry g;
+    g.type = GeometryType::Box;
+    g.centre = centre;
+    g.halfExtents = halfExtents;
+    g.orientation = orientation;
+    return g;
+}
+
+Geometry sphereGeometry(Vec3 centre, Real radius) {
+    Geometry g;
+    g.centre = centre;
+    g.radius = radius;
+    return g;
+}
+
+}  // namespace
+
+TEST_CASE("Sphere-box finds the closest point on a face, an edge and a corner", "[sphere-box]") {
+    const Geometry box = boxGeometry(Vec3(0), Vec3(1, 1, 1));
+    ContactGeometry c;
+    SECTION("face") {
+        REQUIRE(collideSphereBox(sphereGeometry(Vec3(0, 1.4, 0), 0.5), box, c));
+        CHECK_THAT(c.depth, WithinAbs(0.1, 1e-12));
+        CHECK(glm::length(c.normal - Vec3(0, -1, 0)) < 1e-12);
+    }
+    SECTION("edge") {
+        const Real d = 0.45;  // distance from the edge (1, 1, z) along the diagonal
+        const Vec3 centre = Vec3(1, 1, 0.3) + d * glm::normalize(Vec3(1, 1, 0));
+        REQUIRE(collideSphereBox(sphereGeometry(centre, 0.5), box, c));
+        CHECK_THAT(c.depth, WithinAbs(0.05, 1e-12));
+        CHECK(glm::length(c.normal + glm::normalize(Vec3(1, 1, 0))) < 1e-12);
+    }
+    SECTION("corner, just out of reach") {
+        const Vec3 centre = Vec3(1, 1, 1) + Real(0.51) * glm::normalize(Vec3(1, 1, 1));
+        CHECK_FALSE(collideSphereBox(sphereGeometry(centre, 0.5), box, c));
+    }
+    SECTION("centre inside: leave through the nearest face") {
+        REQUIRE(collideSphereBox(sphereGeometry(Vec3(0.2, 0.1, -0.9), 0.5), box, c));
+        CHECK(glm::length(c.normal - Vec3(0, 0, 1)) < 1e-12);  // nearest face is z = −1
+        CHECK_THAT(c.depth, WithinAbs(0.5 + 0.1, 1e-12));
+    }
+    SECTION("rotated box") {
+        // Box turned 45° about z: its corner (√2, 0) now points along +x.
+        const Geometry turned = boxGeometry(Vec3(0), Vec3(1, 1, 1), glm::angleAxis(kPi / 4, Vec3(0, 0, 1)));
+        REQUIRE(collideSphereBox(sphereGeometry(Vec3(std::sqrt(2.0) + 0.4, 0, 0), 0.5), turned, c));
+        CHECK_THAT(c.depth, WithinAbs(0.1, 1e-12));
+        CHECK(glm::length(c.normal - Vec3(-1, 0, 0)) < 1e-12);
+    }
+}
+
+TEST_CASE("A kinematic body follows its prescribed velocity and is never pushed", "[kinematic]") {
+    Scene scene = test::emptyScene(IntegratorKind::SymplecticEuler, Real(1) / 60, Vec3(0));
+    scene.kinematics.push_back(kinematicBox("paddle", Vec3(0, 0, 0), Vec3(1, 1, 1), Vec3(1, 0, 0)));
+    scene.dynamics.push_back(test::sphere("ball", Vec3(3, 0, 0), Vec3(-4, 0, 0), 0.5, 100, 1));  // heavy, fast
+    World world(scene);
+    bool hit = false;
+    while (world.time() < 2 - 1e-9) {
+        world.step();
+        hit = hit || !world.contacts().empty();
+        const KinematicsObject& paddle = world.kinematics()[0];
+        CHECK(glm::length(paddle.position - Vec3(world.time(), 0, 0)) < 1e-12);
+        CHECK(glm::length(paddle.velocity - Vec3(1, 0, 0)) == 0);
+    }
+    CHECK(hit);
+}
+
+TEST_CASE("A moving kinematic wall returns an elastic ball at 2u - v", "[kinematic]") {
+    // In the wall's frame the ball arrives at v − u and leaves at −(v − u);
+    // back in the ground frame that is 2u − v. Here u = +2, v = −1: 5 m/s.
+    Scene scene = test::emptyScene(IntegratorKind::Verlet, Real(1) / 120, Vec3(0));
+    scene.kinematics.push_back(kinematicBox("wall", Vec3(0, 0, 0), Vec3(1, 4, 4), Vec3(2, 0, 0)));
+    scene.dynamics.push_back(test::sphere("ball", Vec3(3, 0, 0), Vec3(-1, 0, 0), 0.5, 1, 1, 0));
+    World world(scene);
+    while (world.time() < 2) world.step();
+    CHECK_THAT(world.dynamics()[0].velocity.x, WithinAbs(5.0, 1e-12));
+}
+
+TEST_CASE("A sphere rests on a kinematic table within 1 mm", "[kinematic]") {
+    Scene scene = test::emptyScene(IntegratorKind::SymplecticEuler, Real(1) / 60);
+    scene.kinematics.push_back(kinematicBox("table", Vec3(0, 0.5, 0), Vec3(2, 1, 2)));
+    scene.dynamics.push_back(test::sphere("ball", Vec3(0.3, 1.25, 0), Vec3(0), 0.25, 1, 0.5));
+    World world(scene);
+    Real worst = 0;
+    while (world.time() < 10) {
+        world.step();
+        worst = std::max(worst, std::abs(world.dynamics()[0].position.y - Real(1.25)));
+    }
+    CHECK(worst < 1e-3);
+}
+
+TEST_CASE("A moving kinematic platform carries a resting sphere by friction", "[kinematic]") {
+    // Static friction drags the ball up to the platform's speed: μ g = 4.9 m/s²
+    // reaches 0.5 m/s in about 0.1 s; after that they move together.
+    Scene scene = test::emptyScene(IntegratorKind::SymplecticEuler, Real(1) / 120);
+    scene.kinematics.push_back(kinematicBox("platform", Vec3(0, -0.5, 0), Vec3(40, 1, 4), Vec3(0.5, 0, 0)));
+    scene.dynamics.push_back(test::sphere("ball", Vec3(0, 0.5, 0), Vec3(0), 0.5, 1, 0, 0.5));
+    World world(scene);
+    while (world.time() < 2) world.step();
+    CHECK_THAT(world.dynamics()[0].velocity.x, WithinAbs(0.5, 1e-9));
+}

@@ -1,0 +1,74 @@
+// The World and its step pipeline: stage records, validation, failing loudly.
+// Tags: [world].
+#include <catch2/catch.hpp>
+
+#include <limits>
+#include <stdexcept>
+
+#include "core/errors.hpp"
+#include "test_support.hpp"
+#include "world/measurements.hpp"
+
+using namespace stepwise;
+using Catch::Matchers::Contains;
+using Catch::Matchers::WithinAbs;
+
+TEST_CASE("Every stage runs once per step and the clock advances by h", "[world]") {
+    Scene scene = test::emptyScene();
+    scene.dynamics.push_back(test::sphere("ball", Vec3(0, 2, 0)));
+    scene.planes.push_back(test::ground());
+    World world(scene);
+    for (int i = 0; i < 3; ++i) world.step();
+    CHECK(world.stepCount() == 3);
+    CHECK_THAT(world.time(), WithinAbs(3.0 / 60, 1e-15));
+    for (std::size_t s = 0; s < kStageCount; ++s) {
+        INFO(stageName(static_cast<Stage>(s)));
+        CHECK(world.stageRecords()[s].runs == 3);
+        CHECK(world.stageRecords()[s].ranLastStep);
+    }
+}
+
+TEST_CASE("A non-finite state stops the step naming object, stage and step", "[world]") {
+    Scene scene = test::emptyScene(IntegratorKind::SymplecticEuler, Real(1) / 60, Vec3(0));
+    scene.dynamics.push_back(test::sphere("calm", Vec3(5, 0, 0)));
+    scene.dynamics.push_back(test::sphere("rocket", Vec3(0), Vec3(0)));
+    scene.dynamics[1].constantAcceleration = Vec3(0, std::numeric_limits<Real>::max(), 0);
+    World world(scene);
+    try {
+        for (int i = 0; i < 1000; ++i) world.step();
+        FAIL("no SimulationError");
+    } catch (const SimulationError& error) {
+        CHECK(error.objectName() == "rocket");
+        CHECK(error.stageName() == "integrate");
+        CHECK_THAT(error.what(), Contains("rocket") && Contains("integrate") && Contains("non-finite"));
+    }
+}
+
+TEST_CASE("A World refuses impossible objects by name", "[world]") {
+    Scene scene = test::emptyScene();
+    scene.dynamics.push_back(test::sphere("ghost", Vec3(0)));
+    SECTION("negative mass") {
+        scene.dynamics[0].mass = -1;
+        CHECK_THROWS_WITH(World(scene), Contains("ghost") && Contains("mass"));
+    }
+    SECTION("zero radius") {
+        scene.dynamics[0].radius = 0;
+        CHECK_THROWS_WITH(World(scene), Contains("ghost") && Contains("radius"));
+    }
+    SECTION("zero plane normal") {
+        CollisionPlane plane = test::ground("floor");
+        plane.normal = Vec3(0);
+        scene.planes.push_back(plane);
+        CHECK_THROWS_WITH(World(scene), Contains("floor") && Contains("normal"));
+    }
+}
+
+TEST_CASE("Free fall converts potential to kinetic energy exactly with Verlet", "[world][verlet]") {
+    // No contacts: E = ½mv² + m g y is constant; Verlet is exact for constant g.
+    Scene scene = test::emptyScene(IntegratorKind::Verlet, Real(1) / 60);
+    scene.dynamics.push_back(test::sphere("drop", Vec3(0, 100, 0), Vec3(1, 2, 0), 0.5, 3));
+    World world(scene);
+    const Real e0 = energyOf(world).total();
+    while (world.time() < 3) world.step();
+    CHECK_THAT(energyOf(world).total(), WithinAbs(e0, 1e-9 * std::abs(e0)));
+}
