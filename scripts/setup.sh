@@ -1,0 +1,50 @@
+#!/usr/bin/env bash
+# Installs the Debian packages Stepwise needs to build, test and document itself.
+#
+#   scripts/setup.sh        safe to run any number of times
+#
+# Every package present: prints one line and exits 0.
+# Some missing, running as root: installs them with apt-get.
+# Some missing, not root: prints the exact `sudo apt-get install …` command and exits 1.
+set -euo pipefail
+
+# What each package is for:
+#   cmake, ninja-build, g++   the build (CMake presets use the Ninja generator)
+#   libglm-dev                vectors, matrices and quaternions (find_package(glm))
+#   freeglut3-dev             OpenGL and GLUT headers and libraries
+#   catch2                    the unit tests (Catch2 v2, find_package(Catch2))
+#   doxygen                   the API reference (`docs` target)
+packages=(cmake ninja-build g++ libglm-dev freeglut3-dev catch2 doxygen)
+
+if ! command -v dpkg-query >/dev/null 2>&1; then
+    echo "setup: dpkg-query not found: this script installs packages on Debian/Ubuntu only." >&2
+    echo "setup: install these (or your system's equivalents) yourself: ${packages[*]}" >&2
+    exit 1
+fi
+
+missing=()
+for pkg in "${packages[@]}"; do
+    status=$(dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null || true)
+    if [[ "$status" != "install ok installed" ]]; then
+        missing+=("$pkg")
+    fi
+done
+
+if [[ ${#missing[@]} -eq 0 ]]; then
+    echo "setup: all packages present"
+    exit 0
+fi
+
+echo "setup: missing packages: ${missing[*]}"
+if [[ $(id -u) -ne 0 ]]; then
+    echo "setup: not root; install them with:" >&2
+    echo "  sudo apt-get update && sudo apt-get install -y --no-install-recommends ${missing[*]}" >&2
+    exit 1
+fi
+
+export DEBIAN_FRONTEND=noninteractive
+# Wait for another apt/dpkg (e.g. unattended-upgrades) instead of failing at once.
+apt_opts=(-q -o DPkg::Lock::Timeout=300)
+apt-get "${apt_opts[@]}" update
+apt-get "${apt_opts[@]}" install -y --no-install-recommends "${missing[@]}"
+echo "setup: installed ${missing[*]}"
