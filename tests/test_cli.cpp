@@ -1,0 +1,135 @@
+// The stepwise program as a user meets it: commands, options, exit codes,
+// CSV output and error messages. Tag: [cli].
+#include <catch2/catch.hpp>
+
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using Catch::Matchers::Contains;
+
+namespace {
+
+struct Result {
+    int exitCode = -1;
+    std::string output;  // stdout and stderr together
+};
+
+/// Runs `stepwise ARGS` and captures what it prints.
+Result stepwise(const std::string& args) {
+    const std::string command = std::string("'") + STEPWISE_CLI_PATH + "' " + args + " 2>&1";
+    Result result;
+    std::FILE* pipe = popen(command.c_str(), "r");
+    REQUIRE(pipe != nullptr);
+    char buffer[4096];
+    while (std::size_t n = std::fread(buffer, 1, sizeof buffer, pipe)) result.output.append(buffer, n);
+    const int status = pclose(pipe);
+    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return result;
+}
+
+/// A scratch file in the system's temporary folder, removed at scope exit.
+struct TempFile {
+    std::filesystem::path path;
+    explicit TempFile(const std::string& name, const std::string& contents = "")
+        : path(std::filesystem::temp_directory_path() / ("stepwise-test-" + name)) {
+        if (!contents.empty()) std::ofstream(path) << contents;
+    }
+    ~TempFile() { std::filesystem::remove(path); }
+    std::string quoted() const { return "'" + path.string() + "'"; }
+};
+
+std::vector<std::string> lines(const std::filesystem::path& path) {
+    std::ifstream in(path);
+    std::vector<std::string> all;
+    for (std::string line; std::getline(in, line);) all.push_back(line);
+    return all;
+}
+
+const std::string kSourceDir = STEPWISE_SOURCE_DIR;
+
+}  // namespace
+
+TEST_CASE("With no arguments stepwise prints its usage", "[cli]") {
+    const Result r = stepwise("");
+    CHECK(r.exitCode == 0);
+    CHECK_THAT(r.output, Contains("Usage:") && Contains("stepwise run") && Contains("stepwise check"));
+}
+
+TEST_CASE("Unknown commands and options are errors with exit code 2", "[cli]") {
+    CHECK(stepwise("fly").exitCode == 2);
+    const Result r = stepwise("run --speed 3");
+    CHECK(r.exitCode == 2);
+    CHECK_THAT(r.output, Contains("unknown option '--speed'"));
+    CHECK(stepwise("run --steps").exitCode == 2);          // missing value
+    CHECK(stepwise("run --steps ten").exitCode == 2);      // not a number
+    CHECK(stepwise("run --every 0").exitCode == 2);        // must be > 0
+    CHECK(stepwise("run --duration 1 --steps 5").exitCode == 2);
+    CHECK(stepwise("check").exitCode == 2);
+}
+
+TEST_CASE("run with no file runs the default scene and prints a summary", "[cli]") {
+    const Result r = stepwise("run --steps 30");
+    CHECK(r.exitCode == 0);
+    CHECK_THAT(r.output, Contains("default.scene") && Contains("Simulated") && Contains("Energy") &&
+                             Contains("momentum") && Contains("integrate") && Contains("narrowphase"));
+}
+
+TEST_CASE("check validates a scene and describes it", "[cli]") {
+    const Result good = stepwise("check '" + kSourceDir + "/config/lesson03_bounce.scene'");
+    CHECK(good.exitCode == 0);
+    CHECK_THAT(good.output, Contains("ball") && Contains("floor") && Contains("valid"));
+
+    TempFile bad("bad.scene", "World, TimeStep=0\nDynamicObject, Name=a, Mass=-2\n");
+    const Result r = stepwise("check " + bad.quoted());
+    CHECK(r.exitCode == 2);
+    // file:line:column for each problem, and nothing half-loaded
+    CHECK_THAT(r.output, Contains("bad.scene:1:") && Contains("TimeStep") && Contains("bad.scene:2:") &&
+                             Contains("Mass") && Contains("nothing was loaded"));
+}
+
+TEST_CASE("run --csv writes the header, the initial state and every K-th step", "[cli]") {
+    TempFile csv("trajectory.csv");
+    const std::string scene = "'" + kSourceDir + "/config/lesson03_collisions.scene'";
+    const Result r = stepwise("run " + scene + " --steps 12 --every 4 --csv " + csv.quoted());
+    REQUIRE(r.exitCode == 0);
+    const std::vector<std::string> rows = lines(csv.path);
+    REQUIRE(!rows.empty());
+    CHECK(rows[0] == "time,name,px,py,pz,vx,vy,vz,qw,qx,qy,qz,wx,wy,wz");
+    // 5 dynamic + 1 kinematic objects, sampled at steps 0, 4, 8, 12.
+    CHECK(rows.size() == 1 + 6 * 4);
+    CHECK_THAT(rows[1], Catch::Matchers::StartsWith("0,left,-2,"));
+    // The kinematic wall is at x = 1 m/s * t: at step 12 of 1/120 s, 0.1 m.
+    const std::string last = rows.back();
+    CHECK_THAT(last, Contains(",wall,0.1"));
+}
+
+TEST_CASE("CSV output is identical run after run", "[cli]") {
+    TempFile first("first.csv"), second("second.csv");
+    const std::string scene = "'" + kSourceDir + "/config/default.scene'";
+    REQUIRE(stepwise("run " + scene + " --duration 3 --csv " + first.quoted()).exitCode == 0);
+    REQUIRE(stepwise("run " + scene + " --duration 3 --csv " + second.quoted()).exitCode == 0);
+    CHECK(lines(first.path) == lines(second.path));
+}
+
+TEST_CASE("A non-finite state ends the run with exit code 1 naming object, stage and step", "[cli]") {
+    TempFile scene("runaway.scene",
+                   "World, Gravity=(0,0,0)\n"
+                   "DynamicObject, Name=rocket, Acceleration=(0, 1e308, 0)\n");
+    const Result r = stepwise("run " + scene.quoted() + " --duration 10");
+    CHECK(r.exitCode == 1);
+    CHECK_THAT(r.output, Contains("rocket") && Contains("integrate") && Contains("step") && Contains("non-finite"));
+}
+
+TEST_CASE("Every shipped scene runs for one simulated second", "[cli]") {
+    for (const auto& entry : std::filesystem::directory_iterator(kSourceDir + "/config")) {
+        if (entry.path().extension() != ".scene") continue;
+        INFO(entry.path().string());
+        CHECK(stepwise("run '" + entry.path().string() + "' --duration 1").exitCode == 0);
+    }
+}
