@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+/// @brief The `stepwise` command-line program (src/app/).
 namespace stepwise::cli {
 
 /// Exit codes, as documented in the README.

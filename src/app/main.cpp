@@ -8,6 +8,7 @@
 #include "app/cli.hpp"
 
 #ifndef STEPWISE_DEFAULT_SCENE
+/// Path of the default scene; CMake passes the absolute path in the source tree.
 #define STEPWISE_DEFAULT_SCENE "config/default.scene"
 #endif
 
@@ -25,6 +26,8 @@ std::string defaultScenePath() {
 
 }  // namespace
 
+/// @brief Runs the command named by the first argument (`run`, `check`, `--help`).
+/// @return the exit code: 0 success, 1 simulation failure, 2 bad command line or scene.
 int main(int argc, char** argv) {
     using namespace stepwise::cli;
     const std::vector<std::string> args(argv + 1, argv + argc);

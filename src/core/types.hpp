@@ -13,6 +13,7 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+/// @brief Everything in Stepwise: the engine, its stages and its object model.
 namespace stepwise {
 
 #ifdef STEPWISE_SINGLE_PRECISION
