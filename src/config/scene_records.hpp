@@ -1,0 +1,100 @@
+/// @file scene_records.hpp
+/// @brief The scene-file vocabulary as data: which records exist and which fields each takes.
+///
+/// The tables themselves are in scene_records.cpp, one per record, one row
+/// per field: read them to learn the file format. The loader never spells a
+/// field's position or range anywhere else, so the tables, the parser and
+/// docs/config-format.md cannot drift apart without a test noticing.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "config/field_values.hpp"
+#include "objects/game_object.hpp"
+#include "world/world_settings.hpp"
+
+namespace stepwise::config {
+
+/// @brief How a field's value is written in the file.
+enum class FieldKind : std::uint8_t {
+    Number,      ///< One number: `Mass=2`.
+    Vector,      ///< Three numbers with components X, Y, Z: `Position=(0, 5, 0)` or `PositionY=5`.
+    Color,       ///< Three numbers with components R, G, B: `Color=(1, 0, 0)` or `ColorR=1`.
+    Shape,       ///< A word from kShapeChoices.
+    Integrator,  ///< A word from kIntegratorChoices.
+    Name,        ///< An object name (see parseName()).
+};
+
+/// @brief firstPositional of a field that can only be given as `Field=Value`.
+inline constexpr int kNamedOnly = -1;
+
+/// @brief One field of a record: one row of a record table.
+struct FieldSpec {
+    std::string_view name;    ///< Canonical spelling, e.g. "Position".
+    FieldKind kind;           ///< How the value is written.
+    int firstPositional;      ///< Index among the record's positional values of the value (or
+                              ///< of its first component), or kNamedOnly.
+    Range range;              ///< Valid values of the number, or of each component.
+    std::string_view hint{};  ///< Advice shown when a value is out of range ("" if none).
+};
+
+/// @brief The four kinds of line a scene file may contain.
+enum class RecordKind : std::uint8_t { DynamicObject, KinematicsObject, CollisionPlane, World };
+
+/// @brief One record type: its name and its field table.
+struct RecordSpec {
+    RecordKind kind;                    ///< Which record this is.
+    std::string_view name;              ///< Canonical spelling, e.g. "DynamicObject".
+    std::span<const FieldSpec> fields;  ///< Every field it accepts.
+};
+
+/// @brief Component given by a field reference that names the whole field.
+inline constexpr int kWholeField = -1;
+
+/// @brief A field, or one component of it, as named in a file ("Position", "PositionY").
+struct FieldRef {
+    std::size_t field = 0;       ///< Index into RecordSpec::fields.
+    int component = kWholeField; ///< 0–2 for X/Y/Z (R/G/B), or kWholeField.
+};
+
+/// @brief Accepted spellings of Shape (any case). `Cube` is a synonym of `Box`.
+extern const std::array<Choice<Shape>, 3> kShapeChoices;
+
+/// @brief Accepted spellings of IntegratorKind (any case), with synonyms.
+extern const std::array<Choice<IntegratorKind>, 6> kIntegratorChoices;
+
+/// @brief Every record type, in the order the documentation lists them.
+std::span<const RecordSpec> allRecords();
+
+/// @brief The record called @p name (ignoring case), or nullptr.
+const RecordSpec* findRecord(std::string_view name);
+
+/// @brief The field or component of @p record called @p name (ignoring case).
+std::optional<FieldRef> findField(const RecordSpec& record, std::string_view name);
+
+/// @brief How many numbers (or words) a field of this kind holds: 3 for vectors, else 1.
+std::size_t componentCount(FieldKind kind);
+
+/// @brief Canonical name of a field or of one of its components: "Position", "PositionY", "ColorR".
+std::string fieldName(const FieldSpec& field, int component);
+
+/// @brief How many values @p record accepts positionally (0 for World).
+int positionalCount(const RecordSpec& record);
+
+/// @brief The field (and component) that positional value number @p index fills.
+/// @pre 0 ≤ index < positionalCount(record).
+FieldRef positionalField(const RecordSpec& record, int index);
+
+/// @brief Every spelling a file may use for a field of @p record (fields and components).
+std::vector<std::string> fieldSpellings(const RecordSpec& record);
+
+/// @brief "Shape, Color, Position, …": the record's field names for messages.
+std::string fieldList(const RecordSpec& record);
+
+}  // namespace stepwise::config
