@@ -79,9 +79,11 @@ std::optional<std::string> RecordValues::text(std::string_view field) const { re
 /// record type and the sink need not be passed to every helper.
 class RecordReader {
 public:
+    /// Prepares to read @p line as a record of type @p spec, reporting problems to @p sink.
     RecordReader(const SceneLine& line, const RecordSpec& spec, DiagnosticSink& sink)
         : line_(line), spec_(spec), sink_(sink), values_(spec) {}
 
+    /// Assigns every token of the line to a field; returns the values found.
     RecordValues read() {
         const int positionalLimit = positionalCount(spec_);
         int nextPositional = 0;
