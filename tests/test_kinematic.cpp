@@ -123,3 +123,27 @@ TEST_CASE("A moving kinematic platform carries a resting sphere by friction", "[
     while (world.time() < 2) world.step();
     CHECK_THAT(world.dynamics()[0].velocity.x, WithinAbs(0.5, 1e-9));
 }
+
+TEST_CASE("An elastic ball glances off a fixed kinematic sphere with its speed kept", "[kinematic][sphere-sphere]") {
+    // A fixed obstacle has infinite mass: with e = 1 and no friction the ball's
+    // velocity is reflected about the contact normal, v' = v − 2(v·n)n, so
+    // its speed is unchanged and the angle of incidence equals the angle of reflection.
+    Scene scene = test::emptyScene(IntegratorKind::Verlet, Real(1) / 240, Vec3(0));
+    KinematicsObject post;
+    post.name = "post";
+    post.shape = Shape::Sphere;
+    post.radius = 0.5;
+    scene.kinematics.push_back(post);
+    scene.dynamics.push_back(test::sphere("ball", Vec3(-3, 0.5, 0), Vec3(2, 0, 0), 0.5, 1, 1, 0));
+    World world(scene);
+    Vec3 normal(0);
+    while (world.time() < 3) {
+        world.step();
+        if (!world.contacts().empty() && normal == Vec3(0)) normal = world.contacts()[0].normal;
+    }
+    REQUIRE(normal != Vec3(0));
+    const Vec3 expected = Vec3(2, 0, 0) - 2 * glm::dot(Vec3(2, 0, 0), normal) * normal;
+    CHECK(glm::length(world.dynamics()[0].velocity - expected) < 1e-12);
+    CHECK_THAT(glm::length(world.dynamics()[0].velocity), WithinAbs(2.0, 1e-12));
+    CHECK(world.kinematics()[0].position == Vec3(0));
+}
