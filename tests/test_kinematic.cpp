@@ -42,17 +42,17 @@ Geometry sphereGeometry(Vec3 centre, Real radius) {
 
 TEST_CASE("Sphere-box finds the closest point on a face, an edge and a corner", "[sphere-box]") {
     const Geometry box = boxGeometry(Vec3(0), Vec3(1, 1, 1));
-    ContactGeometry c;
+    ContactManifold c;
     SECTION("face") {
         REQUIRE(collideSphereBox(sphereGeometry(Vec3(0, 1.4, 0), 0.5), box, c));
-        CHECK_THAT(c.depth, WithinAbs(0.1, 1e-12));
+        CHECK_THAT(c.points[0].depth, WithinAbs(0.1, 1e-12));
         CHECK(glm::length(c.normal - Vec3(0, -1, 0)) < 1e-12);
     }
     SECTION("edge") {
         const Real d = 0.45;  // distance from the edge (1, 1, z) along the diagonal
         const Vec3 centre = Vec3(1, 1, 0.3) + d * glm::normalize(Vec3(1, 1, 0));
         REQUIRE(collideSphereBox(sphereGeometry(centre, 0.5), box, c));
-        CHECK_THAT(c.depth, WithinAbs(0.05, 1e-12));
+        CHECK_THAT(c.points[0].depth, WithinAbs(0.05, 1e-12));
         CHECK(glm::length(c.normal + glm::normalize(Vec3(1, 1, 0))) < 1e-12);
     }
     SECTION("corner, just out of reach") {
@@ -62,13 +62,13 @@ TEST_CASE("Sphere-box finds the closest point on a face, an edge and a corner", 
     SECTION("centre inside: leave through the nearest face") {
         REQUIRE(collideSphereBox(sphereGeometry(Vec3(0.2, 0.1, -0.9), 0.5), box, c));
         CHECK(glm::length(c.normal - Vec3(0, 0, 1)) < 1e-12);  // nearest face is z = −1
-        CHECK_THAT(c.depth, WithinAbs(0.5 + 0.1, 1e-12));
+        CHECK_THAT(c.points[0].depth, WithinAbs(0.5 + 0.1, 1e-12));
     }
     SECTION("rotated box") {
         // Box turned 45° about z: its corner (√2, 0) now points along +x.
         const Geometry turned = boxGeometry(Vec3(0), Vec3(1, 1, 1), glm::angleAxis(kPi / 4, Vec3(0, 0, 1)));
         REQUIRE(collideSphereBox(sphereGeometry(Vec3(std::sqrt(2.0) + 0.4, 0, 0), 0.5), turned, c));
-        CHECK_THAT(c.depth, WithinAbs(0.1, 1e-12));
+        CHECK_THAT(c.points[0].depth, WithinAbs(0.1, 1e-12));
         CHECK(glm::length(c.normal - Vec3(-1, 0, 0)) < 1e-12);
     }
 }

@@ -53,9 +53,9 @@ TEST_CASE("Sphere-plane test finds depth and normal on a tilted plane", "[sphere
     ball.radius = 0.5;
     // Centre 0.3 m in front of the plane along its normal: overlap 0.2 m.
     ball.centre = plane.centre + Real(0.3) * plane.normal + Vec3(0, 0, 2);
-    ContactGeometry c;
+    ContactManifold c;
     REQUIRE(collideSpherePlane(ball, plane, c));
-    CHECK_THAT(c.depth, WithinAbs(0.2, 1e-12));
+    CHECK_THAT(c.points[0].depth, WithinAbs(0.2, 1e-12));
     CHECK(glm::length(c.normal + plane.normal) < 1e-12);  // from the sphere into the plane
 
     ball.centre = plane.centre + Real(0.6) * plane.normal;  // 0.1 m clear

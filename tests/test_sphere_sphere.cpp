@@ -35,11 +35,11 @@ TEST_CASE("Sphere-sphere test finds overlap, normal and contact point", "[sphere
     b.radius = 0.5;
     a.centre = Vec3(0, 0, 0);
     b.centre = Vec3(0, 1.2, 0);
-    ContactGeometry c;
+    ContactManifold c;
     REQUIRE(collideSphereSphere(a, b, c));
-    CHECK_THAT(c.depth, WithinAbs(0.3, 1e-12));
+    CHECK_THAT(c.points[0].depth, WithinAbs(0.3, 1e-12));
     CHECK(glm::length(c.normal - Vec3(0, 1, 0)) < 1e-12);
-    CHECK(glm::length(c.point - Vec3(0, 0.85, 0)) < 1e-12);  // middle of the overlap [0.7, 1.0]
+    CHECK(glm::length(c.points[0].position - Vec3(0, 0.85, 0)) < 1e-12);  // middle of the overlap [0.7, 1.0]
 
     b.centre = Vec3(1.6, 0, 0);  // 0.1 m apart
     CHECK_FALSE(collideSphereSphere(a, b, c));

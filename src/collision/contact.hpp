@@ -38,6 +38,7 @@ struct Contact {
     Vec3 normal{0, 1, 0}; ///< Unit vector from A towards B.
     Vec3 point{0, 0, 0};  ///< World-space point midway through the overlap, m.
     Real depth = 0;       ///< Penetration depth along the normal, m (≥ 0 when touching).
+    std::uint32_t featureId = 0; ///< Which features of A and B meet (from the pair test; stable while they stay in touch).
 };
 
 }  // namespace stepwise

@@ -67,9 +67,12 @@ void findContacts(const BodySet& bodies, const std::vector<CandidatePair>& pairs
         const PairTest test = pairTestFor(a.type, b.type);
         if (test == nullptr) continue;
 
-        ContactGeometry found;
+        ContactManifold found;
         if (!test(a, b, found)) continue;
-        contacts.push_back({pair.a, pair.b, found.normal, found.point, found.depth});
+        for (int i = 0; i < found.pointCount; ++i) {
+            const ContactPoint& p = found.points[i];
+            contacts.push_back({pair.a, pair.b, found.normal, p.position, p.depth, p.featureId});
+        }
     }
 }
 

@@ -27,22 +27,38 @@ struct Geometry {
     Vec3 normal{0, 1, 0};                      ///< Plane unit normal.
 };
 
-/// @brief Result of a pair test: where and how deep, normal from the first shape to the second.
-struct ContactGeometry {
-    Vec3 normal{0, 1, 0};  ///< Unit, from shape A towards shape B.
-    Vec3 point{0, 0, 0};   ///< World point midway through the overlap, m.
-    Real depth = 0;        ///< Overlap along the normal, m.
+/// Most points a manifold keeps: four corners are enough to hold a box
+/// face steady on a plane (three would do, four keep it symmetric).
+inline constexpr int kMaxManifoldPoints = 4;
+
+/// @brief One point of a contact manifold.
+struct ContactPoint {
+    Vec3 position{0, 0, 0};    ///< World point midway through the overlap, m.
+    Real depth = 0;            ///< Overlap along the manifold normal, m (≥ −kTouchTolerance).
+    std::uint32_t featureId = 0; ///< Which features of A and B meet here (stable from step to step, for warm starting).
+};
+
+/// @brief Result of a pair test: one normal shared by up to kMaxManifoldPoints points.
+struct ContactManifold {
+    Vec3 normal{0, 1, 0};      ///< Unit, from shape A towards shape B.
+    int pointCount = 0;        ///< Number of valid entries in points.
+    ContactPoint points[kMaxManifoldPoints];  ///< The contact points.
+
+    /// @brief Appends a point (ignored when the manifold is full).
+    void add(const Vec3& position, Real depth, std::uint32_t featureId) {
+        if (pointCount < kMaxManifoldPoints) points[pointCount++] = {position, depth, featureId};
+    }
 };
 
 /// @brief A pair test: true (and @p out filled) when A and B touch or overlap.
-using PairTest = bool (*)(const Geometry& a, const Geometry& b, ContactGeometry& out);
+using PairTest = bool (*)(const Geometry& a, const Geometry& b, ContactManifold& out);
 
 /// @brief Sphere against sphere (src/collision/sphere_sphere.cpp).
-bool collideSphereSphere(const Geometry& a, const Geometry& b, ContactGeometry& out);
+bool collideSphereSphere(const Geometry& a, const Geometry& b, ContactManifold& out);
 /// @brief Sphere against plane (src/collision/sphere_plane.cpp).
-bool collideSpherePlane(const Geometry& a, const Geometry& b, ContactGeometry& out);
+bool collideSpherePlane(const Geometry& a, const Geometry& b, ContactManifold& out);
 /// @brief Sphere against oriented box (src/collision/sphere_box.cpp).
-bool collideSphereBox(const Geometry& a, const Geometry& b, ContactGeometry& out);
+bool collideSphereBox(const Geometry& a, const Geometry& b, ContactManifold& out);
 
 /// @brief The pair test for shape A against shape B, or nullptr when that pair has none yet.
 PairTest pairTestFor(GeometryType a, GeometryType b);

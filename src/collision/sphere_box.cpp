@@ -17,7 +17,7 @@
 
 namespace stepwise {
 
-bool collideSphereBox(const Geometry& sphere, const Geometry& box, ContactGeometry& out) {
+bool collideSphereBox(const Geometry& sphere, const Geometry& box, ContactManifold& out) {
     const Mat3 rotation = glm::mat3_cast(box.orientation);      // body → world
     const Vec3 local = glm::transpose(rotation) * (sphere.centre - box.centre);
     const Vec3 closest = glm::clamp(local, -box.halfExtents, box.halfExtents);
@@ -30,8 +30,9 @@ bool collideSphereBox(const Geometry& sphere, const Geometry& box, ContactGeomet
         // Centre outside the box: the normal runs from the sphere's centre to the closest point.
         const Real distance = std::sqrt(distanceSquared);
         out.normal = rotation * (-offset / distance);
-        out.depth = sphere.radius - distance;
-        out.point = box.centre + rotation * closest - out.normal * (Real(0.5) * out.depth);
+        const Real depth = sphere.radius - distance;
+        out.pointCount = 0;
+    out.add(box.centre + rotation * closest - out.normal * (Real(0.5) * depth), depth, 0);
         return true;
     }
 
@@ -48,8 +49,9 @@ bool collideSphereBox(const Geometry& sphere, const Geometry& box, ContactGeomet
     Vec3 faceNormal(0);  // box frame, pointing out of the box through the nearest face
     faceNormal[axis] = local[axis] >= Real(0) ? Real(1) : Real(-1);
     out.normal = rotation * (-faceNormal);  // from the sphere into the box
-    out.depth = sphere.radius + leastInside;
-    out.point = sphere.centre;
+    const Real depth = sphere.radius + leastInside;
+    out.pointCount = 0;
+    out.add(sphere.centre, depth, 0);
     return true;
 }
 

@@ -12,14 +12,15 @@
 
 namespace stepwise {
 
-bool collideSpherePlane(const Geometry& sphere, const Geometry& plane, ContactGeometry& out) {
+bool collideSpherePlane(const Geometry& sphere, const Geometry& plane, ContactManifold& out) {
     const Real signedDistance = glm::dot(sphere.centre - plane.centre, plane.normal);
     if (signedDistance > sphere.radius + kTouchTolerance) return false;
 
     out.normal = -plane.normal;
-    out.depth = sphere.radius - signedDistance;
+    const Real depth = sphere.radius - signedDistance;
     // Midway between the sphere's deepest point and the plane surface.
-    out.point = sphere.centre - plane.normal * (signedDistance + Real(0.5) * out.depth);
+    out.pointCount = 0;
+    out.add(sphere.centre - plane.normal * (signedDistance + Real(0.5) * depth), depth, 0);
     return true;
 }
 

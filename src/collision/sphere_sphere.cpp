@@ -15,7 +15,7 @@ namespace stepwise {
 /// Centres closer than this (m) have no usable direction between them.
 constexpr Real kCoincidentCentres = Real(1e-12);
 
-bool collideSphereSphere(const Geometry& a, const Geometry& b, ContactGeometry& out) {
+bool collideSphereSphere(const Geometry& a, const Geometry& b, ContactManifold& out) {
     const Vec3 between = b.centre - a.centre;
     const Real radii = a.radius + b.radius;
     // Compare squared lengths first: no square root for the many pairs that miss.
@@ -27,8 +27,9 @@ bool collideSphereSphere(const Geometry& a, const Geometry& b, ContactGeometry& 
     // Concentric spheres: any direction separates them; pick world up so the
     // result is repeatable.
     out.normal = distance > kCoincidentCentres ? between / distance : Vec3(0, 1, 0);
-    out.depth = radii - distance;
-    out.point = a.centre + out.normal * (a.radius - Real(0.5) * out.depth);
+    const Real depth = radii - distance;
+    out.pointCount = 0;
+    out.add(a.centre + out.normal * (a.radius - Real(0.5) * depth), depth, 0);
     return true;
 }
 

@@ -45,7 +45,10 @@ public:
 
 /// @brief A simulated rigid body: gravity and contacts change its motion.
 ///
-/// The body's state is (position, orientation, velocity, angular velocity).
+/// The body's state is (position, orientation, velocity, angular momentum);
+/// the angular velocity ω = I_world⁻¹·L is kept alongside, derived from it
+/// (src/dynamics/inertia.hpp). Storing L rather than ω is what makes a
+/// torque-free body keep its angular momentum exactly while it tumbles.
 /// Its per-object `constantAcceleration` (m/s², from the scene's
 /// Acceleration fields) is added to the World's gravity every step;
 /// `acceleration` is the total computed for the current step by the
@@ -63,6 +66,12 @@ public:
     Vec3 acceleration{0, 0, 0};      ///< Total acceleration this step, m/s² (written by apply-forces).
     Real elasticity = Real(0.5);     ///< Coefficient of restitution, 0–1.
     Real friction = Real(0.5);       ///< Coulomb friction coefficient, ≥ 0.
+
+    bool hollow = false;             ///< Sphere only: a thin shell (I = ⅔·m·r²) instead of a solid ball (⅖·m·r²).
+    Vec3 inertiaBody{1, 1, 1};       ///< Principal moments of inertia about the centre of mass, body axes, kg·m².
+    Vec3 inverseInertiaBody{1, 1, 1};///< Their reciprocals, 1/(kg·m²).
+    Vec3 angularMomentum{0, 0, 0};   ///< L = I_world·ω about the centre of mass, world frame, kg·m²/s: the rotational state.
+    Vec3 torque{0, 0, 0};            ///< Total torque about the centre of mass this step, world frame, N·m.
 
     /// @brief Sets `mass` and keeps `inverseMass` consistent with it.
     /// @param kilograms mass in kg; the scene loader has checked it is > 0.

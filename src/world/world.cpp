@@ -8,6 +8,7 @@
 
 #include "collision/narrowphase.hpp"
 #include "core/errors.hpp"
+#include "dynamics/inertia.hpp"
 #include "forces/apply_forces.hpp"
 #include "integrators/integrators.hpp"
 
@@ -36,6 +37,7 @@ World::World(Scene scene)
         require(stepwise::isFinite(body.position) && stepwise::isFinite(body.velocity), body.name,
                 "position and velocity must be finite");
         body.inverseMass = Real(1) / body.mass;
+        initialiseMassProperties(body);
     }
     for (CollisionPlane& plane : planes_) {
         const Real length = glm::length(plane.normal);
