@@ -122,18 +122,3 @@ TEST_CASE("A sphere with e = 0 stops at the first impact", "[sphere-plane]") {
     CHECK_THAT(world.dynamics()[0].position.y, WithinAbs(0.5, 1e-9));
     CHECK(std::abs(world.dynamics()[0].velocity.y) < 1e-9);
 }
-
-TEST_CASE("Friction decelerates a sliding sphere at mu*g (particle model, no rotation yet)", "[sphere-plane]") {
-    // Coulomb friction F = μ·m·g opposes sliding: v(t) = v0 − μ g t until it stops.
-    const Real mu = 0.3, v0 = 5;
-    Scene scene = test::emptyScene(IntegratorKind::SymplecticEuler, Real(1) / 240);
-    scene.dynamics.push_back(test::sphere("puck", Vec3(0, 0.5, 0), Vec3(v0, 0, 0), 0.5, 2, 0, mu));
-    scene.planes.push_back(test::ground());  // friction factor 1: μ = 0.3 · 1
-    World world(scene);
-    while (world.time() < 1 - 1e-9) world.step();
-    CHECK_THAT(world.dynamics()[0].velocity.x, WithinRel(v0 - mu * kStandardGravity * 1, 0.01));
-    while (world.time() < 3) world.step();
-    // Stopping distance v0²/(2μg) = 4.248 m; it stays stopped (static friction holds).
-    CHECK_THAT(world.dynamics()[0].position.x, WithinRel(v0 * v0 / (2 * mu * kStandardGravity), 0.01));
-    CHECK(std::abs(world.dynamics()[0].velocity.x) < 1e-9);
-}

@@ -32,7 +32,8 @@ bool collideSphereBox(const Geometry& sphere, const Geometry& box, ContactManifo
         out.normal = rotation * (-offset / distance);
         const Real depth = sphere.radius - distance;
         out.pointCount = 0;
-    out.add(box.centre + rotation * closest - out.normal * (Real(0.5) * depth), depth, 0);
+    // Midway through the overlap: from the box surface, half the depth on into the box.
+    out.add(box.centre + rotation * closest + out.normal * (Real(0.5) * depth), depth, 0);
         return true;
     }
 

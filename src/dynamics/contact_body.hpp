@@ -20,12 +20,6 @@ struct ContactBody {
     Real elasticity = 1;               ///< Restitution factor of B's material.
     Real friction = 1;                 ///< Friction factor of B's material.
 
-    /// @brief Changes B's velocity by impulse/mass (nothing when B cannot be pushed).
-    void applyImpulse(const Vec3& impulse) {
-        if (dynamic == nullptr) return;
-        dynamic->velocity += impulse * inverseMass;
-        velocity = dynamic->velocity;
-    }
 };
 
 /// @brief Looks up body @p ref and describes it at world point @p point.

@@ -1,66 +1,165 @@
 /// @file impulse_resolver.cpp
-/// @brief Stage 6: normal and friction impulses at each contact (see impulse_resolver.hpp for the derivation).
+/// @brief Stages 6 and 7: impulses at contact points, then position correction
+/// (the derivations are in impulse_resolver.hpp).
 #include "dynamics/impulse_resolver.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 #include "dynamics/contact_body.hpp"
+#include "dynamics/inertia.hpp"
 
 namespace stepwise {
 
-/// Tangential speeds below this (m/s) have no direction worth rubbing along.
-constexpr Real kNegligibleSlidingSpeed = Real(1e-12);
+namespace {
 
-void resolveImpulses(const BodySet& bodies, std::span<const Contact> contacts, Real h,
-                     std::span<ImpulseReport> reports) {
-    for (std::size_t c = 0; c < contacts.size(); ++c) {
-        const Contact& contact = contacts[c];
-        DynamicObject& a = bodies.dynamics[contact.a];
-        ContactBody b = contactBody(bodies, contact.b, contact.point);
-        const Vec3& n = contact.normal;
-        const Real inverseMassSum = a.inverseMass + b.inverseMass;
+/// |n·x| above this means x is too close to n to build a tangent from.
+constexpr Real kAlmostParallel = Real(0.57735);  // 1/√3: some axis always has |n_i| ≤ 1/√3
 
-        // --- Normal impulse: stop the approach, then bounce with restitution.
-        const Real vn = glm::dot(b.velocity - a.velocity, n);
-        if (vn >= Real(0)) continue;  // already separating: nothing to stop
+/// Two unit vectors that complete n to a right-handed orthonormal basis.
+void tangentBasis(const Vec3& n, Vec3 (&t)[2]) {
+    const Vec3 helper = std::abs(n.x) < kAlmostParallel ? Vec3(1, 0, 0) : Vec3(0, 1, 0);
+    t[0] = glm::normalize(glm::cross(n, helper));
+    t[1] = glm::cross(n, t[0]);
+}
 
-        const Real an = glm::dot(b.acceleration - a.acceleration, n);
-        const Real depth = std::max(contact.depth, Real(0));
-        const Real approachAtTouch = std::sqrt(std::max(Real(0), vn * vn + Real(2) * an * depth));
-        const bool resting = approachAtTouch <= kRestingContactSteps * std::abs(an) * h;
-        const Real e = resting ? Real(0) : combineElasticity(a.elasticity, b.elasticity);
+/// 1/m_eff along direction d: m_A⁻¹ + m_B⁻¹ + (r_A×d)·I_A⁻¹(r_A×d) + (r_B×d)·I_B⁻¹(r_B×d).
+Real inverseEffectiveMass(const ContactConstraint& c, const Vec3& d) {
+    const Vec3 turnA = glm::cross(c.rA, d);
+    const Vec3 turnB = glm::cross(c.rB, d);
+    return c.a->inverseMass + c.inverseMassB + glm::dot(turnA, c.inverseInertiaA * turnA) +
+           glm::dot(turnB, c.inverseInertiaB * turnB);
+}
 
-        const Real j = (e * approachAtTouch - vn) / inverseMassSum;
-        a.velocity -= j * a.inverseMass * n;
-        b.applyImpulse(j * n);
+/// Velocity of B's surface minus A's at the contact point.
+Vec3 relativeVelocity(const ContactConstraint& c) {
+    const Vec3 va = c.a->velocity + glm::cross(c.a->angularVelocity, c.rA);
+    const Vec3 vb = c.b ? c.b->velocity + glm::cross(c.b->angularVelocity, c.rB) : c.staticVelocity;
+    return vb - va;
+}
 
-        // --- Friction: recompute the relative velocity, because the normal
-        // impulse just changed it; friction acts on what is left sliding.
-        const Vec3 relative = b.velocity - a.velocity;
-        const Vec3 sliding = relative - glm::dot(relative, n) * n;
-        const Real slidingSpeed = glm::length(sliding);
-        Real jt = 0;
-        if (slidingSpeed > kNegligibleSlidingSpeed) {
-            const Vec3 tangent = sliding / slidingSpeed;
-            const Real stopSliding = slidingSpeed / inverseMassSum;  // impulse that would stop it
-            const Real mu = combineFriction(a.friction, b.friction);
-            jt = std::min(stopSliding, mu * j);  // Coulomb: |j_t| ≤ μ·j_n
-            a.velocity += jt * a.inverseMass * tangent;  // A is dragged along B's motion
-            b.applyImpulse(-jt * tangent);
-        }
-
-        if (!reports.empty()) reports[c] = {-vn, approachAtTouch, e, j, jt};
+/// Impulse P on B at the contact, −P on A: Δv = ±P/m, ΔL = ±r×P, Δω = I⁻¹ΔL.
+/// (The world inverse inertia is fixed during the passes: nothing turns the
+/// bodies until the next integration.)
+void applyImpulse(ContactConstraint& c, const Vec3& P) {
+    const Vec3 angularA = glm::cross(c.rA, P);
+    c.a->velocity -= P * c.a->inverseMass;
+    c.a->angularMomentum -= angularA;
+    c.a->angularVelocity -= c.inverseInertiaA * angularA;
+    if (c.b) {
+        const Vec3 angularB = glm::cross(c.rB, P);
+        c.b->velocity += P * c.inverseMassB;
+        c.b->angularMomentum += angularB;
+        c.b->angularVelocity += c.inverseInertiaB * angularB;
     }
 }
 
-void correctPositions(const BodySet& bodies, std::span<const Contact> contacts) {
+/// Sets up one contact: lever arms, effective masses, and the bounce it aims for.
+ContactConstraint prepare(const BodySet& bodies, const Contact& contact, Real h, ImpulseReport& report) {
+    ContactConstraint c;
+    DynamicObject& a = bodies.dynamics[contact.a];
+    const ContactBody other = contactBody(bodies, contact.b, contact.point);
+    c.a = &a;
+    c.b = other.dynamic;
+    c.staticVelocity = other.velocity;
+    c.inverseInertiaA = worldInverseInertia(a.orientation, a.inverseInertiaBody);
+    c.rA = contact.point - a.position;
+    if (c.b) {
+        c.inverseMassB = c.b->inverseMass;
+        c.inverseInertiaB = worldInverseInertia(c.b->orientation, c.b->inverseInertiaBody);
+        c.rB = contact.point - c.b->position;
+    } else {
+        c.inverseInertiaB = Mat3(0);
+    }
+    c.normal = contact.normal;
+    tangentBasis(c.normal, c.tangent);
+    c.normalMass = Real(1) / inverseEffectiveMass(c, c.normal);
+    for (int k = 0; k < 2; ++k) c.tangentMass[k] = Real(1) / inverseEffectiveMass(c, c.tangent[k]);
+    c.friction = combineFriction(a.friction, other.friction);
+
+    // The bounce is decided once, from the velocities before any impulse:
+    // restitution is a property of the impact, not of the passes.
+    const Real vn = glm::dot(relativeVelocity(c), c.normal);
+    const Real an = glm::dot(other.acceleration - a.acceleration, c.normal);
+    const Real depth = std::max(contact.depth, Real(0));
+    const Real approachAtTouch = vn < 0 ? std::sqrt(std::max(Real(0), vn * vn + Real(2) * an * depth)) : Real(0);
+    const bool resting = approachAtTouch <= kRestingContactSteps * std::abs(an) * h;
+    const Real e = resting ? Real(0) : combineElasticity(a.elasticity, other.elasticity);
+    c.targetSeparation = e * approachAtTouch;
+    report = {std::max(-vn, Real(0)), approachAtTouch, e, 0, 0};
+    return c;
+}
+
+/// One pass at one contact: the normal impulse, then friction within the new bound.
+void solve(ContactConstraint& c) {
+    // Normal: drive v_n to the target separation speed, keep the total j ≥ 0.
+    const Real vn = glm::dot(relativeVelocity(c), c.normal);
+    const Real previous = c.normalImpulse;
+    c.normalImpulse = std::max(previous + c.normalMass * (c.targetSeparation - vn), Real(0));
+    applyImpulse(c, (c.normalImpulse - previous) * c.normal);
+
+    // Friction: recompute the relative velocity, because the normal impulse
+    // just changed it; friction acts on what is left sliding, and its total
+    // may not leave Coulomb's cone |j_t| ≤ μ·j.
+    const Vec3 relative = relativeVelocity(c);
+    const Real limit = c.friction * c.normalImpulse;
+    Real total[2];
+    for (int k = 0; k < 2; ++k) {
+        total[k] = c.tangentImpulse[k] - c.tangentMass[k] * glm::dot(relative, c.tangent[k]);
+    }
+    const Real magnitude = std::sqrt(total[0] * total[0] + total[1] * total[1]);
+    if (magnitude > limit) {  // sliding: kinetic friction at the full μ·j, along the sliding direction
+        const Real scale = magnitude > 0 ? limit / magnitude : Real(0);
+        total[0] *= scale;
+        total[1] *= scale;
+    }
+    const Vec3 change = (total[0] - c.tangentImpulse[0]) * c.tangent[0] + (total[1] - c.tangentImpulse[1]) * c.tangent[1];
+    c.tangentImpulse[0] = total[0];
+    c.tangentImpulse[1] = total[1];
+    applyImpulse(c, change);
+}
+
+}  // namespace
+
+void resolveImpulses(const BodySet& bodies, std::span<const Contact> contacts, Real h, int iterations,
+                     std::vector<ContactConstraint>& constraints, std::span<ImpulseReport> reports) {
+    constraints.resize(contacts.size());
+    ImpulseReport unused;
+    for (std::size_t i = 0; i < contacts.size(); ++i) {
+        constraints[i] = prepare(bodies, contacts[i], h, reports.empty() ? unused : reports[i]);
+    }
+    for (int pass = 0; pass < iterations; ++pass) {
+        for (ContactConstraint& c : constraints) solve(c);
+    }
+    // Angular momentum was updated alongside ω; refresh ω from L once so the
+    // two stay exactly consistent (ω = I⁻¹L) for the next stage.
+    for (ContactConstraint& c : constraints) {
+        updateAngularVelocity(*c.a);
+        if (c.b) updateAngularVelocity(*c.b);
+    }
+    if (!reports.empty()) {
+        for (std::size_t i = 0; i < contacts.size(); ++i) {
+            const ContactConstraint& c = constraints[i];
+            reports[i].normalImpulse = c.normalImpulse;
+            reports[i].frictionImpulse = std::hypot(c.tangentImpulse[0], c.tangentImpulse[1]);
+        }
+    }
+}
+
+void correctPositions(const BodySet& bodies, std::span<const Contact> contacts, std::vector<Vec3>& startPositions) {
+    startPositions.resize(bodies.dynamics.size());
+    for (std::size_t i = 0; i < bodies.dynamics.size(); ++i) startPositions[i] = bodies.dynamics[i].position;
+
     for (const Contact& contact : contacts) {
-        if (contact.depth <= Real(0)) continue;
         DynamicObject& a = bodies.dynamics[contact.a];
         DynamicObject* b = contact.b.kind == BodyKind::Dynamic ? &bodies.dynamics[contact.b.index] : nullptr;
+        const Vec3 movedA = a.position - startPositions[contact.a];
+        const Vec3 movedB = b ? b->position - startPositions[contact.b.index] : Vec3(0);
+        const Real remaining = contact.depth - glm::dot(movedB - movedA, contact.normal);
+        if (remaining <= Real(0)) continue;
+
         const Real inverseMassB = b ? b->inverseMass : Real(0);
-        const Vec3 push = contact.normal * (contact.depth / (a.inverseMass + inverseMassB));
+        const Vec3 push = contact.normal * (remaining / (a.inverseMass + inverseMassB));
         a.position -= push * a.inverseMass;
         if (b) b->position += push * inverseMassB;
     }

@@ -1,8 +1,9 @@
 /// @file impulse_resolver.hpp
-/// @brief Stage 6 of the step: collision response by impulses.
+/// @brief Stages 6 and 7 of the step: collision response by impulses, then position correction.
 #pragma once
 
 #include <span>
+#include <vector>
 
 #include "collision/contact.hpp"
 #include "world/body_set.hpp"
@@ -28,22 +29,51 @@ inline constexpr Real kRestingContactSteps = Real(2);
 
 /// @brief What happened at one contact, for tests, traces and debuggers.
 struct ImpulseReport {
-    Real approachSpeed = 0;       ///< −v_n before the impulse, m/s (> 0 when approaching).
+    Real approachSpeed = 0;       ///< −v_n before the impulses, m/s (> 0 when approaching).
     Real approachAtTouch = 0;     ///< Approach speed reconstructed at the moment of touching, m/s.
     Real restitution = 0;         ///< e used (0 for a resting contact).
-    Real normalImpulse = 0;       ///< j, N·s (≥ 0).
-    Real frictionImpulse = 0;     ///< |j_t|, N·s (≤ μ·j).
+    Real normalImpulse = 0;       ///< Total normal impulse j over all passes, N·s (≥ 0).
+    Real frictionImpulse = 0;     ///< Magnitude of the total friction impulse, N·s (≤ μ·j).
 };
 
-/// @brief Applies a normal impulse with restitution, then a Coulomb friction impulse, at each contact in turn.
+/// @brief One contact prepared for the impulse passes: geometry, effective
+/// masses and the impulses accumulated so far. Filled by resolveImpulses;
+/// kept in a reusable array so a step allocates nothing.
+struct ContactConstraint {
+    DynamicObject* a = nullptr;    ///< Body A (always dynamic).
+    DynamicObject* b = nullptr;    ///< Body B when dynamic, else nullptr.
+    Vec3 staticVelocity{0, 0, 0};  ///< Velocity of B's surface at the contact when B is kinematic or a plane, m/s.
+    Mat3 inverseInertiaA{1};       ///< A's world inverse inertia (fixed during the passes), 1/(kg·m²).
+    Mat3 inverseInertiaB{0};       ///< B's, or zero.
+    Real inverseMassB = 0;         ///< B's 1/m, or zero.
+    Vec3 rA{0, 0, 0};              ///< From A's centre to the contact point, m.
+    Vec3 rB{0, 0, 0};              ///< From B's centre to the contact point, m (zero for static B).
+    Vec3 normal{0, 1, 0};          ///< From A towards B.
+    Vec3 tangent[2];               ///< Two unit vectors across the normal, for friction.
+    Real normalMass = 0;           ///< 1 / (effective inverse mass along n), kg.
+    Real tangentMass[2] = {0, 0};  ///< The same along each tangent, kg.
+    Real targetSeparation = 0;     ///< e·v_c: the normal speed the passes aim for, m/s.
+    Real friction = 0;             ///< μ of the pair.
+    Real normalImpulse = 0;        ///< Accumulated j, N·s.
+    Real tangentImpulse[2] = {0, 0}; ///< Accumulated friction impulse along each tangent, N·s.
+};
+
+/// @brief Applies normal impulses with restitution and Coulomb friction impulses at every contact point.
 ///
-/// For contact normal n (from A to B) and relative velocity
-/// v_rel = v_B − v_A, the normal velocity is v_n = v_rel·n (< 0: approaching).
-/// The impulse j along n that makes the bodies separate at speed e·v_c is
-/// \f[ j = \frac{e\,v_c - v_n}{m_A^{-1} + m_B^{-1}}, \qquad
-///     v_A \mathrel{-}= j\,n\,m_A^{-1}, \quad v_B \mathrel{+}= j\,n\,m_B^{-1}, \f]
-/// (momentum m_A v_A + m_B v_B is unchanged). With v_c = −v_n this is the
-/// textbook j = −(1+e)·v_n / (m_A⁻¹ + m_B⁻¹).
+/// **One contact.** For contact normal n (from A to B), lever arms r_A and
+/// r_B from the centres of mass to the contact point, the relative velocity
+/// of the two surfaces there is
+/// \f[ v_\text{rel} = (v_B + \omega_B \times r_B) - (v_A + \omega_A \times r_A), \qquad v_n = v_\text{rel}\cdot n \f]
+/// (v_n < 0: approaching). An impulse j·n at the point (−j·n on A) changes
+/// v_n by j/m_eff, where the *effective mass* along n includes turning:
+/// \f[ \frac{1}{m_\text{eff}} = m_A^{-1} + m_B^{-1}
+///      + (r_A\times n)\cdot I_A^{-1}(r_A\times n) + (r_B\times n)\cdot I_B^{-1}(r_B\times n). \f]
+/// A push through the centre (r × n = 0) only moves; off centre, part of it
+/// turns the body instead, so the body "feels lighter". The impulse that
+/// makes the bodies separate at speed e·v_c is
+/// \f[ j = m_\text{eff}\,(e\,v_c - v_n), \f]
+/// applied as Δv = ±j·n/m and ΔL = ±r × j·n (momentum is conserved). With
+/// v_c = −v_n and no turning this is the textbook j = −(1+e)·v_n/(m_A⁻¹+m_B⁻¹).
 ///
 /// **Why v_c and not −v_n.** The contact is found only after the step has
 /// carried the bodies a depth d into each other. Under their relative normal
@@ -52,36 +82,54 @@ struct ImpulseReport {
 /// \f[ v_c = \sqrt{\max(0,\; v_n^2 + 2\,a_n\,d)}. \f]
 /// Bouncing with the end-of-step speed instead, and then pushing the body
 /// back to the surface, adds m·g·d of energy per bounce: the well-known
-/// "ball that bounces higher than it fell". With v_c, a ball of
-/// restitution e dropped from height h peaks at e²ⁿ·h after n bounces at any
-/// time step. (A v_c of zero means the bodies were resting, not colliding.)
+/// "ball that bounces higher than it fell". With v_c, a ball of restitution
+/// e dropped from height h peaks at e²ⁿ·h after n bounces at any time step.
+/// Below kRestingContactSteps·|a_n|·h the contact is resting: e = 0.
 ///
-/// Friction then acts on the tangential part of the relative velocity
-/// *after* the normal impulse (the normal impulse sets the friction bound),
-/// and is clamped to Coulomb's cone |j_t| ≤ μ·j. Bodies are treated as
-/// particles in this stage: impulses change linear velocity only (angular
-/// response arrives with inertia tensors).
+/// **Friction** acts on the tangential part of v_rel *after* the normal
+/// impulse (the normal impulse sets its bound): the impulse that would stop
+/// the sliding, with effective masses along two tangents t₁, t₂, clamped to
+/// Coulomb's cone |j_t| ≤ μ·j.
 ///
-/// References: Millington, *Game Physics Engine Development*, ch. 7;
-/// Catto, "Fast and Simple Physics using Sequential Impulses", GDC 2006.
-/// @param bodies   the world's objects (dynamic velocities change)
-/// @param contacts this step's contacts
-/// @param h        time step, s (sets the resting-contact speed)
-/// @param reports  optional, one report per contact (size must match), may be empty
-void resolveImpulses(const BodySet& bodies, std::span<const Contact> contacts, Real h,
-                     std::span<ImpulseReport> reports = {});
+/// **Many contacts.** A box on a plane has four contacts on one body, and
+/// an impulse at one corner changes the velocity at the others. The stage
+/// therefore makes `settings.impulseIterations` passes over all contacts,
+/// each pass correcting what is left, and *accumulates* each contact's
+/// impulses: a pass may reduce an earlier impulse, but the total j stays
+/// ≥ 0 (contacts push, never pull) and the total friction stays inside
+/// μ·j. This is Catto's sequential impulses (GDC 2006) without warm starting.
+///
+/// References: Catto, "Fast and Simple Physics using Sequential Impulses",
+/// GDC 2006; Millington, *Game Physics Engine Development*, ch. 14;
+/// Mirtich, *Impulse-based Dynamic Simulation of Rigid Body Systems* (1996).
+/// @param bodies      the world's objects (dynamic velocities change)
+/// @param contacts    this step's contacts
+/// @param h           time step, s (sets the resting-contact speed)
+/// @param iterations  passes over the contacts, ≥ 1
+/// @param constraints scratch array, reused between steps
+/// @param reports     optional, one report per contact (size must match), may be empty
+void resolveImpulses(const BodySet& bodies, std::span<const Contact> contacts, Real h, int iterations,
+                     std::vector<ContactConstraint>& constraints, std::span<ImpulseReport> reports = {});
 
 /// @brief Stage 7: moves overlapping bodies apart along the contact normal, in proportion to their inverse masses.
 ///
-/// Each contact's depth d is removed in full: A moves by −n·d·m_A⁻¹/(m_A⁻¹+m_B⁻¹)
-/// and B by +n·d·m_B⁻¹/(m_A⁻¹+m_B⁻¹), which leaves the centre of mass where it
-/// was. Only positions change: no velocity is added, so the correction puts
-/// no energy into the system beyond undoing the overlap. Removing all of d
-/// (not a fraction, as Baumgarte stabilisation does) is what lets a sphere
-/// rest on a plane without sinking: each step's gravity sag of about g·h² is
-/// taken back in the same step.
-/// @param bodies   the world's objects (dynamic positions change)
-/// @param contacts this step's contacts
-void correctPositions(const BodySet& bodies, std::span<const Contact> contacts);
+/// A contact's remaining overlap is its depth minus how far the step's
+/// earlier corrections have already separated its two bodies along n:
+/// \f[ d_\text{now} = d - \big((x_B - x_B^0) - (x_A - x_A^0)\big)\cdot n. \f]
+/// It is removed in full, A moving by −n·d_now·m_A⁻¹/(m_A⁻¹+m_B⁻¹) and B by
+/// +n·d_now·m_B⁻¹/(m_A⁻¹+m_B⁻¹), which leaves their centre of mass in place.
+/// Tracking d_now matters for a box on a plane: its four corners report the
+/// same sag, and lifting the box once clears all four.
+///
+/// Only positions change: no velocity is added, so the correction puts no
+/// energy into the system beyond undoing the overlap. Removing all of it
+/// (not a fraction, as Baumgarte stabilisation does) is what lets a body rest
+/// without sinking: each step's gravity sag of about g·h² is taken back in the
+/// same step. Orientation is left alone: the impulses already stop a body
+/// turning into its support.
+/// @param bodies         the world's objects (dynamic positions change)
+/// @param contacts       this step's contacts
+/// @param startPositions scratch array, reused between steps
+void correctPositions(const BodySet& bodies, std::span<const Contact> contacts, std::vector<Vec3>& startPositions);
 
 }  // namespace stepwise

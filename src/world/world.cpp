@@ -31,6 +31,7 @@ World::World(Scene scene)
       planes_(std::move(scene.planes)) {
     require(isFinite(settings_.timeStep) && settings_.timeStep > 0, "World", "time step must be > 0 s");
     require(stepwise::isFinite(settings_.gravity), "World", "gravity must be finite");
+    require(settings_.impulseIterations >= 1, "World", "impulse iterations must be at least 1");
     for (DynamicObject& body : dynamics_) {
         require(isFinite(body.mass) && body.mass > 0, body.name, "mass must be > 0 kg");
         require(isFinite(body.radius) && body.radius > 0, body.name, "radius must be > 0 m");
@@ -85,11 +86,11 @@ void World::step() {
     // 6. Impulses: bounce and friction change velocities (src/dynamics/impulse_resolver.cpp)
     runStage(Stage::ResolveImpulses, [&] {
         impulses_.resize(contacts_.size());
-        resolveImpulses(bodies(), contacts_, h, impulses_);
+        resolveImpulses(bodies(), contacts_, h, settings_.impulseIterations, constraints_, impulses_);
     });
 
     // 7. Push overlapping bodies apart (src/dynamics/impulse_resolver.cpp, correctPositions)
-    runStage(Stage::CorrectPositions, [&] { correctPositions(bodies(), contacts_); });
+    runStage(Stage::CorrectPositions, [&] { correctPositions(bodies(), contacts_, startPositions_); });
 
     time_ += h;
     ++stepCount_;

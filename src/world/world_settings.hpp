@@ -20,6 +20,10 @@ const char* toString(IntegratorKind kind);
 inline constexpr Real kDefaultTimeStep = Real(1) / Real(60);
 /// @brief Default run length of `stepwise run`, s.
 inline constexpr Real kDefaultDuration = Real(10);
+/// @brief Default number of passes over all contacts in the impulse stage.
+/// One pass settles an isolated contact exactly; a box on a plane (four
+/// contacts sharing one body) needs several for its impulses to agree.
+inline constexpr int kDefaultImpulseIterations = 10;
 
 /// @brief Global simulation settings: one per World.
 struct WorldSettings {
@@ -27,6 +31,7 @@ struct WorldSettings {
     Real timeStep = kDefaultTimeStep;                  ///< Fixed step h, s; > 0.
     IntegratorKind integrator = IntegratorKind::SymplecticEuler; ///< Time integrator.
     Real duration = kDefaultDuration;                  ///< Default run length, s; > 0.
+    int impulseIterations = kDefaultImpulseIterations; ///< Passes over the contacts per step, ≥ 1.
 };
 
 }  // namespace stepwise
