@@ -195,6 +195,9 @@ private:
             case FieldKind::Integrator:
                 readChoice(field, slot, value, wordsOf(kIntegratorChoices));
                 break;
+            case FieldKind::Boolean:
+                readChoice(field, slot, value, wordsOf(kBooleanChoices));
+                break;
             case FieldKind::Name: {
                 const Parsed<std::string> name = parseName(value);
                 if (name.ok()) {
@@ -260,6 +263,7 @@ private:
         const Parsed<std::size_t> index = parseWord(value, words);
         if (index.ok()) {
             slot.choice = index.value();
+            slot.text = std::string(value.text);  // as written, for messages about the choice
         } else {
             sink_.report(line_.number, fieldName(field, kWholeField), index.problem());
         }

@@ -76,7 +76,7 @@ public:
         return s.choice ? choices[*s.choice].value : fallback;
     }
 
-    /// @brief The field's text (used for Name), or nullopt when not given.
+    /// @brief The field's text as written (a Name, or the word of a choice field), or nullopt when not given.
     std::optional<std::string> text(std::string_view field) const;
 
 private:
@@ -86,7 +86,7 @@ private:
         std::array<int, 3> setAtColumn{};            ///< Token column that set each part; 0 = not set yet.
         int valueColumn = 0;                         ///< Column of the value where first set.
         std::optional<std::size_t> choice;           ///< Index into the kind's choice table.
-        std::optional<std::string> text;             ///< A name's text.
+        std::optional<std::string> text;             ///< A name's text, or a choice's word, as written.
         std::string asWritten;                       ///< The whole triple as written, if given whole.
     };
 

@@ -47,6 +47,7 @@ const Vec3 kDefaultGravity{0, -kStandardGravity, 0};  ///< m/s², pointing down 
 constexpr Shape kDefaultShape = Shape::Sphere;         ///< The shape every collision test supports.
 constexpr Real kDefaultMass = 1;                       ///< kg.
 constexpr IntegratorKind kDefaultIntegrator = IntegratorKind::SymplecticEuler;
+constexpr bool kDefaultHollow = false;                 ///< A sphere is a solid ball (I = 2/5 m r^2).
 
 /// A dynamic body's own elasticity and friction: a moderate bounce and grip.
 constexpr Real kDynamicElasticity = Real(0.5);
@@ -66,9 +67,6 @@ constexpr Real kMinNormalLength = Real(1e-9);
 const Vec3 kAxisX{1, 0, 0};
 const Vec3 kAxisY{0, 1, 0};
 const Vec3 kAxisZ{0, 0, 1};
-
-constexpr std::string_view kBoxWarning =
-    "boxes fall and move but do not collide yet; box collisions arrive with the rigid-body release";
 
 // ------------------------------------------------------------------ helpers
 
@@ -166,9 +164,12 @@ private:
         body.friction = values.number("Friction", kDynamicFriction);
         body.orientation = orientationFromDegrees(values.triple("Rotation", kZero));
         body.angularVelocity = values.triple("AngularVelocity", kZero);
-        if (body.shape == Shape::Box) {
-            scene_.warnings.push_back(sink_.file() + ":" + std::to_string(line.number) + ": DynamicObject '" +
-                                      body.name + "' is a box: " + std::string(kBoxWarning));
+        body.hollow = values.choice<bool>("Hollow", kBooleanChoices, kDefaultHollow);
+        if (body.hollow && body.shape == Shape::Box) {
+            // A hollow box would need a wall thickness; rather than guess one, refuse.
+            sink_.report(line.number, values.valueColumn("Hollow"), "Hollow", "false for a Box",
+                         values.text("Hollow").value_or("true"),
+                         "only a sphere can be hollow (a thin shell, I = 2/3 m r^2); boxes are solid");
         }
         scene_.dynamics.push_back(std::move(body));
     }

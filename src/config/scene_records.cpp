@@ -52,6 +52,7 @@ constexpr FieldSpec kDynamicFields[] = {
     {"Friction",        FieldKind::Number,     kNamedOnly, Range::NonNegative, kFrictionHint},
     {"Rotation",        FieldKind::Vector,     kNamedOnly, Range::Any},              // degrees about X, then Y, then Z
     {"AngularVelocity", FieldKind::Vector,     kNamedOnly, Range::Any},              // rad/s
+    {"Hollow",          FieldKind::Boolean,    kNamedOnly, Range::Any},              // sphere only: a thin shell
 };
 
 /// KinematicsObject: 10 positional values (no velocity, mass or radius among them).
@@ -123,6 +124,15 @@ const std::array<Choice<IntegratorKind>, 6> kIntegratorChoices = {{
     {"SemiImplicitEuler", IntegratorKind::SymplecticEuler},
     {"Verlet", IntegratorKind::Verlet},
     {"VelocityVerlet", IntegratorKind::Verlet},
+}};
+
+const std::array<Choice<bool>, 6> kBooleanChoices = {{
+    {"true", true},
+    {"false", false},
+    {"yes", true},
+    {"no", false},
+    {"1", true},
+    {"0", false},
 }};
 
 std::span<const RecordSpec> allRecords() { return kRecords; }

@@ -4,9 +4,11 @@
 
 namespace stepwise {
 
-/// Moment-of-inertia factors k in I = k·m·r² (solid ball ⅖, thin shell ⅔):
-/// integrals of r⊥² over the volume or the surface.
+/// Solid ball: I = k·m·r² with k = ⅖, the volume integral of r⊥² (the
+/// distance from the axis squared) over the ball, divided by m·r².
 constexpr Real kSolidSphereFactor = Real(2) / Real(5);
+/// Thin spherical shell: k = ⅔, the same integral over the surface. All the
+/// mass is at the radius r, none near the centre, hence more than ⅖.
 constexpr Real kHollowSphereFactor = Real(2) / Real(3);
 /// A uniform rod or box side of length a contributes m·a²/12 about its centre.
 constexpr Real kBoxFactor = Real(1) / Real(12);
