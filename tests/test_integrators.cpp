@@ -8,6 +8,7 @@
 #include <cmath>
 #include <vector>
 
+#include "dynamics/inertia.hpp"
 #include "integrators/integrators.hpp"
 #include "test_support.hpp"
 
@@ -194,6 +195,8 @@ TEST_CASE("Constant angular velocity turns the orientation by |w|*t", "[euler][s
     for (IntegratorKind kind : test::kAllIntegrators) {
         std::vector<DynamicObject> bodies{test::sphere("spinner", Vec3(0))};
         bodies[0].angularVelocity = Vec3(0, 0, kPi / 2);
+        // The rotational state is L (ω is derived from it), so set L = I·ω as World does.
+        initialiseMassProperties(bodies[0]);
         const Real h = Real(1) / 60;
         const AccelerationFunction none = [](std::span<DynamicObject>) {};
         for (int i = 0; i < 60; ++i) {

@@ -98,14 +98,25 @@ void printFinalState(const World& world) {
     if (total > kMaxListedObjects) std::printf("  ... and %zu more\n", total - kMaxListedObjects);
 }
 
-void printConservation(const Energy& before, const Energy& after, const Vec3& p0, const Vec3& p1) {
+void printEnergyLine(const char* label, const Energy& e) {
+    std::printf("  %-5s %-12.6g (translational %.6g, rotational %.6g, potential %.6g)\n", label, double(e.total()),
+                double(e.translational), double(e.rotational), double(e.potential));
+}
+
+/// The conserved quantities at the start and end of a run. With no gravity and
+/// no contacts all three are conserved; how well they are shows the integrator.
+void printConservation(const Energy& before, const Energy& after, const Vec3& p0, const Vec3& p1, const Vec3& l0,
+                       const Vec3& l1) {
     const double e0 = double(before.total());
     const double e1 = double(after.total());
-    std::printf("\nEnergy (translational kinetic + potential), J\n");
-    std::printf("  start %.6g (kinetic %.6g), end %.6g (kinetic %.6g), change %+.6g",
-                e0, double(before.kinetic), e1, double(after.kinetic), e1 - e0);
+    std::printf("\nEnergy (kinetic = translational + rotational, plus potential), J\n");
+    printEnergyLine("start", before);
+    printEnergyLine("end", after);
+    std::printf("  change %+.6g", e1 - e0);
     if (std::abs(e0) > 0) std::printf(" (%+.3f %%)", 100.0 * (e1 - e0) / std::abs(e0));
     std::printf("\nLinear momentum, kg*m/s\n  start %s, end %s\n", vec(p0).c_str(), vec(p1).c_str());
+    std::printf("Angular momentum about the origin, kg*m^2/s\n  start %s, end %s\n", vec(l0).c_str(),
+                vec(l1).c_str());
 }
 
 void printStageTimes(const World& world, double wallSeconds) {
@@ -147,6 +158,7 @@ int runCommand(const RunOptions& options) {
 
     const Energy energyBefore = energyOf(world);
     const Vec3 momentumBefore = linearMomentumOf(world);
+    const Vec3 angularMomentumBefore = angularMomentumOf(world);
     const auto start = Clock::now();
     int exitCode = kExitOk;
     {
@@ -168,7 +180,8 @@ int runCommand(const RunOptions& options) {
     std::printf("Simulated %.6g s in %llu steps\n", double(world.time()),
                 static_cast<unsigned long long>(world.stepCount()));
     printFinalState(world);
-    printConservation(energyBefore, energyOf(world), momentumBefore, linearMomentumOf(world));
+    printConservation(energyBefore, energyOf(world), momentumBefore, linearMomentumOf(world), angularMomentumBefore,
+                      angularMomentumOf(world));
     printStageTimes(world, wall);
     if (csv) std::printf("\nTrajectory written to %s\n", options.csvPath->c_str());
     return exitCode;

@@ -12,6 +12,28 @@
 /// | symplectic Euler  | x + h·v(t+h)                    | v + h·a(t)                 | O(h)         | bounded (oscillates)    |
 /// | velocity Verlet   | x + h·v(t) + ½h²·a(t)           | v + ½h·(a(t) + a(t+h))     | O(h²)        | bounded (oscillates)    |
 ///
+/// Rotation is integrated alongside, from the torque τ the apply-forces stage
+/// wrote into DynamicObject::torque. The rotational state is the world-frame
+/// angular momentum L (τ = dL/dt, the rotational twin of m·v), not ω: the
+/// orientation turns, and ω = I_world⁻¹·L follows (src/dynamics/inertia.hpp):
+///
+/// | integrator        | angular momentum                   | orientation                               | ‖L‖ (τ = 0) | rotational energy (τ = 0) |
+/// |-------------------|------------------------------------|-------------------------------------------|-------------|---------------------------|
+/// | explicit Euler    | L + h·τ(t)                         | turn by ω(t)·h, ω from the old q and L    | exact       | drifts, error O(h)        |
+/// | symplectic Euler  | L + h·τ(t), first                  | free-body splitting for h, with the new L | exact       | bounded, O(h²)            |
+/// | velocity Verlet   | + ½h·τ(t) before, + ½h·τ(t+h) after | free-body splitting for h                 | exact       | bounded, O(h²)            |
+///
+/// The free-body splitting (rotateTorqueFree(), free_rotation.cpp) is shared
+/// by the last two. Why L and not ω is the state: differentiate
+/// L = R·I_body·Rᵀ·ω and you get Euler's equations, I·ω̇ + ω×(I·ω) = τ in the
+/// body frame; the gyroscopic term ω×(I·ω) that makes a tumbling box wobble
+/// and flip is carried by R turning inside I_world. With L stored, a
+/// torque-free body keeps L to the last bit, and only the orientation needs
+/// an integrator. See lectures/04-inertia-and-rotation.md.
+///
+/// Every update ends with the quaternion normalised: rounding in each
+/// product moves it off the unit sphere, and |q| ≠ 1 would scale the body.
+///
 /// Collisions act *after* integration: the narrowphase finds the overlaps
 /// the step produced and the impulse stage changes velocities directly
 /// (an impulse is an instantaneous change of momentum, not a force), so all
@@ -25,23 +47,42 @@
 
 namespace stepwise {
 
-/// @brief Explicit (forward) Euler: x ← x + h·v, v ← v + h·a, both from the old state.
+/// @brief Explicit (forward) Euler: x ← x + h·v, v ← v + h·a, q ← turn(ω·h), L ← L + h·τ, all from the old state.
 void integrateExplicitEuler(std::span<DynamicObject> bodies, Real h);
 
-/// @brief Symplectic (semi-implicit) Euler: v ← v + h·a, then x ← x + h·v with the new v.
+/// @brief Symplectic (semi-implicit) Euler: v ← v + h·a, then x ← x + h·v with the new v;
+/// L ← L + h·τ, then the orientation by rotateTorqueFree() with the new L.
 void integrateSymplecticEuler(std::span<DynamicObject> bodies, Real h);
 
-/// @brief Velocity Verlet: x ← x + h·v + ½h²·a, a_new = a(x_new), v ← v + ½h·(a + a_new).
-/// @param accelerations recomputes DynamicObject::acceleration at the new positions.
+/// @brief Velocity Verlet: x ← x + h·v + ½h²·a, a_new = a(x_new), v ← v + ½h·(a + a_new);
+/// for rotation L ← L + ½h·τ, rotateTorqueFree() for h, τ_new = τ(q_new), L ← L + ½h·τ_new.
+/// @param accelerations recomputes DynamicObject::acceleration and DynamicObject::torque
+///        at the new positions and orientations.
 void integrateVerlet(std::span<DynamicObject> bodies, Real h, const AccelerationFunction& accelerations);
 
 /// @brief Rotates @p orientation by a constant angular velocity @p omega (world frame, rad/s) for @p h seconds.
 ///
 /// Exact for constant ω: q ← exp(½·h·ω̂)·q, i.e. a rotation by angle |ω|·h
-/// about ω/|ω|, applied in the world frame. Until rigid-body rotation
-/// arrives (inertia tensors and torques), angular velocity is constant,
-/// which is the exact torque-free motion of a sphere.
+/// about ω/|ω|, applied in the world frame (multiplied on the left). That is
+/// the motion of a kinematic body, and of a torque-free body whose three
+/// moments of inertia are equal; explicit Euler also uses it for one step of
+/// any body, with the ω of the step's start.
 Quat rotateByAngularVelocity(const Quat& orientation, const Vec3& omega, Real h);
+
+/// @brief The torque-free motion of a rigid body for @p h seconds: the orientation
+/// after the symmetric splitting 1(h/2) 2(h/2) 3(h) 2(h/2) 1(h/2) of the free-body energy.
+///
+/// Each sub-flow spins the body about its principal body axis e_i by the angle
+/// (Π_i/I_i)·Δt, with Π = Rᵀ·L recomputed before each one; L in the world is
+/// fixed throughout. Second order, keeps |L| exactly and the energy within a
+/// bounded O(h²). A body with three equal moments is turned exactly, by |ω|·h
+/// about ω = L/I. The derivation is in free_rotation.cpp.
+/// @param orientation        body-to-world rotation at the start of the step
+/// @param angularMomentum    L, world frame, kg·m²/s (constant over the step)
+/// @param inverseInertiaBody 1/I₁, 1/I₂, 1/I₃ about the principal body axes, 1/(kg·m²)
+/// @param h                  step, s
+/// @return the orientation at the end of the step, normalised
+Quat rotateTorqueFree(const Quat& orientation, const Vec3& angularMomentum, const Vec3& inverseInertiaBody, Real h);
 
 /// @brief Stage 3: moves kinematic bodies along their prescribed constant velocities.
 void moveKinematics(std::span<KinematicsObject> bodies, Real h);

@@ -1,4 +1,5 @@
 /// @file measurements.cpp
+/// @brief Energy and momenta summed over the dynamic bodies.
 #include "world/measurements.hpp"
 
 namespace stepwise {
@@ -7,15 +8,26 @@ Energy energyOf(const World& world) {
     Energy energy;
     const Vec3& gravity = world.settings().gravity;
     for (const DynamicObject& body : world.dynamics()) {
-        energy.kinetic += Real(0.5) * body.mass * glm::dot(body.velocity, body.velocity);
+        energy.translational += Real(0.5) * body.mass * glm::dot(body.velocity, body.velocity);
+        // ½·ω·L = ½·ωᵀ·I_world·ω: ω and L are kept consistent by updateAngularVelocity().
+        energy.rotational += Real(0.5) * glm::dot(body.angularVelocity, body.angularMomentum);
         energy.potential -= body.mass * glm::dot(gravity + body.constantAcceleration, body.position);
     }
+    energy.kinetic = energy.translational + energy.rotational;
     return energy;
 }
 
 Vec3 linearMomentumOf(const World& world) {
     Vec3 momentum(0);
     for (const DynamicObject& body : world.dynamics()) momentum += body.mass * body.velocity;
+    return momentum;
+}
+
+Vec3 angularMomentumOf(const World& world) {
+    Vec3 momentum(0);
+    for (const DynamicObject& body : world.dynamics()) {
+        momentum += glm::cross(body.position, body.mass * body.velocity) + body.angularMomentum;
+    }
     return momentum;
 }
 

@@ -8,20 +8,32 @@ namespace stepwise {
 
 /// @brief Energies of the dynamic bodies, J.
 struct Energy {
-    Real kinetic = 0;    ///< Σ ½·m·|v|².
-    Real potential = 0;  ///< Σ −m·(g + a_obj)·x: potential of the uniform fields, zero at the origin.
+    Real translational = 0;  ///< Σ ½·m·|v|²: motion of the centres of mass.
+    Real rotational = 0;     ///< Σ ½·ω·L: spin about the centres of mass.
+    Real kinetic = 0;        ///< translational + rotational (energyOf() fills all three).
+    Real potential = 0;      ///< Σ −m·(g + a_obj)·x: potential of the uniform fields, zero at the origin.
     /// @brief Kinetic plus potential, J.
     Real total() const { return kinetic + potential; }
 };
 
-/// @brief Translational kinetic energy and the potential energy of the uniform fields.
+/// @brief Kinetic energy, split into translational and rotational, and the potential energy of the uniform fields.
 ///
+/// By König's theorem the kinetic energy of a rigid body is that of its
+/// centre of mass plus that of its spin about it:
+/// \f[ T = \tfrac12 m\,|v|^2 + \tfrac12\,\omega\cdot L, \qquad L = I_\text{world}\,\omega . \f]
 /// A uniform acceleration g has potential U = −m·g·x per body (for g = (0,−9.81,0)
-/// that is m·9.81·y, the familiar m·g·h). Rotational energy is not yet
-/// counted: until inertia tensors arrive, spin is constant and carries no exchange.
+/// that is m·9.81·y, the familiar m·g·h).
 Energy energyOf(const World& world);
 
 /// @brief Total linear momentum Σ m·v of the dynamic bodies, kg·m/s.
 Vec3 linearMomentumOf(const World& world);
+
+/// @brief Total angular momentum of the dynamic bodies about the world origin, kg·m²/s.
+///
+/// Each body contributes the moment of its centre's momentum plus its own
+/// spin: \f[ L_O = \sum_k \left( x_k \times m_k v_k + L_k \right). \f]
+/// With no external torque it is conserved; gravity (a torque x × m·g about
+/// the origin) and contacts with planes and kinematic bodies change it.
+Vec3 angularMomentumOf(const World& world);
 
 }  // namespace stepwise
