@@ -13,12 +13,13 @@ namespace {
 constexpr std::size_t kGeometryTypes = static_cast<std::size_t>(GeometryType::Count);
 
 /// The dispatch table, [shape of A][shape of B]. A is always a dynamic
-/// body. Dynamic boxes have no tests yet: box–box (SAT), box–plane and
-/// box–sphere with rotation arrive with the rigid-body release.
+/// body, B any body (dynamic, kinematic or a plane), so the Plane row is
+/// never used: a plane is never A. Box–sphere is sphere–box with the
+/// roles swapped and the normal flipped (box_sphere.cpp).
 constexpr PairTest kPairTests[kGeometryTypes][kGeometryTypes] = {
     //              B: Sphere               Box               Plane
     /* A: Sphere */ {collideSphereSphere, collideSphereBox, collideSpherePlane},
-    /* A: Box    */ {nullptr,             nullptr,          nullptr},
+    /* A: Box    */ {collideBoxSphere,    collideBoxBox,    collideBoxPlane},
     /* A: Plane  */ {nullptr,             nullptr,          nullptr},
 };
 
@@ -60,10 +61,8 @@ void findContacts(const BodySet& bodies, const std::vector<CandidatePair>& pairs
             case BodyKind::Kinematic: b = geometryOf(bodies.kinematics[pair.b.index]); break;
             case BodyKind::Plane: b = geometryOf(bodies.planes[pair.b.index]); break;
         }
-        // A dynamic box needs rotation to respond correctly (a push off its
-        // centre must turn it); until inertia tensors arrive, pairs with a
-        // dynamic box are left out rather than answered with wrong physics.
-        if (pair.b.kind == BodyKind::Dynamic && b.type == GeometryType::Box) continue;
+        // Every pair of shapes that can meet has a test; nullptr is left only
+        // for a plane as A, which the broadphase never produces.
         const PairTest test = pairTestFor(a.type, b.type);
         if (test == nullptr) continue;
 

@@ -59,8 +59,14 @@ bool collideSphereSphere(const Geometry& a, const Geometry& b, ContactManifold& 
 bool collideSpherePlane(const Geometry& a, const Geometry& b, ContactManifold& out);
 /// @brief Sphere against oriented box (src/collision/sphere_box.cpp).
 bool collideSphereBox(const Geometry& a, const Geometry& b, ContactManifold& out);
+/// @brief Oriented box against sphere: sphere–box with the normal flipped (src/collision/box_sphere.cpp).
+bool collideBoxSphere(const Geometry& a, const Geometry& b, ContactManifold& out);
+/// @brief Oriented box against plane: the corners behind it, up to 4 (src/collision/box_plane.cpp).
+bool collideBoxPlane(const Geometry& a, const Geometry& b, ContactManifold& out);
+/// @brief Oriented box against oriented box: separating axes, then a clipped manifold (src/collision/box_box.cpp).
+bool collideBoxBox(const Geometry& a, const Geometry& b, ContactManifold& out);
 
-/// @brief The pair test for shape A against shape B, or nullptr when that pair has none yet.
+/// @brief The pair test for shape A against shape B, or nullptr when there is none (a plane is never A).
 PairTest pairTestFor(GeometryType a, GeometryType b);
 
 /// @brief The geometry of a dynamic body, a kinematic body or a plane.
