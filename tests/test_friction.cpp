@@ -2,6 +2,7 @@
 // terms, against the classical results of rigid-body mechanics. Tag: [friction].
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 #include "test_support.hpp"
@@ -96,4 +97,143 @@ TEST_CASE("A sliding, non-spinning sphere ends rolling at 5/7 of its speed", "[f
         CHECK_THAT(ball.velocity.x, WithinRel(Real(5) / 7 * v0, 0.002));
         CHECK_THAT(ball.angularVelocity.z * 0.5, WithinRel(-ball.velocity.x, 0.002));  // rolling: v = −ω_z·R
     }
+}
+
+namespace {
+
+/// A solid cube of edge @p size resting flat on incline(degrees), its centre above the origin.
+DynamicObject boxOnIncline(Real degrees, Real size, Real mu) {
+    const Real theta = degrees * kPi / 180;
+    DynamicObject box;
+    box.name = "crate";
+    box.shape = Shape::Box;
+    box.scale = Vec3(size);
+    box.setMass(2);
+    box.elasticity = 0;
+    box.friction = mu;
+    // Turn the box's up axis (0,1,0) onto the incline's normal (sinθ, cosθ, 0): −θ about z.
+    box.orientation = glm::angleAxis(-theta, Vec3(0, 0, 1));
+    box.position = Real(0.5) * size * Vec3(std::sin(theta), std::cos(theta), 0);
+    return box;
+}
+
+/// Angle between the box's up axis and its starting up axis, degrees.
+Real tiltDegrees(const DynamicObject& box, const Quat& start) {
+    const Vec3 up = box.orientation * Vec3(0, 1, 0);
+    const Vec3 up0 = start * Vec3(0, 1, 0);
+    return std::acos(std::clamp(glm::dot(up, up0), Real(-1), Real(1))) * 180 / kPi;
+}
+
+}  // namespace
+
+TEST_CASE("A box slides down a 30 degree incline at g(sin(theta) - mu cos(theta))", "[friction]") {
+    // A sliding block feels kinetic friction μ·m·g·cosθ up the slope, spread over
+    // its four corners; the total, not the split, sets the acceleration.
+    const Real theta = 30, mu = 0.3;
+    Scene scene = test::emptyScene(IntegratorKind::SymplecticEuler, Real(1) / 60);
+    scene.planes.push_back(incline(theta));
+    scene.dynamics.push_back(boxOnIncline(theta, 1, mu));
+    World world(scene);
+    const Quat start = world.dynamics()[0].orientation;
+    while (world.time() < 2 - 1e-9) world.step();
+    const Real t = theta * kPi / 180;
+    const Real expected = kStandardGravity * (std::sin(t) - mu * std::cos(t));
+    const DynamicObject& box = world.dynamics()[0];
+    CHECK_THAT(glm::dot(box.velocity, downSlope(theta)) / world.time(), WithinRel(expected, 0.01));
+    CHECK(tiltDegrees(box, start) < 0.5);  // it slides flat: no tumbling
+}
+
+TEST_CASE("A box with mu > tan(theta) stays put on the incline", "[friction]") {
+    // Static friction can hold up to μ·m·g·cosθ ≥ m·g·sinθ when μ ≥ tanθ = 0.577.
+    const Real theta = 30;
+    Scene scene = test::emptyScene(IntegratorKind::SymplecticEuler, Real(1) / 60);
+    scene.planes.push_back(incline(theta));
+    scene.dynamics.push_back(boxOnIncline(theta, 1, 0.8));
+    World world(scene);
+    const Vec3 start = world.dynamics()[0].position;
+    Real drift = 0;
+    while (world.time() < 2) {
+        world.step();
+        drift = std::max(drift, glm::length(world.dynamics()[0].position - start));
+    }
+    CHECK(drift < 1e-3);
+}
+
+TEST_CASE("A box on a table tips once its centre of mass overhangs the edge, not before", "[friction][contacts]") {
+    // Resting on a support, gravity's torque about the table edge is m·g·(x_c − x_edge):
+    // it turns the box over the edge only when the centre of mass x_c is past it.
+    const Real edge = 1, size = 0.5;
+    for (Real overhang : {Real(-0.02), Real(0.02)}) {
+        Scene scene = test::emptyScene(IntegratorKind::SymplecticEuler, Real(1) / 60);
+        KinematicsObject table;
+        table.name = "table";
+        table.shape = Shape::Box;
+        table.position = Vec3(0, -0.5, 0);
+        table.scale = Vec3(2 * edge, 1, 2);
+        scene.kinematics.push_back(table);
+        DynamicObject box;
+        box.name = "crate";
+        box.shape = Shape::Box;
+        box.scale = Vec3(size);
+        box.setMass(1);
+        box.elasticity = 0;
+        box.friction = 0.6;
+        box.position = Vec3(edge + overhang, size / 2, 0);
+        scene.dynamics.push_back(box);
+        World world(scene);
+        Real tilt = 0;  // the largest tilt seen: once over the edge the box tumbles as it falls
+        while (world.time() < 2) {
+            world.step();
+            tilt = std::max(tilt, tiltDegrees(world.dynamics()[0], Quat(1, 0, 0, 0)));
+        }
+        const Real height = world.dynamics()[0].position.y;
+        INFO("overhang " << overhang << " m, largest tilt " << tilt << " degrees, final height " << height << " m");
+        if (overhang < 0) {
+            CHECK(tilt < 1);
+            CHECK(std::abs(height - size / 2) < 1e-3);
+        } else {
+            CHECK(tilt > 45);  // tipped over the edge...
+            CHECK(height < -1);  // ...and fell off the table
+        }
+    }
+}
+
+TEST_CASE("A box pushed slowly towards a table edge starts to tip as its centre passes the edge", "[friction][contacts]") {
+    // A kinematic pusher at 0.1 m/s slides the box along the table. The tilt
+    // begins when the centre of mass crosses the edge (x = 1): not before, and
+    // within 3 cm after (the box must also turn a little before 2° shows).
+    const Real edge = 1, size = 0.5;
+    Scene scene = test::emptyScene(IntegratorKind::SymplecticEuler, Real(1) / 120);
+    KinematicsObject table;
+    table.name = "table";
+    table.shape = Shape::Box;
+    table.position = Vec3(0, -0.5, 0);
+    table.scale = Vec3(2 * edge, 1, 2);
+    table.friction = 0.3;
+    scene.kinematics.push_back(table);
+    KinematicsObject pusher = table;
+    pusher.name = "pusher";
+    pusher.scale = Vec3(0.1, 0.2, 0.6);
+    pusher.position = Vec3(0.25 - 0.05, 0.1, 0);  // touching the box's left face, low down
+    pusher.velocity = Vec3(0.1, 0, 0);
+    pusher.friction = 0;
+    scene.kinematics.push_back(pusher);
+    DynamicObject box;
+    box.name = "crate";
+    box.shape = Shape::Box;
+    box.scale = Vec3(size);
+    box.setMass(1);
+    box.elasticity = 0;
+    box.friction = 1;
+    box.position = Vec3(0.5, size / 2, 0);
+    scene.dynamics.push_back(box);
+    World world(scene);
+    Real tippedAt = -1;
+    while (world.time() < 12 && tippedAt < 0) {
+        world.step();
+        if (tiltDegrees(world.dynamics()[0], Quat(1, 0, 0, 0)) > 2) tippedAt = world.dynamics()[0].position.x;
+    }
+    INFO("centre of mass at x = " << tippedAt << " when the tilt passed 2 degrees");
+    CHECK(tippedAt >= edge);
+    CHECK(tippedAt < edge + 0.03);
 }

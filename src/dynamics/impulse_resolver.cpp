@@ -8,6 +8,7 @@
 
 #include "dynamics/contact_body.hpp"
 #include "dynamics/inertia.hpp"
+#include "integrators/integrators.hpp"
 
 namespace stepwise {
 
@@ -83,8 +84,8 @@ ContactConstraint prepare(const BodySet& bodies, const Contact& contact, Real h,
     const Real an = glm::dot(other.acceleration - a.acceleration, c.normal);
     const Real depth = std::max(contact.depth, Real(0));
     const Real approachAtTouch = vn < 0 ? std::sqrt(std::max(Real(0), vn * vn + Real(2) * an * depth)) : Real(0);
-    const bool resting = approachAtTouch <= kRestingContactSteps * std::abs(an) * h;
-    const Real e = resting ? Real(0) : combineElasticity(a.elasticity, other.elasticity);
+    c.resting = approachAtTouch <= kRestingContactSteps * std::abs(an) * h;
+    const Real e = c.resting ? Real(0) : combineElasticity(a.elasticity, other.elasticity);
     c.targetSeparation = e * approachAtTouch;
     report = {std::max(-vn, Real(0)), approachAtTouch, e, 0, 0};
     return c;
@@ -122,7 +123,8 @@ void solve(ContactConstraint& c) {
 }  // namespace
 
 void resolveImpulses(const BodySet& bodies, std::span<const Contact> contacts, Real h, int iterations,
-                     std::vector<ContactConstraint>& constraints, std::span<ImpulseReport> reports) {
+                     ContactWorkspace& workspace, std::span<ImpulseReport> reports) {
+    std::vector<ContactConstraint>& constraints = workspace.constraints;
     constraints.resize(contacts.size());
     ImpulseReport unused;
     for (std::size_t i = 0; i < contacts.size(); ++i) {
@@ -137,6 +139,23 @@ void resolveImpulses(const BodySet& bodies, std::span<const Contact> contacts, R
         updateAngularVelocity(*c.a);
         if (c.b) updateAngularVelocity(*c.b);
     }
+
+    // What the resting contacts did to each body, for stage 7: the total
+    // impulse P of each contact, as Δv = ±P/m and Δω = ±I⁻¹(r × P).
+    const std::size_t bodyCount = bodies.dynamics.size();
+    workspace.supportVelocityChange.assign(bodyCount, Vec3(0));
+    workspace.supportSpinChange.assign(bodyCount, Vec3(0));
+    for (std::size_t i = 0; i < constraints.size(); ++i) {
+        const ContactConstraint& c = constraints[i];
+        if (!c.resting) continue;
+        const Vec3 P = c.normalImpulse * c.normal + c.tangentImpulse[0] * c.tangent[0] + c.tangentImpulse[1] * c.tangent[1];
+        workspace.supportVelocityChange[contacts[i].a] -= P * c.a->inverseMass;
+        workspace.supportSpinChange[contacts[i].a] -= c.inverseInertiaA * glm::cross(c.rA, P);
+        if (c.b) {
+            workspace.supportVelocityChange[contacts[i].b.index] += P * c.inverseMassB;
+            workspace.supportSpinChange[contacts[i].b.index] += c.inverseInertiaB * glm::cross(c.rB, P);
+        }
+    }
     if (!reports.empty()) {
         for (std::size_t i = 0; i < contacts.size(); ++i) {
             const ContactConstraint& c = constraints[i];
@@ -146,10 +165,26 @@ void resolveImpulses(const BodySet& bodies, std::span<const Contact> contacts, R
     }
 }
 
-void correctPositions(const BodySet& bodies, std::span<const Contact> contacts, std::vector<Vec3>& startPositions) {
+void correctPositions(const BodySet& bodies, std::span<const Contact> contacts, Real supportStep,
+                      ContactWorkspace& workspace) {
+    std::vector<Vec3>& startPositions = workspace.startPositions;
     startPositions.resize(bodies.dynamics.size());
     for (std::size_t i = 0; i < bodies.dynamics.size(); ++i) startPositions[i] = bodies.dynamics[i].position;
 
+    // Support: the displacement the integrator would have given the support force.
+    if (workspace.supportVelocityChange.size() == bodies.dynamics.size()) {
+        for (std::size_t i = 0; i < bodies.dynamics.size(); ++i) {
+            DynamicObject& body = bodies.dynamics[i];
+            body.position += supportStep * workspace.supportVelocityChange[i];
+            const Vec3& spin = workspace.supportSpinChange[i];
+            if (spin != Vec3(0)) {
+                body.orientation = rotateByAngularVelocity(body.orientation, spin, supportStep);
+                updateAngularVelocity(body);  // I_world turned with the body: ω = I_world⁻¹·L
+            }
+        }
+    }
+
+    // Overlap: whatever the support did not already remove.
     for (const Contact& contact : contacts) {
         DynamicObject& a = bodies.dynamics[contact.a];
         DynamicObject* b = contact.b.kind == BodyKind::Dynamic ? &bodies.dynamics[contact.b.index] : nullptr;

@@ -53,9 +53,18 @@ struct ContactConstraint {
     Real normalMass = 0;           ///< 1 / (effective inverse mass along n), kg.
     Real tangentMass[2] = {0, 0};  ///< The same along each tangent, kg.
     Real targetSeparation = 0;     ///< e·v_c: the normal speed the passes aim for, m/s.
+    bool resting = false;          ///< Support, not impact: v_c below kRestingContactSteps·|a_n|·h.
     Real friction = 0;             ///< μ of the pair.
     Real normalImpulse = 0;        ///< Accumulated j, N·s.
     Real tangentImpulse[2] = {0, 0}; ///< Accumulated friction impulse along each tangent, N·s.
+};
+
+/// @brief Scratch arrays of stages 6 and 7, owned by the World and reused every step.
+struct ContactWorkspace {
+    std::vector<ContactConstraint> constraints;  ///< One per contact, rebuilt each step.
+    std::vector<Vec3> supportVelocityChange;     ///< Per dynamic body: Δv from its resting contacts, m/s.
+    std::vector<Vec3> supportSpinChange;         ///< Per dynamic body: Δω from its resting contacts, rad/s.
+    std::vector<Vec3> startPositions;            ///< Per dynamic body: position before stage 7, m.
 };
 
 /// @brief Applies normal impulses with restitution and Coulomb friction impulses at every contact point.
@@ -105,31 +114,39 @@ struct ContactConstraint {
 /// @param bodies      the world's objects (dynamic velocities change)
 /// @param contacts    this step's contacts
 /// @param h           time step, s (sets the resting-contact speed)
+/// After the passes, the velocity change each body received from its
+/// *resting* contacts is recorded in the workspace for stage 7.
 /// @param iterations  passes over the contacts, ≥ 1
-/// @param constraints scratch array, reused between steps
+/// @param workspace   scratch arrays, reused between steps
 /// @param reports     optional, one report per contact (size must match), may be empty
 void resolveImpulses(const BodySet& bodies, std::span<const Contact> contacts, Real h, int iterations,
-                     std::vector<ContactConstraint>& constraints, std::span<ImpulseReport> reports = {});
+                     ContactWorkspace& workspace, std::span<ImpulseReport> reports = {});
 
-/// @brief Stage 7: moves overlapping bodies apart along the contact normal, in proportion to their inverse masses.
+/// @brief Stage 7: moves supported bodies as their integrator would have, then pushes overlapping bodies apart.
 ///
-/// A contact's remaining overlap is its depth minus how far the step's
-/// earlier corrections have already separated its two bodies along n:
+/// **Support.** A resting contact stands for a continuous support force. Over
+/// the step it changed the body's velocity by Δv_s (and spin by Δω_s), which
+/// the integrator, had it been a force, would have turned into a displacement
+/// s·h·Δv_s (s from positionShareOfVelocityChange: 0, 1 or ½). Applying it
+/// here undoes exactly the sag *and* the slide that gravity's drift put into
+/// this step's integration: a box on a slope with enough friction does not
+/// creep, and a ball at rest does not sink. Impacts are left out: a bounce is
+/// instantaneous, and its position is handled by the overlap below.
+///
+/// **Overlap.** A contact's remaining overlap is its depth minus how far the
+/// bodies have already separated along n in this stage:
 /// \f[ d_\text{now} = d - \big((x_B - x_B^0) - (x_A - x_A^0)\big)\cdot n. \f]
 /// It is removed in full, A moving by −n·d_now·m_A⁻¹/(m_A⁻¹+m_B⁻¹) and B by
 /// +n·d_now·m_B⁻¹/(m_A⁻¹+m_B⁻¹), which leaves their centre of mass in place.
 /// Tracking d_now matters for a box on a plane: its four corners report the
-/// same sag, and lifting the box once clears all four.
-///
-/// Only positions change: no velocity is added, so the correction puts no
-/// energy into the system beyond undoing the overlap. Removing all of it
-/// (not a fraction, as Baumgarte stabilisation does) is what lets a body rest
-/// without sinking: each step's gravity sag of about g·h² is taken back in the
-/// same step. Orientation is left alone: the impulses already stop a body
-/// turning into its support.
-/// @param bodies         the world's objects (dynamic positions change)
-/// @param contacts       this step's contacts
-/// @param startPositions scratch array, reused between steps
-void correctPositions(const BodySet& bodies, std::span<const Contact> contacts, std::vector<Vec3>& startPositions);
+/// same sag, and lifting the box once clears all four. Removing all of it
+/// (not a fraction, as Baumgarte stabilisation does) adds no velocity, so no
+/// energy beyond undoing the overlap.
+/// @param bodies     the world's objects (dynamic positions and orientations change)
+/// @param contacts   this step's contacts
+/// @param supportStep s·h: the integrator's share of the step, s
+/// @param workspace  the arrays stage 6 filled (support changes) and scratch
+void correctPositions(const BodySet& bodies, std::span<const Contact> contacts, Real supportStep,
+                      ContactWorkspace& workspace);
 
 }  // namespace stepwise

@@ -34,16 +34,31 @@
 /// Every update ends with the quaternion normalised: rounding in each
 /// product moves it off the unit sphere, and |q| ≠ 1 would scale the body.
 ///
-/// Collisions act *after* integration: the narrowphase finds the overlaps
-/// the step produced and the impulse stage changes velocities directly
-/// (an impulse is an instantaneous change of momentum, not a force), so all
-/// three integrators meet contacts the same way. See lectures/01 and 02.
+/// **How each integrator meets collision impulses.** Collisions act *after*
+/// integration: the narrowphase finds the overlaps the step produced and the
+/// impulse stage changes velocities directly. An *impact* (a ball hitting
+/// the floor) is instantaneous, so its impulse bypasses the integrator. A
+/// *resting* contact (a box on a slope) is really a continuous support force,
+/// and each integrator would have moved the body by its own share of the
+/// velocity change Δv that force causes over the step:
+///
+/// | integrator        | x_{n+1} − x_n − h·v_n | share of h·Δv (positionShareOfVelocityChange) |
+/// |-------------------|-----------------------|-----------------------------------------------|
+/// | explicit Euler    | 0                     | 0: the position never sees this step's Δv      |
+/// | symplectic Euler  | h·Δv                  | 1: the position moves with the new velocity    |
+/// | velocity Verlet   | ½h²·a = ½h·Δv         | ½: the position moves with the mean velocity   |
+///
+/// The position-correction stage moves supported bodies by that share of
+/// their support impulses' Δv (src/dynamics/impulse_resolver.hpp), so a body
+/// at rest on a slope neither sinks nor creeps, with every integrator.
+/// See lectures/01–03.
 #pragma once
 
 #include <span>
 
 #include "forces/apply_forces.hpp"
 #include "objects/game_object.hpp"
+#include "world/world_settings.hpp"
 
 namespace stepwise {
 
@@ -83,6 +98,11 @@ Quat rotateByAngularVelocity(const Quat& orientation, const Vec3& omega, Real h)
 /// @param h                  step, s
 /// @return the orientation at the end of the step, normalised
 Quat rotateTorqueFree(const Quat& orientation, const Vec3& angularMomentum, const Vec3& inverseInertiaBody, Real h);
+
+/// @brief The fraction of a step's velocity change Δv that @p integrator lets
+/// move the position within the same step: x_{n+1} = x_n + h·v_n + share·h·Δv.
+/// (0 for explicit Euler, 1 for symplectic Euler, ½ for velocity Verlet.)
+Real positionShareOfVelocityChange(IntegratorKind integrator);
 
 /// @brief Stage 3: moves kinematic bodies along their prescribed constant velocities.
 void moveKinematics(std::span<KinematicsObject> bodies, Real h);

@@ -86,11 +86,12 @@ void World::step() {
     // 6. Impulses: bounce and friction change velocities (src/dynamics/impulse_resolver.cpp)
     runStage(Stage::ResolveImpulses, [&] {
         impulses_.resize(contacts_.size());
-        resolveImpulses(bodies(), contacts_, h, settings_.impulseIterations, constraints_, impulses_);
+        resolveImpulses(bodies(), contacts_, h, settings_.impulseIterations, contactWorkspace_, impulses_);
     });
 
     // 7. Push overlapping bodies apart (src/dynamics/impulse_resolver.cpp, correctPositions)
-    runStage(Stage::CorrectPositions, [&] { correctPositions(bodies(), contacts_, startPositions_); });
+    const Real supportStep = positionShareOfVelocityChange(settings_.integrator) * h;
+    runStage(Stage::CorrectPositions, [&] { correctPositions(bodies(), contacts_, supportStep, contactWorkspace_); });
 
     time_ += h;
     ++stepCount_;

@@ -67,8 +67,7 @@ private:
     std::vector<CandidatePair> pairs_;
     std::vector<Contact> contacts_;
     std::vector<ImpulseReport> impulses_;
-    std::vector<ContactConstraint> constraints_;
-    std::vector<Vec3> startPositions_;
+    ContactWorkspace contactWorkspace_;
 
     StageRecords stageRecords_{};
     Real time_ = 0;
