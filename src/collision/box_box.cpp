@@ -52,10 +52,10 @@
 /// p − n_ref·d/2.
 ///
 /// Clipping a quad by a rectangle can leave up to 8 points; the manifold
-/// keeps 4 (reduceToFour below): the deepest, the one farthest from it, the
+/// keeps 4 (keepSpreadPoints below): the deepest, the one farthest from it, the
 /// one farthest from the line through those two, and the farthest on the
-/// other side of that line. Those span the largest area, which is what
-/// keeps a box from rocking.
+/// other side of that line: nearly the largest area four of the points can
+/// span, and a wide base is what keeps a box from rocking.
 ///
 /// ### 3b. Edge contact (Ericson §5.1.9)
 /// The edge of A that reaches furthest along n and the edge of B that
@@ -168,44 +168,58 @@ int bestCandidate(int count, const bool* taken, Score score) {
     return best;
 }
 
-/// Keeps 4 of @p count > 4 candidates (section 3a):
+/// Keeps @p keep of the @p count candidates (section 3a), choosing in this order:
 /// 1. the deepest point p₁;
 /// 2. the point p₂ farthest from p₁;
 /// 3. the point p₃ farthest from the line p₁p₂ (largest triangle p₁p₂p₃);
 /// 4. the point farthest from that line on the *other* side (largest
 ///    quadrilateral); if p₁p₂ is an edge of the polygon and nothing is on
-///    the other side, the point farthest from p₁, p₂ and p₃ (the smallest
-///    of its three distances is largest).
-/// The kept points stay in their original order, so the manifold is repeatable.
-int reduceToFour(Candidate* points, int count, const Vec3& normal) {
+///    the other side, the point farthest from the points already kept;
+/// 5. (only if more than 4 are wanted) again the point farthest from those kept.
+/// With kMaxManifoldPoints = 4 that is steps 1–4; a smaller limit stops
+/// early (1 keeps only the deepest point). The kept points stay in their
+/// original order, so the manifold is repeatable.
+/// @return the number kept, min(count, keep)
+int keepSpreadPoints(Candidate* points, int count, const Vec3& normal, int keep) {
+    if (count <= keep) return count;
     bool taken[kMaxClipVertices] = {};
-    int kept[kMaxManifoldPoints];
+    int kept[kMaxClipVertices];
+    int keptCount = 0;
+    auto take = [&](int i) {
+        taken[i] = true;
+        kept[keptCount++] = i;
+    };
     auto distanceSquared = [&](int i, int j) {
         const Vec3 d = points[i].position - points[j].position;
         return glm::dot(d, d);
     };
+    auto farthestFromKept = [&](int i) {
+        Real nearest = std::numeric_limits<Real>::max();
+        for (int k = 0; k < keptCount; ++k) nearest = std::min(nearest, distanceSquared(i, kept[k]));
+        return nearest;
+    };
     // Depth can be slightly negative (touching within tolerance): shift it so every score is ≥ 0.
-    kept[0] = bestCandidate(count, taken, [&](int i) { return points[i].depth + kTouchTolerance; });
-    taken[kept[0]] = true;
-    kept[1] = bestCandidate(count, taken, [&](int i) { return distanceSquared(i, kept[0]); });
-    taken[kept[1]] = true;
-    const Vec3 p1 = points[kept[0]].position;
-    const Vec3 p2 = points[kept[1]].position;
-    auto area = [&](int i) { return signedArea(p1, p2, points[i].position, normal); };
-    kept[2] = bestCandidate(count, taken, [&](int i) { return std::abs(area(i)); });
-    taken[kept[2]] = true;
-    const Real side = area(kept[2]);
-    kept[3] = bestCandidate(count, taken, [&](int i) { return area(i) * side < 0 ? std::abs(area(i)) : Real(-1); });
-    if (kept[3] < 0) {
-        kept[3] = bestCandidate(count, taken, [&](int i) {
-            return std::min({distanceSquared(i, kept[0]), distanceSquared(i, kept[1]), distanceSquared(i, kept[2])});
-        });
+    take(bestCandidate(count, taken, [&](int i) { return points[i].depth + kTouchTolerance; }));
+    if (keptCount < keep) take(bestCandidate(count, taken, [&](int i) { return distanceSquared(i, kept[0]); }));
+    if (keptCount < keep) {
+        const Vec3 p1 = points[kept[0]].position;
+        const Vec3 p2 = points[kept[1]].position;
+        auto area = [&](int i) { return signedArea(p1, p2, points[i].position, normal); };
+        take(bestCandidate(count, taken, [&](int i) { return std::abs(area(i)); }));
+        if (keptCount < keep) {
+            const Real side = area(kept[2]);
+            const int opposite =
+                bestCandidate(count, taken, [&](int i) { return area(i) * side < 0 ? std::abs(area(i)) : Real(-1); });
+            take(opposite >= 0 ? opposite : bestCandidate(count, taken, farthestFromKept));
+        }
     }
-    std::sort(kept, kept + kMaxManifoldPoints);
-    Candidate chosen[kMaxManifoldPoints];
-    for (int i = 0; i < kMaxManifoldPoints; ++i) chosen[i] = points[kept[i]];
-    std::copy(chosen, chosen + kMaxManifoldPoints, points);
-    return kMaxManifoldPoints;
+    while (keptCount < keep) take(bestCandidate(count, taken, farthestFromKept));
+
+    std::sort(kept, kept + keptCount);
+    Candidate chosen[kMaxClipVertices];
+    for (int i = 0; i < keptCount; ++i) chosen[i] = points[kept[i]];
+    std::copy(chosen, chosen + keptCount, points);
+    return keptCount;
 }
 
 /// Section 3a. @p referenceNormal is the reference face's outward unit
@@ -273,7 +287,7 @@ bool faceContact(const OrientedBox& reference, int referenceAxis, const Vec3& re
                                              polygon[i].outEdge)};
     }
     if (foundCount == 0) return false;
-    if (foundCount > kMaxManifoldPoints) foundCount = reduceToFour(found, foundCount, referenceNormal);
+    foundCount = keepSpreadPoints(found, foundCount, referenceNormal, kMaxManifoldPoints);
 
     out.normal = manifoldNormal;
     out.pointCount = 0;
