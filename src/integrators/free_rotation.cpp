@@ -109,7 +109,7 @@ Quat rotateTorqueFree(const Quat& orientation, const Vec3& angularMomentum, cons
         q = q * glm::angleAxis(rate * sub.fraction * h, kBodyAxes[i]);
     }
     // Each product rounds; without this the quaternion creeps off the unit
-    // sphere (|q| ≠ 1 would scale every rotated vector by |q|²).
+    // sphere, and a q with |q| ≠ 1 stretches what it rotates (q·v·q* has length |q|²·|v|).
     return glm::normalize(q);
 }
 
