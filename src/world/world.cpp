@@ -124,6 +124,8 @@ void World::checkFinite(Stage stage) const {
         if (!stepwise::isFinite(body.acceleration)) fail(body.name, "acceleration");
         if (!stepwise::isFinite(body.orientation)) fail(body.name, "orientation");
         if (!stepwise::isFinite(body.angularVelocity)) fail(body.name, "angular velocity");
+        if (!stepwise::isFinite(body.angularMomentum)) fail(body.name, "angular momentum");
+        if (!stepwise::isFinite(body.torque)) fail(body.name, "torque");
     }
     for (const KinematicsObject& body : kinematics_) {
         if (!stepwise::isFinite(body.position)) fail(body.name, "position");
