@@ -1,0 +1,19 @@
+# Lecture 1, session A: two whole explicit Euler steps.
+# Line numbers are those of the commit named in the lecture; check them if the file has changed.
+#   interactive:  gdb -x lectures/gdb/01-explicit-euler.gdb --args build/debug/stepwise run config/lesson01_explicit_euler.scene
+#   all at once:  gdb -q -batch -x lectures/gdb/01-explicit-euler.gdb --args build/debug/stepwise run config/lesson01_explicit_euler.scene
+break stepwise::integrateExplicitEuler
+run
+p h
+p bodies._M_ptr[0].position
+p bodies._M_ptr[0].velocity
+p bodies._M_ptr[0].acceleration
+finish
+p dynamics_[0].position
+p dynamics_[0].velocity
+continue
+p bodies._M_ptr[0].position
+p bodies._M_ptr[0].velocity
+finish
+p dynamics_[0].position
+p dynamics_[0].velocity
