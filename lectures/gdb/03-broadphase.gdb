@@ -1,0 +1,10 @@
+# Lecture 3: why the head-on contact comes one step late (the broadphase has no touch tolerance).
+# Line numbers are those of the commit named in the lecture; check them if the file has changed.
+#   interactive:  gdb -x lectures/gdb/03-broadphase.gdb --args build/debug/stepwise run config/lesson03_collisions.scene
+#   all at once:  gdb -q -batch -x lectures/gdb/03-broadphase.gdb --args build/debug/stepwise run config/lesson03_collisions.scene
+break world.cpp:84 if stepCount_ == 119
+run
+p pairs_
+p dynamics_[1].position.x - dynamics_[0].position.x
+p boundingBoxes_[0].max.x
+p boundingBoxes_[1].min.x

@@ -1,0 +1,38 @@
+# Lecture 3: the first impact of the bouncing ball, from prepare() to correctPositions().
+# Line numbers are those of the commit named in the lecture; check them if the file has changed.
+#   interactive:  gdb -x lectures/gdb/03-first-impact.gdb --args build/debug/stepwise run config/lesson03_bounce.scene
+#   all at once:  gdb -q -batch -x lectures/gdb/03-first-impact.gdb --args build/debug/stepwise run config/lesson03_bounce.scene
+break impulse_resolver.cpp:89
+run
+p contact
+p a.velocity
+p vn
+p an
+p depth
+p approachAtTouch
+p c.resting
+p e
+frame function stepwise::World::step
+p stepCount_
+p time_
+frame 0
+delete 1
+break impulse_resolver.cpp:100
+continue
+p vn
+p c.targetSeparation
+p c.normalMass
+p c.normalImpulse
+continue
+p vn
+p c.normalImpulse
+delete 2
+break stepwise::correctPositions
+continue
+p contacts._M_ptr[0].depth
+p bodies.dynamics._M_ptr[0].position
+p bodies.dynamics._M_ptr[0].velocity
+finish
+p dynamics_[0].position
+p dynamics_[0].velocity
+p impulses_[0]
