@@ -71,7 +71,7 @@ DynamicObject runOscillator(IntegratorKind integrator, const Oscillator& osc, Re
 /// Two traps this avoids. Position alone at a turning point sees a phase error δ
 /// only as 1 − cos δ ≈ δ²/2. And symplectic Euler's O(h) deviation from the
 /// true orbit is proportional to x·v (it follows the modified energy
-/// H + ½hω²·x·v), which vanishes at every quarter period: measured there it
+/// H − ½hω²·x·v, conserved to round-off), which vanishes at every quarter period: measured there it
 /// looks second order. At 9/8 of a period x·v ≠ 0 and every scheme shows its true order.
 Real oscillatorError(IntegratorKind integrator, long n) {
     const Oscillator osc{2 * kPi};  // period 1 s

@@ -5,7 +5,7 @@
 /// dynamic box meeting a sphere arrives as (box, sphere). The geometry is
 /// the same as sphere against box (sphere_box.cpp): only the convention
 /// "normal from A towards B" changes, so the normal is flipped. The contact
-/// point (midway through the overlap) and the depth do not depend on which
+/// point (the sphere's deepest point) and the depth do not depend on which
 /// body is called A.
 #include "collision/narrowphase.hpp"
 

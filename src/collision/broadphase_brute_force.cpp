@@ -24,14 +24,15 @@ Aabb boxAabb(const Vec3& centre, const Quat& orientation, const Vec3& halfExtent
 
 namespace {
 
-Aabb boundsOf(const DynamicObject& body) {
-    return body.shape == Shape::Sphere ? sphereAabb(body.position, body.radius)
-                                       : boxAabb(body.position, body.orientation, body.halfExtents());
-}
-
-Aabb boundsOf(const KinematicsObject& body) {
-    return body.shape == Shape::Sphere ? sphereAabb(body.position, body.radius)
-                                       : boxAabb(body.position, body.orientation, body.halfExtents());
+/// Bounds grown by kTouchTolerance: the narrowphase counts surfaces that
+/// close as touching, so the broadphase must not rule such pairs out.
+template <class Body>
+Aabb boundsOf(const Body& body) {
+    Aabb box = body.shape == Shape::Sphere ? sphereAabb(body.position, body.radius)
+                                           : boxAabb(body.position, body.orientation, body.halfExtents());
+    box.min -= Vec3(kTouchTolerance);
+    box.max += Vec3(kTouchTolerance);
+    return box;
 }
 
 /// A box is clear of a plane when its corner deepest along −n is still in

@@ -9,11 +9,6 @@
 
 namespace stepwise {
 
-/// Two surfaces closer than this count as touching, m. It absorbs round-off
-/// (a sphere pushed out to exactly touching may land a few ulps away), so a
-/// resting body keeps its contact from step to step instead of flickering.
-inline constexpr Real kTouchTolerance = Real(1e-6);
-
 /// @brief Kinds of geometry the pair tests understand.
 enum class GeometryType : std::uint8_t { Sphere, Box, Plane, Count };
 

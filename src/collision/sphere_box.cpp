@@ -32,8 +32,8 @@ bool collideSphereBox(const Geometry& sphere, const Geometry& box, ContactManifo
         out.normal = rotation * (-offset / distance);
         const Real depth = sphere.radius - distance;
         out.pointCount = 0;
-    // Midway through the overlap: from the box surface, half the depth on into the box.
-    out.add(box.centre + rotation * closest + out.normal * (Real(0.5) * depth), depth, 0);
+    // The sphere's own deepest point (the lever arm of friction is then exactly r).
+    out.add(sphere.centre + out.normal * sphere.radius, depth, 0);
         return true;
     }
 
@@ -52,7 +52,7 @@ bool collideSphereBox(const Geometry& sphere, const Geometry& box, ContactManifo
     out.normal = rotation * (-faceNormal);  // from the sphere into the box
     const Real depth = sphere.radius + leastInside;
     out.pointCount = 0;
-    out.add(sphere.centre, depth, 0);
+    out.add(sphere.centre + out.normal * sphere.radius, depth, 0);
     return true;
 }
 

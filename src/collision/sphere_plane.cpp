@@ -18,9 +18,10 @@ bool collideSpherePlane(const Geometry& sphere, const Geometry& plane, ContactMa
 
     out.normal = -plane.normal;
     const Real depth = sphere.radius - signedDistance;
-    // Midway between the sphere's deepest point and the plane surface.
+    // The sphere's own deepest point, not the middle of the overlap: friction
+    // acting there has the lever arm r exactly, however deep the step sank it.
     out.pointCount = 0;
-    out.add(sphere.centre - plane.normal * (signedDistance + Real(0.5) * depth), depth, 0);
+    out.add(sphere.centre - plane.normal * sphere.radius, depth, 0);
     return true;
 }
 

@@ -140,19 +140,21 @@ void resolveImpulses(const BodySet& bodies, std::span<const Contact> contacts, R
         if (c.b) updateAngularVelocity(*c.b);
     }
 
-    // What the resting contacts did to each body, for stage 7: the total
-    // impulse P of each contact, as Δv = ±P/m and Δω = ±I⁻¹(r × P).
+    // What the resting contacts did to each body, for stage 7: the velocity
+    // change of their friction impulse P_t (along the surface), Δv = ±P_t/m,
+    // and the spin change of their whole impulse P, Δω = ±I⁻¹(r × P).
     const std::size_t bodyCount = bodies.dynamics.size();
     workspace.supportVelocityChange.assign(bodyCount, Vec3(0));
     workspace.supportSpinChange.assign(bodyCount, Vec3(0));
     for (std::size_t i = 0; i < constraints.size(); ++i) {
         const ContactConstraint& c = constraints[i];
         if (!c.resting) continue;
-        const Vec3 P = c.normalImpulse * c.normal + c.tangentImpulse[0] * c.tangent[0] + c.tangentImpulse[1] * c.tangent[1];
-        workspace.supportVelocityChange[contacts[i].a] -= P * c.a->inverseMass;
+        const Vec3 Pt = c.tangentImpulse[0] * c.tangent[0] + c.tangentImpulse[1] * c.tangent[1];
+        const Vec3 P = c.normalImpulse * c.normal + Pt;
+        workspace.supportVelocityChange[contacts[i].a] -= Pt * c.a->inverseMass;
         workspace.supportSpinChange[contacts[i].a] -= c.inverseInertiaA * glm::cross(c.rA, P);
         if (c.b) {
-            workspace.supportVelocityChange[contacts[i].b.index] += P * c.inverseMassB;
+            workspace.supportVelocityChange[contacts[i].b.index] += Pt * c.inverseMassB;
             workspace.supportSpinChange[contacts[i].b.index] += c.inverseInertiaB * glm::cross(c.rB, P);
         }
     }

@@ -62,7 +62,7 @@ struct ContactConstraint {
 /// @brief Scratch arrays of stages 6 and 7, owned by the World and reused every step.
 struct ContactWorkspace {
     std::vector<ContactConstraint> constraints;  ///< One per contact, rebuilt each step.
-    std::vector<Vec3> supportVelocityChange;     ///< Per dynamic body: Δv from its resting contacts, m/s.
+    std::vector<Vec3> supportVelocityChange;     ///< Per dynamic body: Δv from its resting contacts' friction, m/s.
     std::vector<Vec3> supportSpinChange;         ///< Per dynamic body: Δω from its resting contacts, rad/s.
     std::vector<Vec3> startPositions;            ///< Per dynamic body: position before stage 7, m.
 };
@@ -125,13 +125,17 @@ void resolveImpulses(const BodySet& bodies, std::span<const Contact> contacts, R
 /// @brief Stage 7: moves supported bodies as their integrator would have, then pushes overlapping bodies apart.
 ///
 /// **Support.** A resting contact stands for a continuous support force. Over
-/// the step it changed the body's velocity by Δv_s (and spin by Δω_s), which
-/// the integrator, had it been a force, would have turned into a displacement
-/// s·h·Δv_s (s from positionShareOfVelocityChange: 0, 1 or ½). Applying it
-/// here undoes exactly the sag *and* the slide that gravity's drift put into
-/// this step's integration: a box on a slope with enough friction does not
-/// creep, and a ball at rest does not sink. Impacts are left out: a bounce is
-/// instantaneous, and its position is handled by the overlap below.
+/// the step it changed the body's velocity and spin, which the integrator,
+/// had it been a force, would have turned into a displacement s·h·Δv and a
+/// turn s·h·Δω (s from positionShareOfVelocityChange: 0, 1 or ½). Along the
+/// normal the overlap already measures that displacement exactly, and is
+/// removed below; so here the body moves by s·h·Δv_t, the velocity change of
+/// the *friction* impulses, and turns by s·h·Δω of the whole impulse. That
+/// undoes the slide that gravity's drift put into this step's integration:
+/// a box on a slope with enough friction does not creep. (Moving by the
+/// normal Δv too would over-lift a ball that ends a bounce in a resting
+/// contact, since part of its Δv is the last of an impact.) Impacts are left
+/// out: a bounce is instantaneous, and its position is the overlap's business.
 ///
 /// **Overlap.** A contact's remaining overlap is its depth minus how far the
 /// bodies have already separated along n in this stage:

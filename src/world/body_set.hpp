@@ -12,7 +12,7 @@ namespace stepwise {
 ///
 /// Stages receive this instead of the World so that each stage declares,
 /// by its signature, that it only works on bodies: it cannot reach the
-/// settings, the clock or the renderer.
+/// settings or the clock, and nothing outside the physics.
 struct BodySet {
     std::span<DynamicObject> dynamics;             ///< Simulated bodies (stages may change them).
     std::span<const KinematicsObject> kinematics;  ///< Prescribed-motion bodies (read-only here).
