@@ -80,21 +80,36 @@ private:
     Clock::time_point last_{};
 };
 
+std::string quat(const Quat& q) {
+    char text[112];
+    std::snprintf(text, sizeof text, "(%.4f, %.4f, %.4f, %.4f)", double(q.w), double(q.x), double(q.y), double(q.z));
+    return text;
+}
+
+/// Final position and velocity of each object, then its orientation and angular velocity.
 void printFinalState(const World& world) {
     std::printf("\nFinal state at t = %.6g s\n", double(world.time()));
-    std::printf("  %-20s %-7s %-32s %s\n", "name", "shape", "position (m)", "velocity (m/s)");
-    std::size_t listed = 0;
     const std::size_t total = world.dynamics().size() + world.kinematics().size();
-    for (const DynamicObject& b : world.dynamics()) {
-        if (listed++ == kMaxListedObjects) break;
-        std::printf("  %-20s %-7s %-32s %s\n", b.name.c_str(), toString(b.shape), vec(b.position).c_str(),
-                    vec(b.velocity).c_str());
-    }
-    for (const KinematicsObject& b : world.kinematics()) {
-        if (listed++ >= kMaxListedObjects) break;
-        std::printf("  %-20s %-7s %-32s %s  (kinematic)\n", b.name.c_str(), toString(b.shape),
-                    vec(b.position).c_str(), vec(b.velocity).c_str());
-    }
+    auto forEachListed = [&](auto&& row) {
+        std::size_t listed = 0;
+        for (const DynamicObject& b : world.dynamics()) {
+            if (listed++ >= kMaxListedObjects) return;
+            row(b, b.shape, b.velocity, b.angularVelocity, "");
+        }
+        for (const KinematicsObject& b : world.kinematics()) {
+            if (listed++ >= kMaxListedObjects) return;
+            row(b, b.shape, b.velocity, b.angularVelocity, "  (kinematic)");
+        }
+    };
+    std::printf("  %-20s %-7s %-32s %s\n", "name", "shape", "position (m)", "velocity (m/s)");
+    forEachListed([](const GameObject& b, Shape shape, const Vec3& v, const Vec3&, const char* note) {
+        std::printf("  %-20s %-7s %-32s %s%s\n", b.name.c_str(), toString(shape), vec(b.position).c_str(),
+                    vec(v).c_str(), note);
+    });
+    std::printf("  %-20s %-40s %s\n", "name", "orientation (w, x, y, z)", "angular velocity (rad/s)");
+    forEachListed([](const GameObject& b, Shape, const Vec3&, const Vec3& w, const char* note) {
+        std::printf("  %-20s %-40s %s%s\n", b.name.c_str(), quat(b.orientation).c_str(), vec(w).c_str(), note);
+    });
     if (total > kMaxListedObjects) std::printf("  ... and %zu more\n", total - kMaxListedObjects);
 }
 
