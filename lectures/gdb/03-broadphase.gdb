@@ -1,4 +1,4 @@
-# Lecture 3: why the head-on contact comes one step late (the broadphase has no touch tolerance).
+# Lecture 3: the head-on pair touches to round-off at t = 1 s; the broadphase's grown boxes still see it.
 # Line numbers are those of the commit named in the lecture; check them if the file has changed.
 #   interactive:  gdb -x lectures/gdb/03-broadphase.gdb --args build/debug/stepwise run config/lesson03_collisions.scene
 #   all at once:  gdb -q -batch -x lectures/gdb/03-broadphase.gdb --args build/debug/stepwise run config/lesson03_collisions.scene

@@ -1,4 +1,4 @@
-# Lecture 3: the second impact, then the first contact the resting rule stops.
+# Lecture 3: the second impact, then the first contact the resting rule stops, and where it leaves the ball.
 # Line numbers are those of the commit named in the lecture; check them if the file has changed.
 #   interactive:  gdb -x lectures/gdb/03-resting.gdb --args build/debug/stepwise run config/lesson03_bounce.scene
 #   all at once:  gdb -q -batch -x lectures/gdb/03-resting.gdb --args build/debug/stepwise run config/lesson03_bounce.scene
@@ -22,10 +22,11 @@ frame function stepwise::World::step
 p stepCount_
 p time_
 frame 0
+tbreak world.cpp:96
 continue
-p vn
-p depth
-p approachAtTouch
+p contactWorkspace_.supportVelocityChange
+p dynamics_[0].position
+p dynamics_[0].velocity
 continue
 p vn
 p depth
