@@ -114,8 +114,11 @@ TEST_CASE("A tilted box on a plane touches only at the corners below it", "[cont
         checkDepths(m, d);
         CHECK(m.points[0].featureId == 0);
     }
-    SECTION("1 mm above: none") {
-        CHECK_FALSE(collideBoxPlane(box(Vec3(0, 0.501, 0), Vec3(0.5)), floorPlane(), m));
+    SECTION("1 mm above: 4 speculative points with depth -1 mm; beyond kSpeculativeDistance: none") {
+        REQUIRE(collideBoxPlane(box(Vec3(0, 0.501, 0), Vec3(0.5)), floorPlane(), m));
+        REQUIRE(m.pointCount == 4);
+        checkDepths(m, -0.001);
+        CHECK_FALSE(collideBoxPlane(box(Vec3(0, 0.5 + kSpeculativeDistance + 1e-4, 0), Vec3(0.5)), floorPlane(), m));
     }
 }
 

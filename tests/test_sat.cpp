@@ -115,7 +115,7 @@ TEST_CASE("Boxes apart only along an edge-edge axis do not collide", "[sat]") {
     CHECK_FALSE(collideBoxBox(b, a, m));
 }
 
-TEST_CASE("Boxes touching at distance 0 collide with depth 0; 2 um apart they do not", "[sat]") {
+TEST_CASE("Boxes touching at distance 0 collide with depth 0; a gap gives speculative points up to 1 cm", "[sat]") {
     // A unit cube on a 4 x 1 x 4 slab whose top is y = 0.5: A's bottom at 1.0 − 0.5 = 0.5.
     const Geometry slab = box(Vec3(0), Vec3(2, 0.5, 2));
     ContactManifold m;
@@ -124,8 +124,12 @@ TEST_CASE("Boxes touching at distance 0 collide with depth 0; 2 um apart they do
     REQUIRE(m.pointCount == 4);
     for (int i = 0; i < m.pointCount; ++i) CHECK_THAT(m.points[i].depth, WithinAbs(0, kExact));
 
-    // 2 µm is beyond the 1 µm touch tolerance.
-    CHECK_FALSE(collideBoxBox(box(Vec3(0.2, 1.0 + 2e-6, -0.1), Vec3(0.5)), slab, m));
+    // A 2 mm gap: the same four points, speculative, with depth −2 mm (contact.hpp says why).
+    REQUIRE(collideBoxBox(box(Vec3(0.2, 1.0 + 2e-3, -0.1), Vec3(0.5)), slab, m));
+    REQUIRE(m.pointCount == 4);
+    for (int i = 0; i < m.pointCount; ++i) CHECK_THAT(m.points[i].depth, WithinAbs(-2e-3, kExact));
+    // Beyond kSpeculativeDistance the face axis separates them: no contact.
+    CHECK_FALSE(collideBoxBox(box(Vec3(0.2, 1.0 + kSpeculativeDistance + 1e-4, -0.1), Vec3(0.5)), slab, m));
 }
 
 TEST_CASE("Face-face: a turned cube resting on a slab", "[sat]") {

@@ -15,7 +15,8 @@
 /// them overlaps, the boxes intersect; and the axis with the *largest*
 /// separation (least overlap) is the direction to push them apart, with
 /// the overlap as the depth. Here an axis separates when
-/// s > kTouchTolerance, so boxes that touch within 1 µm still report a contact.
+/// s > kSpeculativeDistance, so boxes up to 1 cm apart still report
+/// speculative contact points (contact.hpp says why).
 ///
 /// The normal reported is ±L, signed so that it points from A towards B
 /// (the sign of t·L).
@@ -47,8 +48,8 @@
 /// anti-parallel to it (largest |u_j·n|). Its four corners, clipped by the
 /// four side planes of the reference face (clip_polygon.cpp), are the part
 /// of the incident face lying over the reference face. Of these, the points
-/// behind the reference face plane (signed distance d ≤ kTouchTolerance)
-/// are contacts: depth −d, position midway between the point and the face,
+/// behind the reference face plane or less than kSpeculativeDistance in front
+/// of it are contacts: depth −d (negative for a speculative gap), position midway between the point and the face,
 /// p − n_ref·d/2.
 ///
 /// Clipping a quad by a rectangle can leave up to 8 points; the manifold
@@ -132,7 +133,7 @@ bool testAxis(const OrientedBox& a, const OrientedBox& b, const Vec3& between, c
               int axisOfB, AxisQuery& best) {
     const Real distance = glm::dot(between, axis);
     const Real separation = std::abs(distance) - (projectedRadius(a, axis) + projectedRadius(b, axis));
-    if (separation > kTouchTolerance) return false;
+    if (separation > kSpeculativeDistance) return false;
     if (separation > best.separation) {
         best.separation = separation;
         best.axisOfA = axisOfA;
@@ -183,9 +184,10 @@ int bestCandidate(int count, const bool* taken, Score score) {
 int keepSpreadPoints(Candidate* points, int count, const Vec3& normal, int keep) {
     if (count <= keep) return count;
     bool taken[kMaxClipVertices] = {};
-    int kept[kMaxClipVertices];
+    int kept[kMaxClipVertices] = {};
     int keptCount = 0;
     auto take = [&](int i) {
+        if (i < 0) return;  // no candidate scored: keep fewer points rather than index −1
         taken[i] = true;
         kept[keptCount++] = i;
     };
@@ -198,8 +200,9 @@ int keepSpreadPoints(Candidate* points, int count, const Vec3& normal, int keep)
         for (int k = 0; k < keptCount; ++k) nearest = std::min(nearest, distanceSquared(i, kept[k]));
         return nearest;
     };
-    // Depth can be slightly negative (touching within tolerance): shift it so every score is ≥ 0.
-    take(bestCandidate(count, taken, [&](int i) { return points[i].depth + kTouchTolerance; }));
+    // Depth is negative for speculative points (down to −kSpeculativeDistance):
+    // shift it so every score is ≥ 0 and the deepest is always found.
+    take(bestCandidate(count, taken, [&](int i) { return points[i].depth + kSpeculativeDistance; }));
     if (keptCount < keep) take(bestCandidate(count, taken, [&](int i) { return distanceSquared(i, kept[0]); }));
     if (keptCount < keep) {
         const Vec3 p1 = points[kept[0]].position;
@@ -213,9 +216,16 @@ int keepSpreadPoints(Candidate* points, int count, const Vec3& normal, int keep)
             take(opposite >= 0 ? opposite : bestCandidate(count, taken, farthestFromKept));
         }
     }
-    while (keptCount < keep) take(bestCandidate(count, taken, farthestFromKept));
+    while (keptCount < keep) {
+        const int next = bestCandidate(count, taken, farthestFromKept);
+        if (next < 0) break;
+        take(next);
+    }
 
-    std::sort(kept, kept + keptCount);
+    // Back into their original order (a handful of indices: insertion sort).
+    for (int i = 1; i < keptCount; ++i) {
+        for (int j = i; j > 0 && kept[j - 1] > kept[j]; --j) std::swap(kept[j - 1], kept[j]);
+    }
     Candidate chosen[kMaxClipVertices];
     for (int i = 0; i < keptCount; ++i) chosen[i] = points[kept[i]];
     std::copy(chosen, chosen + keptCount, points);
@@ -281,7 +291,7 @@ bool faceContact(const OrientedBox& reference, int referenceAxis, const Vec3& re
     int foundCount = 0;
     for (int i = 0; i < count; ++i) {
         const Real distance = glm::dot(polygon[i].position - referenceCentre, referenceNormal);
-        if (distance > kTouchTolerance) continue;
+        if (distance > kSpeculativeDistance) continue;
         found[foundCount++] = {polygon[i].position - referenceNormal * (Real(0.5) * distance), -distance,
                                faceFeatureId(kind, referenceFace, incidentFace, polygon[i].inEdge,
                                              polygon[i].outEdge)};

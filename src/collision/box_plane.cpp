@@ -8,7 +8,8 @@
 /// box_features.hpp: bit i of k set ⇒ σ = +1) has signed distance
 /// \f[ s_k = (p_k - q)\cdot n \f]
 /// from the plane through q with unit normal n. Every corner with
-/// s_k < kTouchTolerance is a contact point:
+/// s_k < kSpeculativeDistance is a contact point (up to 1 cm above the plane:
+/// a speculative point, see contact.hpp):
 ///
 /// * depth = −s_k,
 /// * position midway between the corner and its projection on the plane,
@@ -46,7 +47,7 @@ bool collideBoxPlane(const Geometry& box, const Geometry& plane, ContactManifold
     int count = 0;
     for (int k = 0; k < 8; ++k) {
         const Real distance = glm::dot(cornerOf(oriented, k) - plane.centre, plane.normal);
-        if (distance < kTouchTolerance) below[count++] = {k, distance};
+        if (distance < kSpeculativeDistance) below[count++] = {k, distance};
     }
     if (count == 0) return false;
 

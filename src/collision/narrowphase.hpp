@@ -29,7 +29,7 @@ inline constexpr int kMaxManifoldPoints = 4;
 /// @brief One point of a contact manifold.
 struct ContactPoint {
     Vec3 position{0, 0, 0};    ///< World point midway through the overlap, m.
-    Real depth = 0;            ///< Overlap along the manifold normal, m (≥ −kTouchTolerance).
+    Real depth = 0;            ///< Overlap along the manifold normal, m (negative: a gap, at most kSpeculativeDistance).
     std::uint32_t featureId = 0; ///< Which features of A and B meet here (stable from step to step, for warm starting).
 };
 

@@ -32,8 +32,8 @@ bool collideSphereBox(const Geometry& sphere, const Geometry& box, ContactManifo
         out.normal = rotation * (-offset / distance);
         const Real depth = sphere.radius - distance;
         out.pointCount = 0;
-    // The sphere's own deepest point (the lever arm of friction is then exactly r).
-    out.add(sphere.centre + out.normal * sphere.radius, depth, 0);
+        // The sphere's own deepest point (the lever arm of friction is then exactly r).
+        out.add(sphere.centre + out.normal * sphere.radius, depth, 0);
         return true;
     }
 

@@ -87,12 +87,21 @@ ContactConstraint prepare(const BodySet& bodies, const Contact& contact, Real h,
     c.resting = approachAtTouch <= kRestingContactSteps * std::abs(an) * h;
     const Real e = c.resting ? Real(0) : combineElasticity(a.elasticity, other.elasticity);
     c.targetSeparation = e * approachAtTouch;
+    if (contact.depth < 0) {
+        // A speculative point, still a gap g apart: a slow approach may close
+        // it within the step (v_n ≥ −g/h) but not go further; a fast one is
+        // left alone until the surfaces meet, so its bounce is computed then.
+        c.targetSeparation = contact.depth / h;
+        c.speculative = true;
+        c.active = c.resting;
+    }
     report = {std::max(-vn, Real(0)), approachAtTouch, e, 0, 0};
     return c;
 }
 
 /// One pass at one contact: the normal impulse, then friction within the new bound.
 void solve(ContactConstraint& c) {
+    if (!c.active) return;
     // Normal: drive v_n to the target separation speed, keep the total j ≥ 0.
     const Real vn = glm::dot(relativeVelocity(c), c.normal);
     const Real previous = c.normalImpulse;
@@ -120,19 +129,55 @@ void solve(ContactConstraint& c) {
     applyImpulse(c, change);
 }
 
+ContactKey keyOf(const Contact& contact) {
+    constexpr unsigned kKindShift = 30;  // two bits of kind above a 30-bit index
+    return {contact.a, (static_cast<std::uint32_t>(contact.b.kind) << kKindShift) | contact.b.index, contact.featureId};
+}
+
+/// Applies last step's impulses of the same contact point, if it had one.
+void warmStartFromCache(ContactConstraint& c, const ContactKey& key, const std::vector<CachedImpulse>& cache) {
+    const auto found = std::lower_bound(cache.begin(), cache.end(), key,
+                                        [](const CachedImpulse& entry, const ContactKey& k) { return entry.key < k; });
+    if (found == cache.end() || found->key != key || !c.active) return;
+    c.normalImpulse = found->normalImpulse;
+    // The tangent axes are rebuilt each step; carry the friction over as a world vector.
+    for (int k = 0; k < 2; ++k) c.tangentImpulse[k] = glm::dot(found->frictionImpulse, c.tangent[k]);
+    applyImpulse(c, c.normalImpulse * c.normal + c.tangentImpulse[0] * c.tangent[0] + c.tangentImpulse[1] * c.tangent[1]);
+}
+
+/// Keeps this step's impulses, sorted by key, for the next step's warm start.
+void rememberImpulses(std::span<const Contact> contacts, const std::vector<ContactConstraint>& constraints,
+                      ContactWorkspace& workspace) {
+    workspace.currentImpulses.clear();
+    for (std::size_t i = 0; i < contacts.size(); ++i) {
+        const ContactConstraint& c = constraints[i];
+        workspace.currentImpulses.push_back(
+            {keyOf(contacts[i]), c.normalImpulse, c.tangentImpulse[0] * c.tangent[0] + c.tangentImpulse[1] * c.tangent[1]});
+    }
+    std::sort(workspace.currentImpulses.begin(), workspace.currentImpulses.end(),
+              [](const CachedImpulse& x, const CachedImpulse& y) { return x.key < y.key; });
+    std::swap(workspace.previousImpulses, workspace.currentImpulses);
+}
+
 }  // namespace
 
 void resolveImpulses(const BodySet& bodies, std::span<const Contact> contacts, Real h, int iterations,
-                     ContactWorkspace& workspace, std::span<ImpulseReport> reports) {
+                     bool warmStart, ContactWorkspace& workspace, std::span<ImpulseReport> reports) {
     std::vector<ContactConstraint>& constraints = workspace.constraints;
     constraints.resize(contacts.size());
     ImpulseReport unused;
     for (std::size_t i = 0; i < contacts.size(); ++i) {
         constraints[i] = prepare(bodies, contacts[i], h, reports.empty() ? unused : reports[i]);
     }
+    // Warm start after every contact is prepared: the bounce targets were
+    // taken from the velocities before any impulse.
+    if (warmStart) {
+        for (std::size_t i = 0; i < contacts.size(); ++i) warmStartFromCache(constraints[i], keyOf(contacts[i]), workspace.previousImpulses);
+    }
     for (int pass = 0; pass < iterations; ++pass) {
         for (ContactConstraint& c : constraints) solve(c);
     }
+    rememberImpulses(contacts, constraints, workspace);
     // Angular momentum was updated alongside ω; refresh ω from L once so the
     // two stay exactly consistent (ω = I⁻¹L) for the next stage.
     for (ContactConstraint& c : constraints) {
@@ -141,21 +186,16 @@ void resolveImpulses(const BodySet& bodies, std::span<const Contact> contacts, R
     }
 
     // What the resting contacts did to each body, for stage 7: the velocity
-    // change of their friction impulse P_t (along the surface), Δv = ±P_t/m,
-    // and the spin change of their whole impulse P, Δω = ±I⁻¹(r × P).
+    // change Δv = ±P/m of their impulses P.
     const std::size_t bodyCount = bodies.dynamics.size();
     workspace.supportVelocityChange.assign(bodyCount, Vec3(0));
-    workspace.supportSpinChange.assign(bodyCount, Vec3(0));
     for (std::size_t i = 0; i < constraints.size(); ++i) {
         const ContactConstraint& c = constraints[i];
-        if (!c.resting) continue;
-        const Vec3 Pt = c.tangentImpulse[0] * c.tangent[0] + c.tangentImpulse[1] * c.tangent[1];
-        const Vec3 P = c.normalImpulse * c.normal + Pt;
-        workspace.supportVelocityChange[contacts[i].a] -= Pt * c.a->inverseMass;
-        workspace.supportSpinChange[contacts[i].a] -= c.inverseInertiaA * glm::cross(c.rA, P);
+        if (!c.resting || c.speculative) continue;  // only touching supports held the body during the step
+        const Vec3 P = c.normalImpulse * c.normal + c.tangentImpulse[0] * c.tangent[0] + c.tangentImpulse[1] * c.tangent[1];
+        workspace.supportVelocityChange[contacts[i].a] -= P * c.a->inverseMass;
         if (c.b) {
-            workspace.supportVelocityChange[contacts[i].b.index] += Pt * c.inverseMassB;
-            workspace.supportSpinChange[contacts[i].b.index] += c.inverseInertiaB * glm::cross(c.rB, P);
+            workspace.supportVelocityChange[contacts[i].b.index] += P * c.inverseMassB;
         }
     }
     if (!reports.empty()) {
@@ -167,38 +207,85 @@ void resolveImpulses(const BodySet& bodies, std::span<const Contact> contacts, R
     }
 }
 
-void correctPositions(const BodySet& bodies, std::span<const Contact> contacts, Real supportStep,
-                      ContactWorkspace& workspace) {
-    std::vector<Vec3>& startPositions = workspace.startPositions;
-    startPositions.resize(bodies.dynamics.size());
-    for (std::size_t i = 0; i < bodies.dynamics.size(); ++i) startPositions[i] = bodies.dynamics[i].position;
+namespace {
 
-    // Support: the displacement the integrator would have given the support force.
-    if (workspace.supportVelocityChange.size() == bodies.dynamics.size()) {
-        for (std::size_t i = 0; i < bodies.dynamics.size(); ++i) {
-            DynamicObject& body = bodies.dynamics[i];
-            body.position += supportStep * workspace.supportVelocityChange[i];
-            const Vec3& spin = workspace.supportSpinChange[i];
-            if (spin != Vec3(0)) {
-                body.orientation = rotateByAngularVelocity(body.orientation, spin, supportStep);
-                updateAngularVelocity(body);  // I_world turned with the body: ω = I_world⁻¹·L
+/// The part of a resting body's velocity change that a support *force* can
+/// account for: against the body's acceleration a, at most what a added in
+/// this step, |a|·h. Anything beyond is the last of an impact (a ball that
+/// ends its bouncing arrives a little faster than gravity's one-step kick),
+/// whose position the overlap removal handles; moving by it would lift the
+/// body clear of its support.
+Vec3 supportedVelocityChange(const Vec3& dv, const Vec3& acceleration, Real h) {
+    const Real a = glm::length(acceleration);
+    if (a == Real(0)) return dv - dv;  // weightless: there is no sag to undo, only impacts
+    const Vec3 down = acceleration / a;
+    const Real against = -glm::dot(dv, down);  // how much dv opposes the acceleration, m/s
+    const Real excess = against - a * h;
+    return excess > 0 ? dv + excess * down : dv;
+}
+
+}  // namespace
+
+void correctPositions(const BodySet& bodies, std::span<const Contact> contacts, Real h, Real supportStep,
+                      ContactWorkspace& workspace) {
+    // Every body's correction is gathered as a displacement Δx and a small
+    // rotation Δθ (a rotation vector, rad), applied once at the end. Stage 6
+    // left, per contact, the lever arms, inverse inertias and normal mass of
+    // this very configuration: the passes below reuse them.
+    const std::size_t bodyCount = bodies.dynamics.size();
+    std::vector<Vec3>& shift = workspace.shift;
+    std::vector<Vec3>& turn = workspace.turn;
+    shift.assign(bodyCount, Vec3(0));
+    turn.assign(bodyCount, Vec3(0));
+
+    // Support: the displacement and turn the integrator would have given the support force.
+    if (workspace.supportVelocityChange.size() == bodyCount) {
+        for (std::size_t i = 0; i < bodyCount; ++i) {
+            shift[i] = supportStep * supportedVelocityChange(workspace.supportVelocityChange[i],
+                                                             bodies.dynamics[i].acceleration, h);
+        }
+    }
+
+    // Overlap: whatever the support did not already remove, by non-linear
+    // Gauss–Seidel on positions. A material point at lever arm r moves by
+    // Δx + Δθ × r, so a contact's remaining overlap is
+    //   d_now = d − ((Δx_B + Δθ_B × r_B) − (Δx_A + Δθ_A × r_A))·n,
+    // and the "position impulse" λ = d_now·m_eff along n (the same effective
+    // mass as the velocity impulses) moves and turns both bodies just enough
+    // to close it. A tilted box is thereby turned flat, not lifted bodily by
+    // its deepest corner, which would raise its centre of mass and feed it
+    // energy. Several passes let the contacts of one body agree.
+    const std::vector<ContactConstraint>& constraints = workspace.constraints;
+    for (int pass = 0; pass < kPositionPasses; ++pass) {
+        for (std::size_t i = 0; i < contacts.size(); ++i) {
+            const Contact& contact = contacts[i];
+            const ContactConstraint& c = constraints[i];
+            if (!c.active) continue;
+            const bool dynamicB = contact.b.kind == BodyKind::Dynamic;
+            const std::uint32_t a = contact.a;
+            const std::uint32_t b = contact.b.index;
+            const Vec3 movedA = shift[a] + glm::cross(turn[a], c.rA);
+            const Vec3 movedB = dynamicB ? shift[b] + glm::cross(turn[b], c.rB) : Vec3(0);
+            const Real remaining = contact.depth - glm::dot(movedB - movedA, contact.normal);
+            if (remaining <= Real(0)) continue;
+
+            const Vec3 P = (remaining * c.normalMass) * contact.normal;
+            shift[a] -= P * bodies.dynamics[a].inverseMass;
+            turn[a] -= c.inverseInertiaA * glm::cross(c.rA, P);
+            if (dynamicB) {
+                shift[b] += P * c.inverseMassB;
+                turn[b] += c.inverseInertiaB * glm::cross(c.rB, P);
             }
         }
     }
 
-    // Overlap: whatever the support did not already remove.
-    for (const Contact& contact : contacts) {
-        DynamicObject& a = bodies.dynamics[contact.a];
-        DynamicObject* b = contact.b.kind == BodyKind::Dynamic ? &bodies.dynamics[contact.b.index] : nullptr;
-        const Vec3 movedA = a.position - startPositions[contact.a];
-        const Vec3 movedB = b ? b->position - startPositions[contact.b.index] : Vec3(0);
-        const Real remaining = contact.depth - glm::dot(movedB - movedA, contact.normal);
-        if (remaining <= Real(0)) continue;
-
-        const Real inverseMassB = b ? b->inverseMass : Real(0);
-        const Vec3 push = contact.normal * (remaining / (a.inverseMass + inverseMassB));
-        a.position -= push * a.inverseMass;
-        if (b) b->position += push * inverseMassB;
+    for (std::size_t i = 0; i < bodyCount; ++i) {
+        DynamicObject& body = bodies.dynamics[i];
+        body.position += shift[i];
+        if (turn[i] != Vec3(0)) {
+            body.orientation = rotateByAngularVelocity(body.orientation, turn[i], Real(1));
+            updateAngularVelocity(body);  // I_world turned with the body: ω = I_world⁻¹·L
+        }
     }
 }
 

@@ -21,6 +21,10 @@ inline Real combineElasticity(Real a, Real b) { return a * b; }
 /// @brief Friction of a pair of materials: the product μ = μ_A · μ_B (same reasoning).
 inline Real combineFriction(Real a, Real b) { return a * b; }
 
+/// Passes of the position correction over all contacts. Like the impulse
+/// passes, they let several contacts on one body (a box's corners) agree.
+inline constexpr int kPositionPasses = 4;
+
 /// Contacts approaching slower than the speed their own relative
 /// acceleration builds in this many steps do not bounce: that speed is
 /// gravity pulling a resting body into its support during one step, not an
@@ -54,17 +58,39 @@ struct ContactConstraint {
     Real tangentMass[2] = {0, 0};  ///< The same along each tangent, kg.
     Real targetSeparation = 0;     ///< e·v_c: the normal speed the passes aim for, m/s.
     bool resting = false;          ///< Support, not impact: v_c below kRestingContactSteps·|a_n|·h.
+    bool speculative = false;      ///< The surfaces are still a gap apart (Contact::depth < 0).
+    bool active = true;            ///< False for a speculative point approached fast: it waits for the impact.
     Real friction = 0;             ///< μ of the pair.
     Real normalImpulse = 0;        ///< Accumulated j, N·s.
     Real tangentImpulse[2] = {0, 0}; ///< Accumulated friction impulse along each tangent, N·s.
 };
 
+/// @brief Names one contact point from step to step: body A, body B and the
+/// features that touch (the pair test's feature id). Two steps' contacts with
+/// the same key are the same contact, so last step's impulse is a good guess.
+struct ContactKey {
+    std::uint32_t a = 0;        ///< Index of dynamic body A.
+    std::uint32_t b = 0;        ///< Body B: its kind in the top two bits, its index below.
+    std::uint32_t feature = 0;  ///< Feature id from the narrowphase.
+    /// @brief Keys order lexicographically (a, b, feature), so a sorted array can be searched.
+    auto operator<=>(const ContactKey&) const = default;
+};
+
+/// @brief A contact point's accumulated impulses at the end of a step, kept for warm starting the next.
+struct CachedImpulse {
+    ContactKey key;              ///< Which contact point.
+    Real normalImpulse = 0;      ///< Its total normal impulse j, N·s.
+    Vec3 frictionImpulse{0, 0, 0}; ///< Its total friction impulse as a world vector, N·s (tangent axes change between steps).
+};
+
 /// @brief Scratch arrays of stages 6 and 7, owned by the World and reused every step.
 struct ContactWorkspace {
+    std::vector<CachedImpulse> previousImpulses; ///< Last step's impulses, sorted by key (warm starting).
+    std::vector<CachedImpulse> currentImpulses;  ///< This step's, becoming the next step's previous.
     std::vector<ContactConstraint> constraints;  ///< One per contact, rebuilt each step.
-    std::vector<Vec3> supportVelocityChange;     ///< Per dynamic body: Δv from its resting contacts' friction, m/s.
-    std::vector<Vec3> supportSpinChange;         ///< Per dynamic body: Δω from its resting contacts, rad/s.
-    std::vector<Vec3> startPositions;            ///< Per dynamic body: position before stage 7, m.
+    std::vector<Vec3> supportVelocityChange;     ///< Per dynamic body: Δv from its resting contacts, m/s.
+    std::vector<Vec3> shift;                     ///< Per dynamic body: stage 7's displacement, m.
+    std::vector<Vec3> turn;                      ///< Per dynamic body: stage 7's rotation vector, rad.
 };
 
 /// @brief Applies normal impulses with restitution and Coulomb friction impulses at every contact point.
@@ -106,7 +132,17 @@ struct ContactWorkspace {
 /// each pass correcting what is left, and *accumulates* each contact's
 /// impulses: a pass may reduce an earlier impulse, but the total j stays
 /// ≥ 0 (contacts push, never pull) and the total friction stays inside
-/// μ·j. This is Catto's sequential impulses (GDC 2006) without warm starting.
+/// μ·j. This is Catto's sequential impulses (GDC 2006).
+///
+/// **Warm starting.** A stack's contacts carry nearly the same impulses
+/// every step, and a few passes from zero cannot rebuild them: the weight of
+/// twenty boxes has to travel down the stack one pass per box. With
+/// @p warmStart, each contact found again (same ContactKey as last step)
+/// starts from last step's impulses, applied before the first pass; the
+/// passes then only correct the change. This is what lets a tall stack stand.
+///
+/// After the passes, the velocity change each body received from its
+/// touching *resting* contacts is recorded in the workspace for stage 7.
 ///
 /// References: Catto, "Fast and Simple Physics using Sequential Impulses",
 /// GDC 2006; Millington, *Game Physics Engine Development*, ch. 14;
@@ -114,43 +150,52 @@ struct ContactWorkspace {
 /// @param bodies      the world's objects (dynamic velocities change)
 /// @param contacts    this step's contacts
 /// @param h           time step, s (sets the resting-contact speed)
-/// After the passes, the velocity change each body received from its
-/// *resting* contacts is recorded in the workspace for stage 7.
 /// @param iterations  passes over the contacts, ≥ 1
+/// @param warmStart   start each contact found again from last step's impulses
 /// @param workspace   scratch arrays, reused between steps
 /// @param reports     optional, one report per contact (size must match), may be empty
 void resolveImpulses(const BodySet& bodies, std::span<const Contact> contacts, Real h, int iterations,
-                     ContactWorkspace& workspace, std::span<ImpulseReport> reports = {});
+                     bool warmStart, ContactWorkspace& workspace, std::span<ImpulseReport> reports = {});
 
 /// @brief Stage 7: moves supported bodies as their integrator would have, then pushes overlapping bodies apart.
 ///
 /// **Support.** A resting contact stands for a continuous support force. Over
-/// the step it changed the body's velocity and spin, which the integrator,
-/// had it been a force, would have turned into a displacement s·h·Δv and a
-/// turn s·h·Δω (s from positionShareOfVelocityChange: 0, 1 or ½). Along the
-/// normal the overlap already measures that displacement exactly, and is
-/// removed below; so here the body moves by s·h·Δv_t, the velocity change of
-/// the *friction* impulses, and turns by s·h·Δω of the whole impulse. That
-/// undoes the slide that gravity's drift put into this step's integration:
-/// a box on a slope with enough friction does not creep. (Moving by the
-/// normal Δv too would over-lift a ball that ends a bounce in a resting
-/// contact, since part of its Δv is the last of an impact.) Impacts are left
-/// out: a bounce is instantaneous, and its position is the overlap's business.
+/// the step it changed the body's velocity by Δv, which the integrator, had
+/// it been a force, would have turned into a displacement s·h·Δv (s from
+/// positionShareOfVelocityChange: 0, 1 or ½). Applying it here undoes
+/// exactly the sag *and* the slide that gravity's
+/// drift put into this step's integration: a ball at rest does not sink, a box
+/// on a slope with enough friction does not creep, and every box of a stack
+/// is held up by its own support in the same step (position correction alone
+/// would have to pass the sag down the stack one box per step). One limit: a
+/// force can cancel at most what the acceleration a added in the step, so
+/// the part of Δv that opposes a is capped at |a|·h; beyond that it is the
+/// last of an impact (a ball ending its bouncing), which the overlap removal
+/// handles and which would otherwise lift the ball clear of the floor.
+/// Impacts are left out: a bounce is instantaneous. The support's *turn* is
+/// not applied: a resting body's support impulses balance, and turning it by
+/// the small imbalance the passes leave makes a stack rock.
 ///
-/// **Overlap.** A contact's remaining overlap is its depth minus how far the
-/// bodies have already separated along n in this stage:
-/// \f[ d_\text{now} = d - \big((x_B - x_B^0) - (x_A - x_A^0)\big)\cdot n. \f]
-/// It is removed in full, A moving by −n·d_now·m_A⁻¹/(m_A⁻¹+m_B⁻¹) and B by
-/// +n·d_now·m_B⁻¹/(m_A⁻¹+m_B⁻¹), which leaves their centre of mass in place.
-/// Tracking d_now matters for a box on a plane: its four corners report the
-/// same sag, and lifting the box once clears all four. Removing all of it
-/// (not a fraction, as Baumgarte stabilisation does) adds no velocity, so no
-/// energy beyond undoing the overlap.
+/// **Overlap.** What remains is removed by non-linear Gauss–Seidel on
+/// positions (Catto; Box2D's position solver), without Baumgarte's fraction.
+/// A point of a body at lever arm r moves by Δx + Δθ × r when the body is
+/// shifted by Δx and turned by the small rotation Δθ, so a contact's remaining
+/// overlap is
+/// \f[ d_\text{now} = d - \big((\Delta x_B + \Delta\theta_B\times r_B)
+///                           - (\Delta x_A + \Delta\theta_A\times r_A)\big)\cdot n, \f]
+/// and the position impulse λ = d_now·m_eff (the effective mass of the
+/// velocity impulses, with its r×n terms) shifts and turns both bodies just
+/// enough to close it: Δx = ±λn/m, Δθ = ±I⁻¹(r × λn). kPositionPasses passes let
+/// the contacts of one body agree. Turning matters: a tilted box is turned
+/// flat rather than lifted bodily by its deepest corner, which would raise its
+/// centre of mass and feed it energy. Only positions and orientations change;
+/// no velocity is added, so the correction puts no energy into the motion.
 /// @param bodies     the world's objects (dynamic positions and orientations change)
 /// @param contacts   this step's contacts
+/// @param h          time step, s (bounds what a support force can do in a step)
 /// @param supportStep s·h: the integrator's share of the step, s
 /// @param workspace  the arrays stage 6 filled (support changes) and scratch
-void correctPositions(const BodySet& bodies, std::span<const Contact> contacts, Real supportStep,
+void correctPositions(const BodySet& bodies, std::span<const Contact> contacts, Real h, Real supportStep,
                       ContactWorkspace& workspace);
 
 }  // namespace stepwise

@@ -86,12 +86,13 @@ void World::step() {
     // 6. Impulses: bounce and friction change velocities (src/dynamics/impulse_resolver.cpp)
     runStage(Stage::ResolveImpulses, [&] {
         impulses_.resize(contacts_.size());
-        resolveImpulses(bodies(), contacts_, h, settings_.impulseIterations, contactWorkspace_, impulses_);
+        resolveImpulses(bodies(), contacts_, h, settings_.impulseIterations, settings_.warmStarting, contactWorkspace_,
+                        impulses_);
     });
 
     // 7. Push overlapping bodies apart (src/dynamics/impulse_resolver.cpp, correctPositions)
     const Real supportStep = positionShareOfVelocityChange(settings_.integrator) * h;
-    runStage(Stage::CorrectPositions, [&] { correctPositions(bodies(), contacts_, supportStep, contactWorkspace_); });
+    runStage(Stage::CorrectPositions, [&] { correctPositions(bodies(), contacts_, h, supportStep, contactWorkspace_); });
 
     time_ += h;
     ++stepCount_;

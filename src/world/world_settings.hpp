@@ -32,6 +32,7 @@ struct WorldSettings {
     IntegratorKind integrator = IntegratorKind::SymplecticEuler; ///< Time integrator.
     Real duration = kDefaultDuration;                  ///< Default run length, s; > 0.
     int impulseIterations = kDefaultImpulseIterations; ///< Passes over the contacts per step, ≥ 1.
+    bool warmStarting = true;                          ///< Start each persisting contact from last step's impulses.
 };
 
 }  // namespace stepwise
