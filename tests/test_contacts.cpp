@@ -22,21 +22,10 @@ const Quat kIdentity(1, 0, 0, 0);
 constexpr Real kExact = 1e-12;  // a few dozen operations of round-off
 
 Geometry box(Vec3 centre, Vec3 halfExtents, Quat orientation = kIdentity) {
-    Geometry g;
-    g.type = GeometryType::Box;
-    g.centre = centre;
-    g.halfExtents = halfExtents;
-    g.orientation = orientation;
-    return g;
+    return test::boxGeometry(centre, halfExtents, orientation);
 }
 
-Geometry sphere(Vec3 centre, Real radius) {
-    Geometry g;
-    g.type = GeometryType::Sphere;
-    g.centre = centre;
-    g.radius = radius;
-    return g;
-}
+Geometry sphere(Vec3 centre, Real radius) { return test::sphereGeometry(centre, radius); }
 
 /// The floor y = 0, facing up.
 Geometry floorPlane() {

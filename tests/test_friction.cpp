@@ -105,16 +105,10 @@ namespace {
 /// A solid cube of edge @p size resting flat on incline(degrees), its centre above the origin.
 DynamicObject boxOnIncline(Real degrees, Real size, Real mu) {
     const Real theta = degrees * kPi / 180;
-    DynamicObject box;
-    box.name = "crate";
-    box.shape = Shape::Box;
-    box.scale = Vec3(size);
-    box.setMass(2);
-    box.elasticity = 0;
-    box.friction = mu;
+    DynamicObject box = test::dynamicBox("crate", Real(0.5) * size * Vec3(std::sin(theta), std::cos(theta), 0),
+                                         Vec3(size), 2, mu);
     // Turn the box's up axis (0,1,0) onto the incline's normal (sinθ, cosθ, 0): −θ about z.
     box.orientation = glm::angleAxis(-theta, Vec3(0, 0, 1));
-    box.position = Real(0.5) * size * Vec3(std::sin(theta), std::cos(theta), 0);
     return box;
 }
 
@@ -166,21 +160,8 @@ TEST_CASE("A box on a table tips once its centre of mass overhangs the edge, not
     const Real edge = 1, size = 0.5;
     for (Real overhang : {Real(-0.02), Real(0.02)}) {
         Scene scene = test::emptyScene(IntegratorKind::SymplecticEuler, Real(1) / 60);
-        KinematicsObject table;
-        table.name = "table";
-        table.shape = Shape::Box;
-        table.position = Vec3(0, -0.5, 0);
-        table.scale = Vec3(2 * edge, 1, 2);
-        scene.kinematics.push_back(table);
-        DynamicObject box;
-        box.name = "crate";
-        box.shape = Shape::Box;
-        box.scale = Vec3(size);
-        box.setMass(1);
-        box.elasticity = 0;
-        box.friction = 0.6;
-        box.position = Vec3(edge + overhang, size / 2, 0);
-        scene.dynamics.push_back(box);
+        scene.kinematics.push_back(test::kinematicBox("table", Vec3(0, -0.5, 0), Vec3(2 * edge, 1, 2)));
+        scene.dynamics.push_back(test::dynamicBox("crate", Vec3(edge + overhang, size / 2, 0), Vec3(size), 1, 0.6));
         World world(scene);
         Real tilt = 0;  // the largest tilt seen: once over the edge the box tumbles as it falls
         while (world.time() < 2) {
@@ -209,29 +190,14 @@ TEST_CASE("A box pushed slowly towards a table edge starts to tip as its centre 
     // allows up to 5 cm (the pusher, low on the box, keeps it from turning freely).
     const Real edge = 1, size = 0.5;
     Scene scene = test::emptyScene(IntegratorKind::SymplecticEuler, Real(1) / 120);
-    KinematicsObject table;
-    table.name = "table";
-    table.shape = Shape::Box;
-    table.position = Vec3(0, -0.5, 0);
-    table.scale = Vec3(2 * edge, 1, 2);
+    KinematicsObject table = test::kinematicBox("table", Vec3(0, -0.5, 0), Vec3(2 * edge, 1, 2));
     table.friction = 0.3;
     scene.kinematics.push_back(table);
-    KinematicsObject pusher = table;
-    pusher.name = "pusher";
-    pusher.scale = Vec3(0.1, 0.2, 0.6);
-    pusher.position = Vec3(0.25 - 0.05, 0.1, 0);  // touching the box's left face, low down
-    pusher.velocity = Vec3(0.1, 0, 0);
+    // Touching the box's left face (x = 0.25), low down.
+    KinematicsObject pusher = test::kinematicBox("pusher", Vec3(0.25 - 0.05, 0.1, 0), Vec3(0.1, 0.2, 0.6), Vec3(0.1, 0, 0));
     pusher.friction = 0;
     scene.kinematics.push_back(pusher);
-    DynamicObject box;
-    box.name = "crate";
-    box.shape = Shape::Box;
-    box.scale = Vec3(size);
-    box.setMass(1);
-    box.elasticity = 0;
-    box.friction = 1;
-    box.position = Vec3(0.5, size / 2, 0);
-    scene.dynamics.push_back(box);
+    scene.dynamics.push_back(test::dynamicBox("crate", Vec3(0.5, size / 2, 0), Vec3(size), 1, 1));
     World world(scene);
     Real tippedAt = -1, tiltBeforeEdge = 0;
     while (world.time() < 12 && tippedAt < 0) {

@@ -12,31 +12,9 @@ using Catch::Matchers::WithinAbs;
 
 namespace {
 
-KinematicsObject kinematicBox(const std::string& name, Vec3 position, Vec3 size, Vec3 velocity = Vec3(0)) {
-    KinematicsObject box;
-    box.name = name;
-    box.shape = Shape::Box;
-    box.position = position;
-    box.scale = size;
-    box.velocity = velocity;
-    return box;
-}
-
-Geometry boxGeometry(Vec3 centre, Vec3 halfExtents, Quat orientation = Quat(1, 0, 0, 0)) {
-    Geometry g;
-    g.type = GeometryType::Box;
-    g.centre = centre;
-    g.halfExtents = halfExtents;
-    g.orientation = orientation;
-    return g;
-}
-
-Geometry sphereGeometry(Vec3 centre, Real radius) {
-    Geometry g;
-    g.centre = centre;
-    g.radius = radius;
-    return g;
-}
+using test::boxGeometry;
+using test::kinematicBox;
+using test::sphereGeometry;
 
 }  // namespace
 

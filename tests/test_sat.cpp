@@ -10,6 +10,7 @@
 #include "collision/box_features.hpp"
 #include "collision/closest_points.hpp"
 #include "collision/narrowphase.hpp"
+#include "test_support.hpp"
 
 using namespace stepwise;
 using Catch::Matchers::WithinAbs;
@@ -24,12 +25,7 @@ const Quat kIdentity(1, 0, 0, 0);
 constexpr Real kExact = 1e-12;
 
 Geometry box(Vec3 centre, Vec3 halfExtents, Quat orientation = kIdentity) {
-    Geometry g;
-    g.type = GeometryType::Box;
-    g.centre = centre;
-    g.halfExtents = halfExtents;
-    g.orientation = orientation;
-    return g;
+    return test::boxGeometry(centre, halfExtents, orientation);
 }
 
 /// The interval a box's corners cover along @p axis, by projecting all 8

@@ -3,6 +3,7 @@
 
 #include <string>
 
+#include "collision/narrowphase.hpp"
 #include "world/scene.hpp"
 #include "world/world.hpp"
 
@@ -39,6 +40,49 @@ inline Scene emptyScene(IntegratorKind integrator = IntegratorKind::SymplecticEu
     scene.settings.timeStep = h;
     scene.settings.gravity = gravity;
     return scene;
+}
+
+/// The geometry of an oriented box, as the pair tests see it (half edge lengths).
+inline Geometry boxGeometry(Vec3 centre, Vec3 halfExtents, Quat orientation = Quat(1, 0, 0, 0)) {
+    Geometry g;
+    g.type = GeometryType::Box;
+    g.centre = centre;
+    g.halfExtents = halfExtents;
+    g.orientation = orientation;
+    return g;
+}
+
+/// The geometry of a sphere, as the pair tests see it.
+inline Geometry sphereGeometry(Vec3 centre, Real radius) {
+    Geometry g;
+    g.type = GeometryType::Sphere;
+    g.centre = centre;
+    g.radius = radius;
+    return g;
+}
+
+/// A kinematic box with full edge lengths @p size moving at @p velocity.
+inline KinematicsObject kinematicBox(const std::string& name, Vec3 position, Vec3 size, Vec3 velocity = Vec3(0)) {
+    KinematicsObject box;
+    box.name = name;
+    box.shape = Shape::Box;
+    box.position = position;
+    box.scale = size;
+    box.velocity = velocity;
+    return box;
+}
+
+/// A dynamic solid box with full edge lengths @p size, no bounce.
+inline DynamicObject dynamicBox(const std::string& name, Vec3 position, Vec3 size, Real mass, Real friction) {
+    DynamicObject box;
+    box.name = name;
+    box.shape = Shape::Box;
+    box.position = position;
+    box.scale = size;
+    box.setMass(mass);
+    box.elasticity = 0;
+    box.friction = friction;
+    return box;
 }
 
 /// Every integrator, for tests that must hold for all of them.
