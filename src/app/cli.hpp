@@ -37,6 +37,20 @@ RunOptions parseRunOptions(const std::vector<std::string>& args, const std::stri
 /// @brief `stepwise run`: simulate, print a summary, optionally write CSV. Returns the exit code.
 int runCommand(const RunOptions& options);
 
+/// @brief Options of `stepwise view` (the viewer in src/viewer/, built when STEPWISE_VIEWER is ON).
+struct ViewOptions {
+    std::string scenePath;                     ///< Scene file; the default scene when not given.
+    std::optional<std::string> screenshotPath; ///< --screenshot PATH: draw one frame into this PNG and exit.
+    double at = 0;                             ///< --at T: simulated time of the screenshot, s (≥ 0).
+    int width = 960;                           ///< --size WxH: window width, pixels.
+    int height = 600;                          ///< --size WxH: window height, pixels.
+    std::optional<std::string> dumpStatePath;  ///< --dump-state PATH: the state drawn, as `run --csv` writes it.
+    std::string keys;                          ///< --keys KEYS: keys pressed before the screenshot (e.g. "CV").
+};
+
+/// @brief Parses the arguments after `view`. @throws UsageError.
+ViewOptions parseViewOptions(const std::vector<std::string>& args, const std::string& defaultScene);
+
 /// @brief `stepwise check FILE`: validate and describe a scene. Returns the exit code.
 int checkCommand(const std::string& scenePath);
 

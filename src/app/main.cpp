@@ -6,6 +6,9 @@
 #include <vector>
 
 #include "app/cli.hpp"
+#ifdef STEPWISE_HAVE_VIEWER
+#include "viewer/viewer.hpp"
+#endif
 
 #ifndef STEPWISE_DEFAULT_SCENE
 /// Path of the default scene; CMake passes the absolute path in the source tree.
@@ -24,9 +27,25 @@ std::string defaultScenePath() {
     return "config/default.scene";
 }
 
+/// `stepwise view`: the viewer when it was built, otherwise how to build it.
+int viewCommand(const std::vector<std::string>& args) {
+    using namespace stepwise::cli;
+#ifdef STEPWISE_HAVE_VIEWER
+    return stepwise::viewer::runViewer(parseViewOptions(args, defaultScenePath()));
+#else
+    (void)args;
+    std::fprintf(stderr,
+                 "stepwise: the viewer was not built into this program (CMake option STEPWISE_VIEWER is OFF,\n"
+                 "  or freeglut/OpenGL were not found when it was configured). To build it, install the\n"
+                 "  packages (scripts/setup.sh does: freeglut3-dev) and configure again with\n"
+                 "    cmake --preset release -DSTEPWISE_VIEWER=ON && cmake --build --preset release\n");
+    return kExitUsageError;
+#endif
+}
+
 }  // namespace
 
-/// @brief Runs the command named by the first argument (`run`, `check`, `--help`).
+/// @brief Runs the command named by the first argument (`run`, `check`, `view`, `--help`).
 /// @return the exit code: 0 success, 1 simulation failure, 2 bad command line or scene.
 int main(int argc, char** argv) {
     using namespace stepwise::cli;
@@ -44,7 +63,8 @@ int main(int argc, char** argv) {
             if (!rest[0].empty() && rest[0][0] == '-') throw UsageError("unknown option '" + rest[0] + "' for 'check'");
             return checkCommand(rest[0]);
         }
-        throw UsageError("unknown command '" + command + "' (commands: run, check)");
+        if (command == "view") return viewCommand(rest);
+        throw UsageError("unknown command '" + command + "' (commands: run, check, view)");
     } catch (const UsageError& error) {
         std::fprintf(stderr, "stepwise: error: %s\nRun 'stepwise --help' for usage.\n", error.what());
         return kExitUsageError;

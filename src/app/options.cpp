@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
+#include <string_view>
 
 #include "app/cli.hpp"
 
@@ -21,6 +22,14 @@ const char* usageText() {
            "                    qw,qx,qy,qz,wx,wy,wz, one row per object per sample,\n"
            "                    starting with the initial state at time 0\n"
            "      --every K     write a CSV sample every K steps (default 1)\n"
+           "  stepwise view [FILE] [--size WxH]\n"
+           "      Open a window onto the scene (H in the window lists the controls).\n"
+           "  stepwise view [FILE] --screenshot PATH [--at T] [--size WxH] [--keys KEYS]\n"
+           "                [--dump-state PATH]\n"
+           "      Simulate to T seconds (default 0) as 'run --duration T' does, draw one\n"
+           "      frame into the PNG file PATH and exit; --keys presses window keys first\n"
+           "      (e.g. CV: contacts and velocities); --dump-state writes the state drawn\n"
+           "      in the CSV format of --csv. Without a screen, prefix 'xvfb-run -a'.\n"
            "  stepwise check FILE\n"
            "      Validate FILE and print what it contains.\n"
            "  stepwise --help\n"
@@ -50,7 +59,65 @@ std::uint64_t parsePositiveCount(const std::string& option, const std::string& t
     return value;
 }
 
+/// "WxH", each from 16 to 8192 pixels.
+void parseSize(const std::string& text, int& width, int& height) {
+    const std::size_t x = text.find('x');
+    int w = 0, h = 0;
+    const auto parse = [](std::string_view part, int& value) {
+        const auto [end, error] = std::from_chars(part.data(), part.data() + part.size(), value);
+        return !part.empty() && error == std::errc() && end == part.data() + part.size();
+    };
+    if (x == std::string::npos || !parse(std::string_view(text).substr(0, x), w) ||
+        !parse(std::string_view(text).substr(x + 1), h) || w < 16 || h < 16 || w > 8192 || h > 8192) {
+        throw UsageError("--size expects WIDTHxHEIGHT in pixels, each 16 to 8192, e.g. 800x500; found '" + text + "'");
+    }
+    width = w;
+    height = h;
+}
+
 }  // namespace
+
+ViewOptions parseViewOptions(const std::vector<std::string>& args, const std::string& defaultScene) {
+    ViewOptions options;
+    bool sceneGiven = false;
+    bool atGiven = false;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        const std::string& arg = args[i];
+        auto value = [&]() -> const std::string& {
+            if (i + 1 >= args.size()) throw UsageError(arg + " needs a value");
+            return args[++i];
+        };
+        if (arg == "--screenshot") {
+            options.screenshotPath = value();
+        } else if (arg == "--at") {
+            const std::string& text = value();
+            char* end = nullptr;
+            options.at = std::strtod(text.c_str(), &end);
+            if (text.empty() || *end != '\0' || !std::isfinite(options.at) || options.at < 0) {
+                throw UsageError("--at expects a number of seconds >= 0, found '" + text + "'");
+            }
+            atGiven = true;
+        } else if (arg == "--size") {
+            parseSize(value(), options.width, options.height);
+        } else if (arg == "--dump-state") {
+            options.dumpStatePath = value();
+        } else if (arg == "--keys") {
+            options.keys = value();
+        } else if (arg.size() > 1 && arg[0] == '-') {
+            throw UsageError("unknown option '" + arg + "' for 'view'");
+        } else if (sceneGiven) {
+            throw UsageError("'view' takes one scene file, got '" + options.scenePath + "' and '" + arg + "'");
+        } else {
+            options.scenePath = arg;
+            sceneGiven = true;
+        }
+    }
+    if (!options.screenshotPath && (atGiven || options.dumpStatePath || !options.keys.empty())) {
+        throw UsageError("--at, --dump-state and --keys go with --screenshot PATH");
+    }
+    if (!sceneGiven) options.scenePath = defaultScene;
+    return options;
+}
 
 RunOptions parseRunOptions(const std::vector<std::string>& args, const std::string& defaultScene) {
     RunOptions options;

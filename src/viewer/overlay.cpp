@@ -1,0 +1,192 @@
+/// @file overlay.cpp
+/// @brief The 2D text layer, drawn with GLUT's bitmap font in an orthographic projection.
+#include "viewer/overlay.hpp"
+
+#include <GL/freeglut.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+
+#include "world/measurements.hpp"
+
+namespace stepwise::viewer {
+
+namespace {
+
+/// GLUT's fixed-width 8×13 font: every character is 8 pixels wide.
+void* const kFont = GLUT_BITMAP_8_BY_13;
+constexpr int kCharWidth = 8;
+constexpr int kLineHeight = 15;
+constexpr int kMargin = 8;
+
+/// Short stage names for the one-line timing table.
+constexpr const char* kShortStageNames[kStageCount] = {"forces",      "integrate", "kinematics", "broad",
+                                                       "narrow",      "impulses",  "positions"};
+
+std::string format(const char* pattern, double a, double b = 0, double c = 0) {
+    char text[200];
+    std::snprintf(text, sizeof text, pattern, a, b, c);
+    return text;
+}
+
+std::string vec(const Vec3& v) { return format("(%.3g, %.3g, %.3g)", double(v.x), double(v.y), double(v.z)); }
+
+std::vector<std::string> splitLines(const std::string& text) {
+    std::vector<std::string> lines;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+    return lines;
+}
+
+/// A translucent panel with lines of text; (x, y) is its top-left corner in
+/// pixels from the window's top-left.
+void panel(int x, int y, const std::vector<std::string>& lines, float r, float g, float b, float alpha = 0.6f) {
+    if (lines.empty()) return;
+    std::size_t widest = 0;
+    for (const std::string& line : lines) widest = std::max(widest, line.size());
+    const int w = static_cast<int>(widest) * kCharWidth + 2 * kMargin;
+    const int h = static_cast<int>(lines.size()) * kLineHeight + kMargin;
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glColor4f(r, g, b, alpha);
+    glBegin(GL_QUADS);
+    glVertex2i(x, y);
+    glVertex2i(x + w, y);
+    glVertex2i(x + w, y + h);
+    glVertex2i(x, y + h);
+    glEnd();
+    glDisable(GL_BLEND);
+    glColor3f(0.95f, 0.95f, 0.95f);
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+        glRasterPos2i(x + kMargin, y + kMargin / 2 + static_cast<int>(i + 1) * kLineHeight - 4);
+        glutBitmapString(kFont, reinterpret_cast<const unsigned char*>(lines[i].c_str()));
+    }
+}
+
+}  // namespace
+
+std::vector<std::string> helpLines() {
+    return {
+        "Controls (H hides this)",
+        "  mouse, left drag      orbit the camera around its target",
+        "  mouse, middle drag    pan (or Shift + left drag)",
+        "  wheel / right drag    zoom (or Ctrl + left drag)",
+        "  left button on body   push it at that point (a force along the mouse ray)",
+        "  right button on body  pull it at that point (towards the camera)",
+        "  Space   pause / resume",
+        "  N       one step (pauses)",
+        "  S       one stage: the first press runs a step, each press shows its next stage",
+        "  + / -   time scale x2 / x0.5 (wall-clock speed; the time step stays the scene's)",
+        "  R       reload the scene file (a broken file shows its errors, the last good scene stays)",
+        "  C       contact points and normals",
+        "  V       velocity (cyan) and angular velocity (magenta) vectors",
+        "  B       bounding boxes; the broadphase's candidate pairs in yellow",
+        "  I       islands and sleeping bodies: not available yet (sleeping arrives with issue 4)",
+        "  F       frame the scene again (reset the camera)",
+        "  O       hide / show the on-screen text",
+        "  Esc, Q  quit",
+        "Kinematic bodies wear diagonal stripes; joints are not drawn yet (they arrive with the solver issue).",
+    };
+}
+
+std::vector<std::string> hudLines(const Simulation& simulation, const OverlayState& state) {
+    const World& world = simulation.world();
+    const FixedStepClock& clock = simulation.clock();
+    std::vector<std::string> lines;
+
+    std::string first = std::filesystem::path(simulation.scenePath()).filename().string() +
+                        format("  t = %.3f s  step %.0f  h = %.4g s", double(world.time()),
+                               double(world.stepCount()), double(world.settings().timeStep));
+    first += clock.paused() ? "  PAUSED" : format("  running x%.3g", clock.scale());
+    if (state.framesPerSecond > 0) first += format("  %.0f fps", state.framesPerSecond);
+    lines.push_back(first);
+
+    lines.push_back("bodies: " + std::to_string(world.dynamics().size()) +
+                    " awake, 0 asleep (sleeping arrives with issue 4); " + std::to_string(world.kinematics().size()) +
+                    " kinematic, " + std::to_string(world.planes().size()) + " planes");
+    lines.push_back("contacts " + std::to_string(world.contacts().size()) + "   candidate pairs " +
+                    std::to_string(world.candidatePairs().size()));
+
+    const Energy e = energyOf(world);
+    lines.push_back(format("energy %.6g J (kinetic %.4g, potential %.4g)", double(e.total()), double(e.kinetic),
+                           double(e.potential)));
+    lines.push_back("momentum " + vec(linearMomentumOf(world)) + " kg*m/s   L " + vec(angularMomentumOf(world)) +
+                    " kg*m^2/s");
+
+    std::string timing = "last step, us:";
+    std::string skipped;
+    for (std::size_t i = 0; i < kStageCount; ++i) {
+        const StageRecord& r = world.stageRecords()[i];
+        if (i == 4) {  // two lines, so the display fits a narrow window
+            lines.push_back(timing);
+            timing = "             ";
+        }
+        timing += std::string(" ") + kShortStageNames[i] + format(" %.1f", 1e6 * r.lastSeconds);
+        if (world.stepCount() > 0 && !r.ranLastStep) {
+            skipped += std::string(skipped.empty() ? "" : ", ") + stageName(static_cast<Stage>(i));
+        }
+    }
+    lines.push_back(timing);
+    lines.push_back(world.stepCount() == 0 ? "skipped stages: none yet (no step taken)"
+                    : skipped.empty()      ? "skipped stages: none (all 7 ran in the last step)"
+                                           : "skipped stages: " + skipped);
+
+    std::string toggles = "H help";
+    if (state.draw.contacts) toggles += "   C contacts";
+    if (state.draw.velocities) toggles += "   V velocities";
+    if (state.draw.boundingBoxes) toggles += "   B bounding boxes";
+    if (!state.pointed.empty()) toggles += "   " + state.pointed;
+    lines.push_back(toggles);
+    return lines;
+}
+
+void drawOverlay(const Simulation& simulation, int width, int height, const OverlayState& state) {
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glOrtho(0, width, height, 0, -1, 1);  // y grows downwards, like window coordinates
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_LIGHTING);
+
+    int y = kMargin;
+    if (state.hud) {
+        const std::vector<std::string> lines = hudLines(simulation, state);
+        panel(kMargin, y, lines, 0.0f, 0.0f, 0.0f, 0.55f);
+        y += static_cast<int>(lines.size()) * kLineHeight + 2 * kMargin;
+    }
+
+    if (state.help) panel(kMargin, y, helpLines(), 0.0f, 0.0f, 0.0f, 0.7f);
+
+    // From the bottom up: the stage walk-through, then notices and errors above it.
+    int bottom = height - kMargin;
+    auto panelAbove = [&](const std::vector<std::string>& lines, float r, float g, float b, float alpha) {
+        if (lines.empty()) return;
+        bottom -= static_cast<int>(lines.size()) * kLineHeight + kMargin;
+        panel(kMargin, bottom, lines, r, g, b, alpha);
+        bottom -= kMargin;
+    };
+    if (const std::optional<std::size_t> shown = simulation.shownStage()) {
+        std::vector<std::string> lines = {
+            format("S: stage %.0f of %.0f of step ", double(*shown + 1), double(kStageCount)) +
+            std::to_string(simulation.world().stepCount()) + " (World::step() ran them all; this replays each)"};
+        for (std::size_t i = 0; i < kStageCount; ++i) {
+            const Stage stage = static_cast<Stage>(i);
+            if (i == *shown) lines.push_back(" > " + simulation.describeStage(stage));
+            else lines.push_back(std::string("   ") + stageName(stage));
+        }
+        lines.push_back("   white outlines: the bodies before the step.  S: next stage  N, Space: leave");
+        panelAbove(lines, 0.05f, 0.15f, 0.35f, 0.7f);
+    }
+    std::vector<std::string> notices;
+    if (!state.message.empty()) notices.push_back(state.message);
+    if (!simulation.error().empty()) {
+        for (const std::string& line : splitLines(simulation.error())) notices.push_back(line);
+    }
+    const bool isError = !simulation.error().empty();
+    panelAbove(notices, isError ? 0.45f : 0.0f, 0.0f, 0.0f, 0.75f);
+    glEnable(GL_DEPTH_TEST);
+}
+
+}  // namespace stepwise::viewer

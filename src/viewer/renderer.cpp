@@ -1,0 +1,352 @@
+/// @file renderer.cpp
+/// @brief The 3D drawing: fixed-function OpenGL 1.x with one directional light.
+#include "viewer/renderer.hpp"
+
+#include <GL/freeglut.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace stepwise::viewer {
+
+namespace {
+
+/// Length of a drawn velocity vector per m/s: the distance covered in this many seconds.
+constexpr Real kVelocitySeconds = Real(0.25);
+/// Length of a drawn angular-velocity vector per rad/s, m.
+constexpr Real kSpinMetresPerRadian = Real(0.1);
+/// Length of a drawn contact normal, m.
+constexpr Real kNormalLength = Real(0.3);
+/// Grid spacing on planes, m.
+constexpr Real kGridSpacing = Real(1);
+
+void color(const Color& c, float scale = 1.0f) { glColor3f(c.r * scale, c.g * scale, c.b * scale); }
+
+void vertex(const Vec3& p) { glVertex3d(double(p.x), double(p.y), double(p.z)); }
+
+/// Moves the model-view matrix to a body's pose.
+void pushPose(const Vec3& position, const Quat& orientation) {
+    glPushMatrix();
+    glTranslated(double(position.x), double(position.y), double(position.z));
+    const Real angle = glm::angle(orientation);
+    if (std::abs(angle) > Real(1e-9)) {
+        const Vec3 axis = glm::axis(orientation);
+        glRotated(double(angle) * 180.0 / double(kPi), double(axis.x), double(axis.y), double(axis.z));
+    }
+}
+
+void solidShape(Shape shape, Real radius, const Vec3& scale) {
+    if (shape == Shape::Sphere) {
+        glutSolidSphere(double(radius), 32, 20);
+    } else {
+        glPushMatrix();
+        glScaled(double(scale.x), double(scale.y), double(scale.z));
+        glutSolidCube(1.0);
+        glPopMatrix();
+    }
+}
+
+/// The shape's outline: a box's edges, a sphere's meridians and parallels.
+void wireShape(Shape shape, Real radius, const Vec3& scale, float grow = 1.002f) {
+    if (shape == Shape::Sphere) {
+        glutWireSphere(double(radius) * double(grow), 8, 6);
+    } else {
+        glPushMatrix();
+        glScaled(double(scale.x) * double(grow), double(scale.y) * double(grow), double(scale.z) * double(grow));
+        glutWireCube(1.0);
+        glPopMatrix();
+    }
+}
+
+/// Diagonal stripes (a 32×32 polygon stipple, one bit per pixel) that mark kinematic bodies.
+const GLubyte* stripes() {
+    static GLubyte pattern[128];
+    static bool filled = false;
+    if (!filled) {
+        for (int y = 0; y < 32; ++y) {
+            for (int x = 0; x < 32; ++x) {
+                if (((x + y) / 4) % 2 == 0) pattern[y * 4 + x / 8] |= static_cast<GLubyte>(0x80u >> (x % 8));
+            }
+        }
+        filled = true;
+    }
+    return pattern;
+}
+
+void drawBody(Shape shape, Real radius, const Vec3& scale, const Vec3& position, const Quat& orientation,
+              const Color& c, bool kinematic) {
+    pushPose(position, orientation);
+    glEnable(GL_LIGHTING);
+    color(c);
+    solidShape(shape, radius, scale);
+    if (kinematic) {
+        // Darker stripes drawn over the same surface.
+        glDepthFunc(GL_LEQUAL);
+        glEnable(GL_POLYGON_STIPPLE);
+        glPolygonStipple(stripes());
+        color(c, 0.55f);
+        solidShape(shape, radius, scale);
+        glDisable(GL_POLYGON_STIPPLE);
+        glDepthFunc(GL_LESS);
+    }
+    glDisable(GL_LIGHTING);
+    color(c, 0.45f);
+    glLineWidth(1.0f);
+    wireShape(shape, radius, scale);
+    glPopMatrix();
+}
+
+/// Two unit vectors that, with @p n, make a right-handed orthonormal basis.
+void basisFor(const Vec3& n, Vec3& u, Vec3& v) {
+    const Vec3 helper = std::abs(n.y) < Real(0.9) ? Vec3(0, 1, 0) : Vec3(1, 0, 0);
+    u = glm::normalize(glm::cross(helper, n));
+    v = glm::cross(n, u);
+}
+
+/// A plane as a square around the point of the plane nearest the camera's
+/// target, big enough to reach the horizon of the view, with a 1 m grid.
+void drawPlane(const CollisionPlane& plane, const OrbitCamera& camera) {
+    Vec3 u, v;
+    basisFor(plane.normal, u, v);
+    const Real half = std::max(Real(10), 2 * camera.distance);
+    // The square's centre, snapped to the grid so the lines stay put as the camera moves.
+    const Vec3 d = camera.target - plane.position;
+    const Real cu = std::round(glm::dot(d, u) / kGridSpacing) * kGridSpacing;
+    const Real cv = std::round(glm::dot(d, v) / kGridSpacing) * kGridSpacing;
+    const Vec3 centre = plane.position + cu * u + cv * v;
+
+    glEnable(GL_LIGHTING);
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(1.0f, 1.0f);  // push the quad back so the grid lines on it win the depth test
+    color(plane.color, 0.9f);
+    glNormal3d(double(plane.normal.x), double(plane.normal.y), double(plane.normal.z));
+    glBegin(GL_QUADS);
+    vertex(centre - half * u - half * v);
+    vertex(centre + half * u - half * v);
+    vertex(centre + half * u + half * v);
+    vertex(centre - half * u + half * v);
+    glEnd();
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    glDisable(GL_LIGHTING);
+
+    color(plane.color, 0.6f);
+    glBegin(GL_LINES);
+    const int lines = static_cast<int>(half / kGridSpacing);
+    for (int i = -lines; i <= lines; ++i) {
+        const Real s = Real(i) * kGridSpacing;
+        vertex(centre + s * u - half * v);
+        vertex(centre + s * u + half * v);
+        vertex(centre - half * u + s * v);
+        vertex(centre + half * u + s * v);
+    }
+    glEnd();
+}
+
+void drawAabb(const Aabb& box) {
+    const Vec3& a = box.min;
+    const Vec3& b = box.max;
+    const Vec3 corners[8] = {{a.x, a.y, a.z}, {b.x, a.y, a.z}, {b.x, b.y, a.z}, {a.x, b.y, a.z},
+                             {a.x, a.y, b.z}, {b.x, a.y, b.z}, {b.x, b.y, b.z}, {a.x, b.y, b.z}};
+    static constexpr int kEdges[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6},
+                                          {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
+    glBegin(GL_LINES);
+    for (const auto& e : kEdges) {
+        vertex(corners[e[0]]);
+        vertex(corners[e[1]]);
+    }
+    glEnd();
+}
+
+template <class Body>
+Aabb boundsOf(const Body& b) {
+    return b.shape == Shape::Sphere ? sphereAabb(b.position, b.radius)
+                                    : boxAabb(b.position, b.orientation, b.halfExtents());
+}
+
+Vec3 centreOf(const World& world, const BodyRef& ref) {
+    switch (ref.kind) {
+        case BodyKind::Dynamic: return world.dynamics()[ref.index].position;
+        case BodyKind::Kinematic: return world.kinematics()[ref.index].position;
+        case BodyKind::Plane: break;
+    }
+    return world.planes()[ref.index].position;
+}
+
+/// B: every bounding box; the bodies of a candidate pair in yellow, joined by a line.
+void drawBroadphase(const World& world) {
+    std::vector<bool> paired(world.dynamics().size() + world.kinematics().size(), false);
+    for (const CandidatePair& p : world.candidatePairs()) {
+        paired[p.a] = true;
+        if (p.b.kind == BodyKind::Dynamic) paired[p.b.index] = true;
+        if (p.b.kind == BodyKind::Kinematic) paired[world.dynamics().size() + p.b.index] = true;
+    }
+    glLineWidth(1.0f);
+    std::size_t i = 0;
+    auto draw = [&](const Aabb& box) {
+        if (paired[i++]) glColor3f(1.0f, 0.9f, 0.2f);
+        else glColor3f(0.6f, 0.6f, 0.6f);
+        drawAabb(box);
+    };
+    for (const DynamicObject& b : world.dynamics()) draw(boundsOf(b));
+    for (const KinematicsObject& b : world.kinematics()) draw(boundsOf(b));
+    glColor3f(1.0f, 0.9f, 0.2f);
+    glBegin(GL_LINES);
+    for (const CandidatePair& p : world.candidatePairs()) {
+        if (p.b.kind == BodyKind::Plane) continue;
+        vertex(world.dynamics()[p.a].position);
+        vertex(centreOf(world, p.b));
+    }
+    glEnd();
+}
+
+/// C: contact points (orange) and normals from A towards B (yellow); with
+/// @p impulses, the normal's length grows with the contact's share of the largest impulse.
+void drawContacts(const World& world, bool impulses) {
+    Real largest = 0;
+    if (impulses) {
+        for (const ImpulseReport& r : world.impulses()) largest = std::max(largest, r.normalImpulse);
+    }
+    glLineWidth(2.0f);
+    glColor3f(1.0f, 0.9f, 0.2f);
+    glBegin(GL_LINES);
+    for (std::size_t i = 0; i < world.contacts().size(); ++i) {
+        const Contact& c = world.contacts()[i];
+        Real length = kNormalLength;
+        if (impulses && largest > 0 && i < world.impulses().size()) {
+            length = 2 * kNormalLength * world.impulses()[i].normalImpulse / largest;
+        }
+        vertex(c.point);
+        vertex(c.point + length * c.normal);
+    }
+    glEnd();
+    glPointSize(7.0f);
+    glColor3f(1.0f, 0.45f, 0.1f);
+    glBegin(GL_POINTS);
+    for (const Contact& c : world.contacts()) vertex(c.point);
+    glEnd();
+    glLineWidth(1.0f);
+}
+
+/// V: velocity vectors (cyan, the distance covered in 0.25 s) and angular velocities (magenta, 0.1 m per rad/s).
+void drawVelocities(const World& world) {
+    glLineWidth(2.0f);
+    glBegin(GL_LINES);
+    auto draw = [](const Vec3& x, const Vec3& v, const Vec3& w) {
+        glColor3f(0.2f, 0.9f, 0.95f);
+        vertex(x);
+        vertex(x + kVelocitySeconds * v);
+        glColor3f(0.95f, 0.3f, 0.9f);
+        vertex(x);
+        vertex(x + kSpinMetresPerRadian * w);
+    };
+    for (const DynamicObject& b : world.dynamics()) draw(b.position, b.velocity, b.angularVelocity);
+    for (const KinematicsObject& b : world.kinematics()) draw(b.position, b.velocity, b.angularVelocity);
+    glEnd();
+    glLineWidth(1.0f);
+}
+
+void setUpLight() {
+    // A directional light from above and in front (w = 0: a direction, in world
+    // coordinates because the view matrix is already loaded).
+    const GLfloat direction[4] = {0.35f, 1.0f, 0.55f, 0.0f};
+    const GLfloat ambient[4] = {0.38f, 0.38f, 0.38f, 1.0f};
+    const GLfloat diffuse[4] = {0.72f, 0.72f, 0.72f, 1.0f};
+    const GLfloat black[4] = {0, 0, 0, 1};
+    glLightfv(GL_LIGHT0, GL_POSITION, direction);
+    glLightfv(GL_LIGHT0, GL_AMBIENT, ambient);
+    glLightfv(GL_LIGHT0, GL_DIFFUSE, diffuse);
+    glLightfv(GL_LIGHT0, GL_SPECULAR, black);
+    glLightModelfv(GL_LIGHT_MODEL_AMBIENT, black);
+    glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_TRUE);
+    glEnable(GL_LIGHT0);
+    glEnable(GL_COLOR_MATERIAL);
+    glColorMaterial(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE);
+    glEnable(GL_NORMALIZE);  // boxes are drawn as scaled unit cubes: rescale their normals
+}
+
+}  // namespace
+
+void drawScene(const Simulation& simulation, const OrbitCamera& camera, int width, int height,
+               const DrawOptions& options) {
+    const World& world = simulation.world();
+    glViewport(0, 0, width, height);
+    glClearColor(kBackground[0], kBackground[1], kBackground[2], 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glShadeModel(GL_SMOOTH);
+
+    glMatrixMode(GL_PROJECTION);
+    const Mat4 projection = camera.projectionMatrix(Real(width) / Real(height));
+    const glm::dmat4 p(projection);
+    glLoadMatrixd(&p[0][0]);
+    glMatrixMode(GL_MODELVIEW);
+    const glm::dmat4 view(camera.viewMatrix());
+    glLoadMatrixd(&view[0][0]);
+    setUpLight();
+
+    for (const CollisionPlane& plane : world.planes()) drawPlane(plane, camera);
+    for (const DynamicObject& b : world.dynamics()) {
+        drawBody(b.shape, b.radius, b.scale, b.position, b.orientation, b.color, false);
+    }
+    for (const KinematicsObject& b : world.kinematics()) {
+        drawBody(b.shape, b.radius, b.scale, b.position, b.orientation, b.color, true);
+    }
+
+    glDisable(GL_LIGHTING);
+    if (options.hovered && options.hovered->kind != BodyKind::Plane) {
+        glColor3f(1.0f, 0.95f, 0.2f);
+        glLineWidth(3.0f);
+        if (options.hovered->kind == BodyKind::Dynamic) {
+            const DynamicObject& b = world.dynamics()[options.hovered->index];
+            pushPose(b.position, b.orientation);
+            wireShape(b.shape, b.radius, b.scale, 1.03f);
+        } else {
+            const KinematicsObject& b = world.kinematics()[options.hovered->index];
+            pushPose(b.position, b.orientation);
+            wireShape(b.shape, b.radius, b.scale, 1.03f);
+        }
+        glPopMatrix();
+        glLineWidth(1.0f);
+    }
+
+    // The stage walk-through: ghosts of the poses before the step, and the shown stage's overlay.
+    const std::optional<std::size_t> stage = simulation.shownStage();
+    const PoseSnapshot& before = simulation.poseBeforeStep();
+    if (stage && before.positions.size() == world.dynamics().size()) {
+        glColor3f(0.95f, 0.95f, 0.95f);
+        for (std::size_t i = 0; i < before.positions.size(); ++i) {
+            const DynamicObject& b = world.dynamics()[i];
+            pushPose(before.positions[i], before.orientations[i]);
+            wireShape(b.shape, b.radius, b.scale, 1.0f);
+            glPopMatrix();
+        }
+    }
+    const auto shown = [&](Stage s) { return stage && *stage == static_cast<std::size_t>(s); };
+
+    // Overlays are drawn on top of the bodies so that contacts inside them show.
+    glDisable(GL_DEPTH_TEST);
+    if (options.boundingBoxes || shown(Stage::Broadphase)) drawBroadphase(world);
+    if (options.contacts || shown(Stage::Narrowphase) || shown(Stage::ResolveImpulses) ||
+        shown(Stage::CorrectPositions)) {
+        drawContacts(world, shown(Stage::ResolveImpulses));
+    }
+    if (options.velocities || shown(Stage::Integrate)) drawVelocities(world);
+    if (const std::optional<Grab>& grab = simulation.grabbed()) {
+        const Vec3 point = simulation.grabPoint();
+        glColor3f(1.0f, 0.25f, 0.2f);
+        glLineWidth(3.0f);
+        glBegin(GL_LINES);
+        vertex(point);
+        vertex(point + Real(0.6) * grab->direction);
+        glEnd();
+        glPointSize(8.0f);
+        glBegin(GL_POINTS);
+        vertex(point);
+        glEnd();
+        glLineWidth(1.0f);
+    }
+    glEnable(GL_DEPTH_TEST);
+}
+
+}  // namespace stepwise::viewer

@@ -1,0 +1,39 @@
+/// @file renderer.hpp
+/// @brief Draws a World with legacy OpenGL: bodies, planes with a grid, and the debug overlays.
+///
+/// The renderer only reads the World (through a const Simulation): drawing
+/// can never change what is simulated.
+#pragma once
+
+#include <optional>
+
+#include "viewer/camera.hpp"
+#include "viewer/simulation.hpp"
+
+namespace stepwise::viewer {
+
+/// @brief Which debug drawings are switched on (the C, V, B, I keys) and what to emphasise.
+struct DrawOptions {
+    bool contacts = false;       ///< C: contact points and their normals.
+    bool velocities = false;     ///< V: velocity (cyan) and angular velocity (magenta) vectors.
+    bool boundingBoxes = false;  ///< B: bounding boxes; those in a candidate pair in yellow.
+    std::optional<BodyRef> hovered;  ///< Body under the mouse or held: drawn with a yellow outline.
+};
+
+/// @brief Background colour of the 3D view (red, green, blue, 0–1); the screenshot test knows it.
+inline constexpr float kBackground[3] = {0.16f, 0.18f, 0.22f};
+
+/// @brief Draws the 3D scene into the current OpenGL context's @p width × @p height viewport.
+///
+/// Loads the camera's matrices, clears colour and depth, then draws the
+/// planes (finite quads with a 1 m grid), every body lit in its scene colour
+/// (dynamic spheres with darker meridians so rolling shows, boxes with dark
+/// edges, kinematic bodies with diagonal stripes), and the overlays
+/// @p options asks for. While the stage walk-through runs, the overlays of
+/// the stage being shown are drawn whatever the keys say (bounding boxes at
+/// the broadphase, contacts at the narrowphase, impulses at the impulse
+/// stage), and the bodies' poses before the step are drawn as white ghosts.
+void drawScene(const Simulation& simulation, const OrbitCamera& camera, int width, int height,
+               const DrawOptions& options);
+
+}  // namespace stepwise::viewer

@@ -1,0 +1,127 @@
+/// @file simulation.hpp
+/// @brief What the viewer simulates: the World of a scene file, its clock, the stage walk-through and picking.
+///
+/// Nothing here draws (no OpenGL): this is the part of the viewer that must
+/// behave exactly like `stepwise run`. It owns one World and only ever calls
+/// World::step(), the same call `stepwise run` makes, so the trajectory is
+/// the same whatever the frame rate; drawing only reads the World.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "viewer/fixed_step_clock.hpp"
+#include "world/world.hpp"
+
+namespace stepwise::viewer {
+
+/// @brief A body held with the mouse: pushed (left button) or pulled (right button) at a point.
+struct Grab {
+    std::uint32_t body = 0;      ///< Index of the dynamic body.
+    Vec3 localPoint{0, 0, 0};    ///< The held point in the body's own frame, m (it turns with the body).
+    Vec3 direction{0, 0, -1};    ///< Unit direction of the force: along the mouse ray to push, against it to pull.
+    bool pull = false;           ///< True for the right button.
+};
+
+/// @brief Where the body poses were before the step the stage walk-through is showing.
+struct PoseSnapshot {
+    std::vector<Vec3> positions;    ///< One per dynamic body, m.
+    std::vector<Quat> orientations; ///< One per dynamic body.
+};
+
+/// @brief A scene file's World plus everything the viewer does to it between frames.
+class Simulation {
+public:
+    /// @brief Loads @p scenePath. @throws ConfigError or std::invalid_argument when the scene is bad
+    /// (at start-up there is no last good scene to keep).
+    explicit Simulation(std::string scenePath);
+
+    /// @brief Re-reads the scene file from disk (the R key).
+    ///
+    /// On success the new World replaces the old one and the clock restarts
+    /// at t = 0 (pause and time scale are kept). On failure the old World
+    /// stays and error() holds every diagnostic, one per line.
+    /// @return true when the new scene was loaded
+    bool reload();
+
+    /// @brief Advances by as many fixed steps as @p wallSeconds of a frame are worth (see FixedStepClock).
+    /// @return the number of steps taken
+    std::uint64_t advanceFrame(double wallSeconds);
+
+    /// @brief Takes exactly one step (the N key), leaving the stage walk-through.
+    void stepOnce();
+
+    /// @brief Steps until the world's clock reads @p seconds: `llround(seconds / h)` steps
+    /// in all, exactly as many as `stepwise run --duration seconds`.
+    void stepTo(double seconds);
+
+    /// @brief The S key: shows the next stage of the step, running a new step when needed.
+    ///
+    /// World::step() runs all seven stages in one call. The walk-through
+    /// therefore runs one whole step on the first press (after noting where
+    /// the bodies were), then shows that step's stages one per press, each
+    /// with what it produced, read from what the World keeps after a step:
+    /// candidatePairs(), contacts(), impulses(), stageRecords(). Pressing S
+    /// after the last stage runs the next step. The bodies are drawn where
+    /// the whole step left them; their poses before it are drawn as ghosts.
+    void stepStage();
+
+    /// @brief Index of the stage being shown by the walk-through, or nothing outside it.
+    std::optional<std::size_t> shownStage() const { return shownStage_; }
+
+    /// @brief One line on what stage @p stage did in the last step, e.g. "narrowphase: 4 contacts".
+    std::string describeStage(Stage stage) const;
+
+    /// @brief Body poses before the step the walk-through shows (empty outside the walk-through).
+    const PoseSnapshot& poseBeforeStep() const { return before_; }
+
+    /// @brief Starts holding dynamic body @p body at world point @p point.
+    void grab(std::uint32_t body, const Vec3& point, const Vec3& rayDirection, bool pull);
+    /// @brief Follows the mouse: the force now points along (or against) @p rayDirection.
+    void aimGrab(const Vec3& rayDirection);
+    /// @brief Lets go.
+    void release() { grab_.reset(); }
+    /// @brief The body being held, if any.
+    const std::optional<Grab>& grabbed() const { return grab_; }
+    /// @brief World-space position of the held point now, m.
+    Vec3 grabPoint() const;
+    /// @brief Force applied to the held body, N: mass × pickAcceleration(), along the grab's direction.
+    Vec3 grabForce() const;
+    /// @brief Acceleration a grab gives a body, m/s²: twice the gravity's, or 20 m/s² without gravity.
+    Real pickAcceleration() const;
+
+    /// @brief Writes the current state as `stepwise run --csv` writes a sample (header plus one row per object).
+    /// @throws std::runtime_error when the file cannot be written.
+    void dumpState(const std::string& path) const;
+
+    const World& world() const { return *world_; }          ///< The simulated world.
+    const std::string& scenePath() const { return path_; }  ///< The scene file.
+    FixedStepClock& clock() { return clock_; }              ///< Pause and time scale.
+    const FixedStepClock& clock() const { return clock_; }  ///< Pause and time scale.
+    /// @brief The last problem to show on screen (a reload's diagnostics, a simulation error), or "".
+    const std::string& error() const { return error_; }
+    /// @brief Clears error().
+    void clearError() { error_.clear(); }
+    /// @brief How many times the scene has been (re)loaded successfully, counting the first load.
+    int loads() const { return loads_; }
+
+private:
+    void takeStep();  // one World::step() with the grab's impulse before it; catches SimulationError
+
+    std::string path_;
+    std::unique_ptr<World> world_;
+    FixedStepClock clock_;
+    std::optional<Grab> grab_;
+    std::optional<std::size_t> shownStage_;
+    PoseSnapshot before_;
+    std::string error_;
+    int loads_ = 0;
+};
+
+/// @brief The name of the object @p ref points to in @p world.
+std::string bodyName(const World& world, const BodyRef& ref);
+
+}  // namespace stepwise::viewer

@@ -1,0 +1,424 @@
+/// @file viewer.cpp
+/// @brief The freeglut application: window, callbacks, controls, picking, screenshots.
+#include "viewer/viewer.hpp"
+
+#include <GL/freeglut.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdarg>
+#include <cstdio>
+#include <cstdlib>
+#include <memory>
+#include <stdexcept>
+
+#if defined(__SANITIZE_ADDRESS__)
+#include <dlfcn.h>
+#include <link.h>
+#endif
+
+#include "config/scene_loader.hpp"
+#include "core/errors.hpp"
+#include "viewer/camera.hpp"
+#include "viewer/display_check.hpp"
+#include "viewer/overlay.hpp"
+#include "viewer/picking.hpp"
+#include "viewer/png_writer.hpp"
+#include "viewer/renderer.hpp"
+#include "viewer/simulation.hpp"
+
+namespace stepwise::viewer {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+/// Milliseconds between redraws (about 60 frames per second). A timer, not
+/// an idle callback, so a paused viewer does not spin a CPU core.
+constexpr unsigned kFrameMilliseconds = 16;
+/// Seconds a notice (reloaded, not available yet, …) stays on screen.
+constexpr double kMessageSeconds = 4.0;
+/// Camera turn per pixel of mouse drag, rad.
+constexpr Real kOrbitPerPixel = Real(0.008);
+/// Zoom factor exponent per pixel of drag and per wheel click.
+constexpr Real kZoomPerPixel = Real(0.01);
+constexpr Real kZoomPerWheelClick = Real(0.9);
+
+/// What a mouse drag does.
+enum class Drag { None, Orbit, Pan, Zoom, Grab };
+
+/// Everything the GLUT callbacks share. GLUT's callbacks are plain functions
+/// without a user pointer, so the one instance is reached through `app`.
+struct App {
+    std::unique_ptr<Simulation> simulation;
+    OrbitCamera camera;
+    OverlayState overlay;
+    int width = 960;
+    int height = 600;
+
+    Drag drag = Drag::None;
+    int mouseX = 0;
+    int mouseY = 0;
+
+    Clock::time_point lastFrame = Clock::now();
+    Clock::time_point messageShown = Clock::now();
+    Clock::time_point fpsStart = Clock::now();
+    int fpsFrames = 0;
+
+    // Screenshot mode.
+    bool screenshot = false;
+    std::string screenshotPath;
+    std::string dumpStatePath;
+    int exitCode = cli::kExitOk;
+};
+
+App* app = nullptr;
+
+void notify(const std::string& message) {
+    app->overlay.message = message;
+    app->messageShown = Clock::now();
+}
+
+Ray mouseRay(int x, int y) {
+    return app->camera.rayThroughPixel(Real(x) + Real(0.5), Real(y) + Real(0.5), app->width, app->height);
+}
+
+/// The body under pixel (x, y), or nothing.
+std::optional<PickHit> pickAt(int x, int y) { return pickBody(app->simulation->world(), mouseRay(x, y)); }
+
+/// The name shown for what the mouse points at or holds.
+void describePointer(const std::optional<PickHit>& hit) {
+    const World& world = app->simulation->world();
+    if (const std::optional<Grab>& grab = app->simulation->grabbed()) {
+        app->overlay.pointed = std::string(grab->pull ? "pulling " : "pushing ") + world.dynamics()[grab->body].name;
+        app->overlay.draw.hovered = BodyRef{BodyKind::Dynamic, grab->body};
+    } else if (hit) {
+        const BodyRef ref{hit->kind, hit->index};
+        app->overlay.pointed = "pointing at " + bodyName(world, ref) +
+                               (hit->kind == BodyKind::Kinematic ? " (kinematic: cannot be pushed)" : "");
+        app->overlay.draw.hovered = ref;
+    } else {
+        app->overlay.pointed.clear();
+        app->overlay.draw.hovered.reset();
+    }
+}
+
+/// One key press: shared by the keyboard callback and `--keys`.
+void pressKey(unsigned char key) {
+    Simulation& sim = *app->simulation;
+    FixedStepClock& clock = sim.clock();
+    switch (key) {
+        case 27:
+        case 'q':
+        case 'Q':
+            if (!app->screenshot) glutLeaveMainLoop();
+            break;
+        case ' ':
+            clock.setPaused(!clock.paused());
+            if (!clock.paused()) sim.clearError();
+            break;
+        case 'n':
+        case 'N':
+            clock.setPaused(true);
+            sim.stepOnce();
+            break;
+        case 's':
+        case 'S': sim.stepStage(); break;
+        case '+':
+        case '=':
+            clock.setScale(clock.scale() * 2);
+            notify("time scale x" + std::to_string(clock.scale()).substr(0, 5));
+            break;
+        case '-':
+        case '_':
+            clock.setScale(clock.scale() / 2);
+            notify("time scale x" + std::to_string(clock.scale()).substr(0, 5));
+            break;
+        case 'r':
+        case 'R':
+            if (sim.reload()) notify("R: reloaded " + sim.scenePath() + " (t = 0)");
+            else notify("");
+            app->drag = app->drag == Drag::Grab ? Drag::None : app->drag;
+            describePointer(std::nullopt);
+            break;
+        case 'c':
+        case 'C': app->overlay.draw.contacts = !app->overlay.draw.contacts; break;
+        case 'v':
+        case 'V': app->overlay.draw.velocities = !app->overlay.draw.velocities; break;
+        case 'b':
+        case 'B': app->overlay.draw.boundingBoxes = !app->overlay.draw.boundingBoxes; break;
+        case 'i':
+        case 'I': notify("I: islands and sleeping bodies are not available yet (sleeping arrives with issue 4)"); break;
+        case 'h':
+        case 'H': app->overlay.help = !app->overlay.help; break;
+        case 'f':
+        case 'F': app->camera = cameraForScene(sim.world()); break;
+        case 'o':
+        case 'O': app->overlay.hud = !app->overlay.hud; break;
+        default: break;
+    }
+}
+
+void drawFrame(double framesPerSecond) {
+    app->overlay.framesPerSecond = framesPerSecond;
+    drawScene(*app->simulation, app->camera, app->width, app->height, app->overlay.draw);
+    drawOverlay(*app->simulation, app->width, app->height, app->overlay);
+}
+
+// ---- Interactive callbacks -------------------------------------------------
+
+void onDisplay() {
+    const Clock::time_point now = Clock::now();
+    const double frame = std::chrono::duration<double>(now - app->lastFrame).count();
+    app->lastFrame = now;
+    app->simulation->advanceFrame(frame);
+    if (app->drag == Drag::Grab) app->simulation->aimGrab(mouseRay(app->mouseX, app->mouseY).direction);
+    if (!app->overlay.message.empty() &&
+        std::chrono::duration<double>(now - app->messageShown).count() > kMessageSeconds) {
+        app->overlay.message.clear();
+    }
+
+    ++app->fpsFrames;
+    static double fps = 0;
+    const double since = std::chrono::duration<double>(now - app->fpsStart).count();
+    if (since >= 1.0) {
+        fps = app->fpsFrames / since;
+        app->fpsFrames = 0;
+        app->fpsStart = now;
+    }
+    drawFrame(fps);
+    glutSwapBuffers();
+}
+
+void onTimer(int) {
+    glutPostRedisplay();
+    glutTimerFunc(kFrameMilliseconds, onTimer, 0);
+}
+
+void onReshape(int width, int height) {
+    app->width = std::max(1, width);
+    app->height = std::max(1, height);
+}
+
+void onKeyboard(unsigned char key, int, int) { pressKey(key); }
+
+void onMouse(int button, int state, int x, int y) {
+    app->mouseX = x;
+    app->mouseY = y;
+    if (state == GLUT_UP) {
+        if (app->drag == Drag::Grab) app->simulation->release();
+        app->drag = Drag::None;
+        describePointer(pickAt(x, y));
+        return;
+    }
+    if (button == 3 || button == 4) {  // wheel, as buttons 3 (up) and 4 (down) in X11
+        app->camera.zoom(button == 3 ? kZoomPerWheelClick : 1 / kZoomPerWheelClick);
+        return;
+    }
+    const int modifiers = glutGetModifiers();
+    if (button == GLUT_MIDDLE_BUTTON || (button == GLUT_LEFT_BUTTON && (modifiers & GLUT_ACTIVE_SHIFT))) {
+        app->drag = Drag::Pan;
+        return;
+    }
+    if (button == GLUT_LEFT_BUTTON && (modifiers & GLUT_ACTIVE_CTRL)) {
+        app->drag = Drag::Zoom;
+        return;
+    }
+    const std::optional<PickHit> hit = pickAt(x, y);
+    if (hit && hit->kind == BodyKind::Dynamic && (button == GLUT_LEFT_BUTTON || button == GLUT_RIGHT_BUTTON)) {
+        app->simulation->grab(hit->index, hit->point, mouseRay(x, y).direction, button == GLUT_RIGHT_BUTTON);
+        app->drag = Drag::Grab;
+        if (app->simulation->clock().paused()) notify("paused: Space resumes, then the push acts");
+    } else {
+        app->drag = button == GLUT_RIGHT_BUTTON ? Drag::Zoom : Drag::Orbit;
+    }
+    describePointer(hit);
+}
+
+void onMotion(int x, int y) {
+    const Real dx = Real(x - app->mouseX);
+    const Real dy = Real(y - app->mouseY);
+    app->mouseX = x;
+    app->mouseY = y;
+    switch (app->drag) {
+        case Drag::Orbit: app->camera.orbit(-dx * kOrbitPerPixel, dy * kOrbitPerPixel); break;
+        case Drag::Pan: app->camera.pan(-dx / Real(app->height), dy / Real(app->height)); break;
+        case Drag::Zoom: app->camera.zoom(std::exp(dy * kZoomPerPixel)); break;
+        case Drag::Grab: app->simulation->aimGrab(mouseRay(x, y).direction); break;
+        case Drag::None: break;
+    }
+}
+
+void onPassiveMotion(int x, int y) {
+    app->mouseX = x;
+    app->mouseY = y;
+    describePointer(pickAt(x, y));
+}
+
+// ---- Screenshot mode ------------------------------------------------------
+
+void onScreenshotDisplay() {
+    if (app->screenshotPath.empty()) return;  // already taken; freeglut may ask again before leaving
+    const int width = glutGet(GLUT_WINDOW_WIDTH);
+    const int height = glutGet(GLUT_WINDOW_HEIGHT);
+    if (width != app->width || height != app->height) {
+        std::fprintf(stderr,
+                     "stepwise view: the window is %dx%d, not the %dx%d asked for (a smaller screen?); "
+                     "try a smaller --size or a bigger virtual screen: xvfb-run -a -s '-screen 0 1920x1080x24'\n",
+                     width, height, app->width, app->height);
+        app->exitCode = cli::kExitUsageError;
+    } else {
+        drawFrame(0);
+        glFinish();
+        // Read the frame just drawn from the back buffer, before any swap.
+        std::vector<std::uint8_t> bottomUp(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3);
+        glReadBuffer(GL_BACK);
+        glPixelStorei(GL_PACK_ALIGNMENT, 1);
+        glReadPixels(0, 0, width, height, GL_RGB, GL_UNSIGNED_BYTE, bottomUp.data());
+        // OpenGL's rows start at the bottom, PNG's at the top.
+        std::vector<std::uint8_t> topDown(bottomUp.size());
+        const std::size_t row = static_cast<std::size_t>(width) * 3;
+        for (std::size_t y = 0; y < static_cast<std::size_t>(height); ++y) {
+            std::copy_n(bottomUp.begin() + static_cast<std::ptrdiff_t>(y * row), row,
+                        topDown.begin() + static_cast<std::ptrdiff_t>((static_cast<std::size_t>(height) - 1 - y) * row));
+        }
+        try {
+            writePng(app->screenshotPath, width, height, topDown);
+            std::printf("Screenshot of %s at t = %.6g s (step %llu), %dx%d, written to %s\n",
+                        app->simulation->scenePath().c_str(), double(app->simulation->world().time()),
+                        static_cast<unsigned long long>(app->simulation->world().stepCount()), width, height,
+                        app->screenshotPath.c_str());
+            if (!app->dumpStatePath.empty()) {
+                app->simulation->dumpState(app->dumpStatePath);
+                std::printf("State written to %s\n", app->dumpStatePath.c_str());
+            }
+        } catch (const std::runtime_error& e) {
+            std::fprintf(stderr, "stepwise view: %s\n", e.what());
+            app->exitCode = cli::kExitUsageError;
+        }
+    }
+    app->screenshotPath.clear();
+    glutLeaveMainLoop();
+}
+
+/// freeglut's fatal errors. freeglut expects this handler not to return (it
+/// carries on, and crashes, if it does), so it ends the program.
+[[noreturn]] void onGlutError(const char* format, va_list args) {
+    std::fprintf(stderr, "stepwise view: freeglut: ");
+    std::vfprintf(stderr, format, args);
+    std::fprintf(stderr, "\n");
+    std::exit(cli::kExitUsageError);
+}
+
+void onGlutWarning(const char* format, va_list args) {
+    std::fprintf(stderr, "stepwise view: freeglut warning: ");
+    std::vfprintf(stderr, format, args);
+    std::fprintf(stderr, "\n");
+}
+
+/// Creates the GLUT window (the display has been checked already).
+void openWindow(const char* title) {
+    int argc = 1;
+    char name[] = "stepwise";
+    char* argv[] = {name, nullptr};
+    glutInitErrorFunc(onGlutError);
+    glutInitWarningFunc(onGlutWarning);
+    glutInit(&argc, argv);  // our own arguments are not GLUT's: it sees only the program name
+    glutSetOption(GLUT_ACTION_ON_WINDOW_CLOSE, GLUT_ACTION_GLUTMAINLOOP_RETURNS);
+    glutInitDisplayMode(GLUT_DOUBLE | GLUT_RGB | GLUT_DEPTH);
+    glutInitWindowSize(app->width, app->height);
+    glutCreateWindow(title);
+}
+
+/// In a sanitizer build, keeps the OpenGL driver libraries loaded until the process ends.
+///
+/// When the main loop ends, freeglut closes the display and Mesa unloads its
+/// driver (e.g. swrast_dri.so); LeakSanitizer looks only at exit, by which
+/// time the driver's own leftovers are attributed to an "<unknown module>"
+/// that no suppression can name. Re-opening the loaded drivers with
+/// RTLD_NODELETE keeps them mapped, so the report names them and
+/// src/viewer/lsan_suppressions.txt (used by the viewer test) can too. Leaks
+/// in Stepwise's own code are reported as always.
+void keepDriversLoadedForLeakReports() {
+#if defined(__SANITIZE_ADDRESS__)
+    std::vector<std::string> drivers;
+    dl_iterate_phdr(
+        [](dl_phdr_info* info, std::size_t, void* list) {
+            const std::string name = info->dlpi_name ? info->dlpi_name : "";
+            if (name.find("_dri.so") != std::string::npos || name.find("libgallium") != std::string::npos) {
+                static_cast<std::vector<std::string>*>(list)->push_back(name);
+            }
+            return 0;
+        },
+        &drivers);
+    for (const std::string& name : drivers) dlopen(name.c_str(), RTLD_NOW | RTLD_NOLOAD | RTLD_NODELETE);
+#endif
+}
+
+}  // namespace
+
+int runViewer(const cli::ViewOptions& options) {
+    App state;
+    state.width = options.width;
+    state.height = options.height;
+    try {
+        state.simulation = std::make_unique<Simulation>(options.scenePath);
+    } catch (const ConfigError& error) {
+        for (const ConfigDiagnostic& d : error.diagnostics()) std::fprintf(stderr, "%s\n", d.message().c_str());
+        std::fprintf(stderr, "stepwise: %zu error(s) in %s; nothing was loaded.\n", error.diagnostics().size(),
+                     options.scenePath.c_str());
+        return cli::kExitUsageError;
+    } catch (const std::invalid_argument& error) {
+        std::fprintf(stderr, "stepwise: %s: %s\n", options.scenePath.c_str(), error.what());
+        return cli::kExitUsageError;
+    }
+    state.camera = cameraForScene(state.simulation->world());
+
+    auto check = std::make_unique<DisplayCheck>();
+    if (const std::optional<std::string>& problem = check->problem()) {
+        std::fprintf(stderr,
+                     "stepwise view: cannot open a window: %s.\n"
+                     "  On a desktop, run it from a terminal inside the graphical session; over SSH, use 'ssh -X'.\n"
+                     "  Without a screen, draw into a virtual one (Debian package xvfb, which scripts/setup.sh "
+                     "installs):\n"
+                     "    xvfb-run -a stepwise view %s --screenshot out.png --at 2\n",
+                     problem->c_str(), options.scenePath.c_str());
+        return cli::kExitUsageError;
+    }
+
+    app = &state;
+    if (options.screenshotPath) {
+        state.screenshot = true;
+        state.screenshotPath = *options.screenshotPath;
+        state.dumpStatePath = options.dumpStatePath.value_or("");
+        try {
+            state.simulation->stepTo(options.at);
+        } catch (const SimulationError& error) {
+            std::fprintf(stderr, "stepwise: simulation failed: %s\n", error.what());
+            app = nullptr;
+            return cli::kExitSimulationError;
+        }
+        for (char key : options.keys) pressKey(static_cast<unsigned char>(key));
+        openWindow("stepwise view (screenshot)");
+        check.reset();  // freeglut has its own connection now
+        glutDisplayFunc(onScreenshotDisplay);
+    } else {
+        openWindow(("stepwise view " + options.scenePath).c_str());
+        check.reset();
+        glutDisplayFunc(onDisplay);
+        glutReshapeFunc(onReshape);
+        glutKeyboardFunc(onKeyboard);
+        glutMouseFunc(onMouse);
+        glutMotionFunc(onMotion);
+        glutPassiveMotionFunc(onPassiveMotion);
+        glutTimerFunc(kFrameMilliseconds, onTimer, 0);
+        state.lastFrame = Clock::now();
+        notify("H: help");
+    }
+    keepDriversLoadedForLeakReports();
+    glutMainLoop();  // when it returns, freeglut has closed the window and the display
+    app = nullptr;
+    return state.exitCode;
+}
+
+}  // namespace stepwise::viewer
