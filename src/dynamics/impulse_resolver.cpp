@@ -84,7 +84,11 @@ ContactConstraint prepare(const BodySet& bodies, const Contact& contact, Real h,
     const Real an = glm::dot(other.acceleration - a.acceleration, c.normal);
     const Real depth = std::max(contact.depth, Real(0));
     const Real approachAtTouch = vn < 0 ? std::sqrt(std::max(Real(0), vn * vn + Real(2) * an * depth)) : Real(0);
-    c.resting = approachAtTouch <= kRestingContactSteps * std::abs(an) * h;
+    // The speed a step's acceleration builds: the contact's own (a_n), or, for
+    // two bodies falling alike (a stack, where a_n = 0), what either feels.
+    const Real stepAcceleration =
+        std::max({std::abs(an), glm::length(a.acceleration), glm::length(other.acceleration)});
+    c.resting = approachAtTouch <= kRestingContactSteps * stepAcceleration * h;
     const Real e = c.resting ? Real(0) : combineElasticity(a.elasticity, other.elasticity);
     c.targetSeparation = e * approachAtTouch;
     if (contact.depth < 0) {
