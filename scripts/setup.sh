@@ -11,10 +11,13 @@ set -euo pipefail
 # What each package is for:
 #   cmake, ninja-build, g++   the build (CMake presets use the Ninja generator)
 #   libglm-dev                vectors, matrices and quaternions (find_package(glm))
-#   freeglut3-dev             OpenGL and GLUT headers and libraries
+#   freeglut3-dev             OpenGL and GLUT headers and libraries (the viewer, `stepwise view`;
+#                             it brings Mesa's software renderer along)
 #   catch2                    the unit tests (Catch2 v2, find_package(Catch2))
 #   doxygen                   the API reference (`docs` target)
-packages=(cmake ninja-build g++ libglm-dev freeglut3-dev catch2 doxygen)
+#   xvfb, xauth               a virtual X display (xvfb-run) for the viewer's screenshot tests
+#                             and for `stepwise view --screenshot` on a machine without a screen
+packages=(cmake ninja-build g++ libglm-dev freeglut3-dev catch2 doxygen xvfb xauth)
 
 if ! command -v dpkg-query >/dev/null 2>&1; then
     echo "setup: dpkg-query not found: this script installs packages on Debian/Ubuntu only." >&2

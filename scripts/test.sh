@@ -3,7 +3,7 @@
 #
 #   1. setup        scripts/setup.sh installs any missing package
 #   2. ci build     configure + build the `ci` preset (Release, warnings are errors)
-#   3. ci tests     ctest --preset ci
+#   3. ci tests     ctest --preset ci (the viewer's screenshot tests run under xvfb-run)
 #   4. docs         Doxygen API reference into build/ci/docs/html; any warning fails
 #   5. asan build   configure + build the `asan` preset (Debug, ASan + UBSan, warnings are errors)
 #   6. asan tests   ctest --preset asan
