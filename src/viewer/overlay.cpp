@@ -4,6 +4,7 @@
 
 #include <GL/freeglut.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <sstream>
@@ -37,6 +38,23 @@ std::vector<std::string> splitLines(const std::string& text) {
     std::istringstream in(text);
     for (std::string line; std::getline(in, line);) lines.push_back(line);
     return lines;
+}
+
+/// Breaks lines longer than @p maxChars, continuing them indented on the next line.
+std::vector<std::string> wrap(const std::vector<std::string>& lines, int maxChars) {
+    const std::size_t limit = static_cast<std::size_t>(std::max(maxChars, 20));
+    std::vector<std::string> wrapped;
+    for (const std::string& line : lines) {
+        std::string rest = line;
+        while (rest.size() > limit) {
+            std::size_t cut = rest.rfind(' ', limit);
+            if (cut == std::string::npos || cut < limit / 2) cut = limit;
+            wrapped.push_back(rest.substr(0, cut));
+            rest = "    " + rest.substr(rest[cut] == ' ' ? cut + 1 : cut);
+        }
+        wrapped.push_back(rest);
+    }
+    return wrapped;
 }
 
 /// A translucent panel with lines of text; (x, y) is its top-left corner in
@@ -150,14 +168,16 @@ void drawOverlay(const Simulation& simulation, int width, int height, const Over
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_LIGHTING);
 
+    // Every panel is wrapped to the window's width, so that nothing (an error above all) is cut off.
+    const int maxChars = (width - 4 * kMargin) / kCharWidth;
     int y = kMargin;
     if (state.hud) {
-        const std::vector<std::string> lines = hudLines(simulation, state);
+        const std::vector<std::string> lines = wrap(hudLines(simulation, state), maxChars);
         panel(kMargin, y, lines, 0.0f, 0.0f, 0.0f, 0.55f);
         y += static_cast<int>(lines.size()) * kLineHeight + 2 * kMargin;
     }
 
-    if (state.help) panel(kMargin, y, helpLines(), 0.0f, 0.0f, 0.0f, 0.7f);
+    if (state.help) panel(kMargin, y, wrap(helpLines(), maxChars), 0.0f, 0.0f, 0.0f, 0.7f);
 
     // From the bottom up: the stage walk-through, then notices and errors above it.
     int bottom = height - kMargin;
@@ -177,7 +197,7 @@ void drawOverlay(const Simulation& simulation, int width, int height, const Over
             else lines.push_back(std::string("   ") + stageName(stage));
         }
         lines.push_back("   white outlines: the bodies before the step.  S: next stage  N, Space: leave");
-        panelAbove(lines, 0.05f, 0.15f, 0.35f, 0.7f);
+        panelAbove(wrap(lines, maxChars), 0.05f, 0.15f, 0.35f, 0.7f);
     }
     std::vector<std::string> notices;
     if (!state.message.empty()) notices.push_back(state.message);
@@ -185,7 +205,7 @@ void drawOverlay(const Simulation& simulation, int width, int height, const Over
         for (const std::string& line : splitLines(simulation.error())) notices.push_back(line);
     }
     const bool isError = !simulation.error().empty();
-    panelAbove(notices, isError ? 0.45f : 0.0f, 0.0f, 0.0f, 0.75f);
+    panelAbove(wrap(notices, maxChars), isError ? 0.45f : 0.0f, 0.0f, 0.0f, 0.75f);
     glEnable(GL_DEPTH_TEST);
 }
 
