@@ -54,11 +54,27 @@ Result shell(const std::string& command) {
 std::string cli() { return std::string("'") + STEPWISE_CLI_PATH + "'"; }
 
 /// Runs `stepwise view ARGS` in a virtual X display. LeakSanitizer (in the
-/// asan preset) is told to ignore leaks inside Mesa, X and GLUT, listed in
+/// asan preset) is told to ignore leaks inside Mesa's driver, listed in
 /// src/viewer/lsan_suppressions.txt; leaks in Stepwise's own code still fail.
+///
+/// `xvfb-run -a` picks the first free display number, but two started at
+/// the same moment (CTest runs tests in parallel) can pick the same one, and
+/// the loser's server fails to start. That is retried, a few times, after a
+/// pause; any other failure is returned as it is.
 Result viewUnderXvfb(const std::string& args) {
-    return shell("LSAN_OPTIONS=print_suppressions=0:suppressions='" + kSourceDir + "/src/viewer/lsan_suppressions.txt' xvfb-run -a " +
-                 cli() + " view " + args);
+    Result result;
+    for (int attempt = 0; attempt < 4; ++attempt) {
+        if (attempt > 0) ::usleep(static_cast<useconds_t>(300000 + 400000 * attempt + (::getpid() % 7) * 50000));
+        result = shell("LSAN_OPTIONS=print_suppressions=0:suppressions='" + kSourceDir +
+                       "/src/viewer/lsan_suppressions.txt' xvfb-run -a " + cli() + " view " + args);
+        const bool serverClash = result.exitCode != 0 &&
+                                 (result.output.find("Xvfb failed to start") != std::string::npos ||
+                                  result.output.find("already active") != std::string::npos ||
+                                  result.output.find("cannot open the X display") != std::string::npos ||
+                                  result.output.find("failed to open display") != std::string::npos);
+        if (!serverClash) break;
+    }
+    return result;
 }
 
 /// True when the screenshot tests can run here; otherwise WARNs why not.
