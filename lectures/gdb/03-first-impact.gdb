@@ -2,7 +2,7 @@
 # Line numbers are those of the commit named in the lecture; check them if the file has changed.
 #   interactive:  gdb -x lectures/gdb/03-first-impact.gdb --args build/debug/stepwise run config/lesson03_bounce.scene
 #   all at once:  gdb -q -batch -x lectures/gdb/03-first-impact.gdb --args build/debug/stepwise run config/lesson03_bounce.scene
-break impulse_resolver.cpp:89
+break impulse_resolver.cpp:93
 run
 p contact
 p a.velocity
@@ -17,7 +17,7 @@ p stepCount_
 p time_
 frame 0
 delete 1
-break impulse_resolver.cpp:100
+break impulse_resolver.cpp:113
 continue
 p vn
 p c.targetSeparation
@@ -33,6 +33,9 @@ p contacts._M_ptr[0].depth
 p bodies.dynamics._M_ptr[0].position
 p bodies.dynamics._M_ptr[0].velocity
 finish
+p contactWorkspace_.supportVelocityChange
+p contactWorkspace_.shift
+p contactWorkspace_.turn
 p dynamics_[0].position
 p dynamics_[0].velocity
 p impulses_[0]

@@ -2,7 +2,7 @@
 # Line numbers are those of the commit named in the lecture; check them if the file has changed.
 #   interactive:  gdb -x lectures/gdb/03-minus-vn.gdb --args build/debug/stepwise run /tmp/my_bounce.scene
 #   all at once:  gdb -q -batch -x lectures/gdb/03-minus-vn.gdb --args build/debug/stepwise run /tmp/my_bounce.scene
-break impulse_resolver.cpp:87 if vn < 0
+break impulse_resolver.cpp:91 if vn < 0
 commands
 silent
 set var approachAtTouch = -vn

@@ -2,7 +2,7 @@
 # Line numbers are those of the commit named in the lecture; check them if the file has changed.
 #   interactive:  gdb -x lectures/gdb/03-oblique.gdb --args build/debug/stepwise run config/lesson03_collisions.scene
 #   all at once:  gdb -q -batch -x lectures/gdb/03-oblique.gdb --args build/debug/stepwise run config/lesson03_collisions.scene
-break impulse_resolver.cpp:89 if contact.a == 2
+break impulse_resolver.cpp:93 if contact.a == 2
 run
 p c.b->name
 p c.normal
@@ -12,7 +12,7 @@ p c.normalMass
 p c.friction
 p c.tangentMass
 delete 1
-tbreak impulse_resolver.cpp:138
+tbreak impulse_resolver.cpp:187
 continue
 p constraints[0].normalImpulse
 p constraints[0].tangentImpulse
