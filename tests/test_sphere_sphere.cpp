@@ -115,3 +115,17 @@ TEST_CASE("A box of bouncing spheres keeps its momentum through many collisions"
     CHECK(contacts > 20);
     CHECK(glm::length(linearMomentumOf(world) - p0) < 1e-10);
 }
+
+TEST_CASE("Spheres that touch exactly at the end of a step collide in that step", "[sphere-sphere]") {
+    // Gap 1 m closed at 2 m/s: they touch at t = 0.5 s, a step boundary at
+    // h = 1/120 (step 60). Round-off leaves the gap at ±1e-15 m; it must count
+    // as touching, so the swap happens there, with no overlap: the left ball
+    // stops at x = −1 and the right one reaches 0 + 2·(3 − 0.5) = 5 m at t = 3 s.
+    Scene scene = weightless();
+    scene.dynamics.push_back(test::sphere("left", Vec3(-2, 0, 0), Vec3(2, 0, 0), 0.5, 1, 1, 0));
+    scene.dynamics.push_back(test::sphere("right", Vec3(0, 0, 0), Vec3(0), 0.5, 1, 1, 0));
+    World world(scene);
+    while (world.time() < 3 - 1e-9) world.step();
+    CHECK_THAT(world.dynamics()[0].position.x, WithinAbs(-1.0, 1e-9));
+    CHECK_THAT(world.dynamics()[1].position.x, WithinAbs(5.0, 1e-9));
+}

@@ -91,7 +91,7 @@ ContactConstraint prepare(const BodySet& bodies, const Contact& contact, Real h,
     c.resting = approachAtTouch <= kRestingContactSteps * stepAcceleration * h;
     const Real e = c.resting ? Real(0) : combineElasticity(a.elasticity, other.elasticity);
     c.targetSeparation = e * approachAtTouch;
-    if (contact.depth < 0) {
+    if (contact.depth < -kTouchTolerance) {  // closer than that is touching, as in the narrowphase
         // A speculative point, still a gap g apart: a slow approach may close
         // it within the step (v_n ≥ −g/h) but not go further; a fast one is
         // left alone until the surfaces meet, so its bounce is computed then.
@@ -221,7 +221,7 @@ namespace {
 /// body clear of its support.
 Vec3 supportedVelocityChange(const Vec3& dv, const Vec3& acceleration, Real h) {
     const Real a = glm::length(acceleration);
-    if (a == Real(0)) return dv - dv;  // weightless: there is no sag to undo, only impacts
+    if (a == Real(0)) return Vec3(0);  // weightless: there is no sag to undo, only impacts
     const Vec3 down = acceleration / a;
     const Real against = -glm::dot(dv, down);  // how much dv opposes the acceleration, m/s
     const Real excess = against - a * h;

@@ -61,7 +61,7 @@ struct ContactConstraint {
     Real tangentMass[2] = {0, 0};  ///< The same along each tangent, kg.
     Real targetSeparation = 0;     ///< e·v_c: the normal speed the passes aim for, m/s.
     bool resting = false;          ///< Support, not impact: v_c below kRestingContactSteps·h·max(|a_n|, |a_A|, |a_B|).
-    bool speculative = false;      ///< The surfaces are still a gap apart (Contact::depth < 0).
+    bool speculative = false;      ///< The surfaces are still a gap apart (Contact::depth < −kTouchTolerance).
     bool active = true;            ///< False for a speculative point approached fast: it waits for the impact.
     Real friction = 0;             ///< μ of the pair.
     Real normalImpulse = 0;        ///< Accumulated j, N·s.
