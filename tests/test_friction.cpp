@@ -248,3 +248,24 @@ TEST_CASE("A box resting on a box on the floor stays put for 10 s", "[friction][
     CHECK(drift < 2e-3);
     CHECK(tilt < 0.5);
 }
+
+TEST_CASE("A ball rolling slowly into a wall bounces back: gravity does not make a sideways contact resting", "[friction]") {
+    // Rolling without slipping at 0.2 m/s into a wall with e = 1, no friction at
+    // the wall: the normal velocity reverses. 0.2 m/s is below 2·g·h = 0.33 m/s,
+    // the resting threshold a vertical contact would have, but gravity has no
+    // component along the wall's normal, so this is an impact.
+    Scene scene = test::emptyScene(IntegratorKind::SymplecticEuler, Real(1) / 60);
+    scene.planes.push_back(test::ground());
+    CollisionPlane wall = test::ground("wall");
+    wall.position = Vec3(1, 0, 0);
+    wall.normal = Vec3(-1, 0, 0);
+    wall.friction = 0;
+    scene.planes.push_back(wall);
+    DynamicObject ball = test::sphere("ball", Vec3(0, 0.25, 0), Vec3(0.2, 0, 0), 0.25, 1, 1, 0.5);
+    ball.angularVelocity = Vec3(0, 0, -0.2 / 0.25);  // rolling: v = −ω_z·R
+    scene.dynamics.push_back(ball);
+    World world(scene);  // the World derives L = I·ω from the rolling ω
+    while (world.time() < 6) world.step();
+    CHECK(world.dynamics()[0].velocity.x < -0.05);  // came back off the wall
+    CHECK(world.dynamics()[0].position.x < 0.5);
+}

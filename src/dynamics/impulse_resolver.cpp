@@ -84,10 +84,12 @@ ContactConstraint prepare(const BodySet& bodies, const Contact& contact, Real h,
     const Real an = glm::dot(other.acceleration - a.acceleration, c.normal);
     const Real depth = std::max(contact.depth, Real(0));
     const Real approachAtTouch = vn < 0 ? std::sqrt(std::max(Real(0), vn * vn + Real(2) * an * depth)) : Real(0);
-    // The speed a step's acceleration builds: the contact's own (a_n), or, for
-    // two bodies falling alike (a stack, where a_n = 0), what either feels.
-    const Real stepAcceleration =
-        std::max({std::abs(an), glm::length(a.acceleration), glm::length(other.acceleration)});
+    // The speed a step's acceleration builds along the normal: the contact's
+    // relative one (a_n), or, for two bodies falling alike onto each other (a
+    // stack, where a_n = 0), what either feels along n. A wall's horizontal
+    // normal sees no gravity, so a slow ball rolling into it still bounces.
+    const Real stepAcceleration = std::max({std::abs(an), std::abs(glm::dot(a.acceleration, c.normal)),
+                                            std::abs(glm::dot(other.acceleration, c.normal))});
     c.resting = approachAtTouch <= kRestingContactSteps * stepAcceleration * h;
     const Real e = c.resting ? Real(0) : combineElasticity(a.elasticity, other.elasticity);
     c.targetSeparation = e * approachAtTouch;
@@ -242,7 +244,7 @@ void correctPositions(const BodySet& bodies, std::span<const Contact> contacts, 
     shift.assign(bodyCount, Vec3(0));
     turn.assign(bodyCount, Vec3(0));
 
-    // Support: the displacement and turn the integrator would have given the support force.
+    // Support: the displacement the integrator would have given the support force.
     if (workspace.supportVelocityChange.size() == bodyCount) {
         for (std::size_t i = 0; i < bodyCount; ++i) {
             shift[i] = supportStep * supportedVelocityChange(workspace.supportVelocityChange[i],

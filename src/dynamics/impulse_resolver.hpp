@@ -28,10 +28,12 @@ inline constexpr int kPositionPasses = 4;
 /// Contacts approaching slower than the speed a step's acceleration builds in
 /// this many steps do not bounce: that speed is gravity pulling a resting
 /// body into its support during one step, not an impact. Without it a
-/// resting ball with e > 0 hops forever. The acceleration is the larger of
-/// the contact's relative one, |a_n|, and each body's own: two boxes of a
-/// stack fall alike (a_n = 0), yet the solver's passes leave them approaching
-/// by about g·h, and that must not count as an impact either.
+/// resting ball with e > 0 hops forever. The acceleration is the largest of
+/// the contact's relative one, |a_n|, and each body's own along the normal,
+/// |a_A·n| and |a_B·n|: two boxes of a stack fall alike (a_n = 0), yet the
+/// solver's passes leave them approaching by about g·h, and that must not
+/// count as an impact either; a wall's horizontal normal sees no gravity, so
+/// a ball rolling slowly into it still bounces.
 inline constexpr Real kRestingContactSteps = Real(2);
 
 /// @brief What happened at one contact, for tests, traces and debuggers.
@@ -60,7 +62,7 @@ struct ContactConstraint {
     Real normalMass = 0;           ///< 1 / (effective inverse mass along n), kg.
     Real tangentMass[2] = {0, 0};  ///< The same along each tangent, kg.
     Real targetSeparation = 0;     ///< e·v_c: the normal speed the passes aim for, m/s.
-    bool resting = false;          ///< Support, not impact: v_c below kRestingContactSteps·h·max(|a_n|, |a_A|, |a_B|).
+    bool resting = false;          ///< Support, not impact: v_c below kRestingContactSteps·h·max(|a_n|, |a_A·n|, |a_B·n|).
     bool speculative = false;      ///< The surfaces are still a gap apart (Contact::depth < −kTouchTolerance).
     bool active = true;            ///< False for a speculative point approached fast: it waits for the impact.
     Real friction = 0;             ///< μ of the pair.
@@ -122,7 +124,7 @@ struct ContactWorkspace {
 /// back to the surface, adds m·g·d of energy per bounce: the well-known
 /// "ball that bounces higher than it fell". With v_c, a ball of restitution
 /// e dropped from height h peaks at e²ⁿ·h after n bounces at any time step.
-/// Below kRestingContactSteps·h·max(|a_n|, |a_A|, |a_B|) the contact is resting: e = 0.
+/// Below kRestingContactSteps·h·max(|a_n|, |a_A·n|, |a_B·n|) the contact is resting: e = 0.
 ///
 /// **Friction** acts on the tangential part of v_rel *after* the normal
 /// impulse (the normal impulse sets its bound): the impulse that would stop

@@ -21,8 +21,9 @@ inline constexpr Real kDefaultTimeStep = Real(1) / Real(60);
 /// @brief Default run length of `stepwise run`, s.
 inline constexpr Real kDefaultDuration = Real(10);
 /// @brief Default number of passes over all contacts in the impulse stage.
-/// One pass settles an isolated contact exactly; a box on a plane (four
-/// contacts sharing one body) needs several for its impulses to agree.
+/// One pass settles a lone contact whose impulses do not couple (a sphere:
+/// its normal passes through the centre); an off-centre contact, or a box on
+/// a plane (four contacts on one body), needs several for its impulses to agree.
 inline constexpr int kDefaultImpulseIterations = 10;
 
 /// @brief Global simulation settings: one per World.
