@@ -1,0 +1,20 @@
+# Lecture 7, session C (continued): the eight box corners of the incline at step 60, one line each.
+# Line numbers are those of the commit named in the lecture; check them if the file has changed.
+#   interactive:  gdb -x lectures/gdb/07-boxes.gdb --args build/debug/stepwise run config/lesson07_incline.scene --steps 60
+#   all at once:  gdb -q -batch -x lectures/gdb/07-boxes.gdb --args build/debug/stepwise run config/lesson07_incline.scene --steps 60
+set trace-commands on
+break world.cpp:89 if stepCount_ == 59
+run
+delete 1
+tbreak impulse_resolver.cpp:186
+continue
+set trace-commands off
+set $i = 2
+while $i < 10
+  set $c = constraints[$i]
+  printf "%d %-6s j %.6f  jt (%+.6f, %+.6f)  mu*j %.6f  normalMass %.4f  tangentMass (%.4f, %.4f)\n", $i, $c.a->name._M_dataplus._M_p, $c.normalImpulse, $c.tangentImpulse[0], $c.tangentImpulse[1], $c.friction * $c.normalImpulse, $c.normalMass, $c.tangentMass[0], $c.tangentMass[1]
+  set $i = $i + 1
+end
+set trace-commands on
+p constraints[7].rA
+p constraints[9].rA

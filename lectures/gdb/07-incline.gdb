@@ -1,0 +1,30 @@
+# Lecture 7, session C: step 60 of the incline, prepare() for the solid ball, then both balls' totals after the passes (static friction).
+# Line numbers are those of the commit named in the lecture; check them if the file has changed.
+#   interactive:  gdb -x lectures/gdb/07-incline.gdb --args build/debug/stepwise run config/lesson07_incline.scene --steps 60
+#   all at once:  gdb -q -batch -x lectures/gdb/07-incline.gdb --args build/debug/stepwise run config/lesson07_incline.scene --steps 60
+set trace-commands on
+break world.cpp:89 if stepCount_ == 59
+run
+delete 1
+break impulse_resolver.cpp:95 if contact.a == 0
+continue
+p c.normal
+p c.rA
+p vn
+p approachAtTouch
+p c.resting
+p c.normalMass
+p c.tangentMass
+p c.tangent
+delete 2
+tbreak impulse_resolver.cpp:186
+continue
+p constraints._M_impl._M_finish - constraints._M_impl._M_start
+p constraints[0].a->name
+p constraints[0].normalImpulse
+p constraints[0].tangentImpulse
+p constraints[0].friction * constraints[0].normalImpulse
+p constraints[1].a->name
+p constraints[1].normalImpulse
+p constraints[1].tangentImpulse
+p constraints[1].friction * constraints[1].normalImpulse

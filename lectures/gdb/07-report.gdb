@@ -1,0 +1,10 @@
+# Lecture 7, session A (continued): the ImpulseReport of each contact of the bowling scene's first step, read in World::step() after stage 7.
+# Line numbers are those of the commit named in the lecture; check them if the file has changed.
+#   interactive:  gdb -x lectures/gdb/07-report.gdb --args build/debug/stepwise run config/lesson07_bowling.scene --steps 1
+#   all at once:  gdb -q -batch -x lectures/gdb/07-report.gdb --args build/debug/stepwise run config/lesson07_bowling.scene --steps 1
+set trace-commands on
+break stepwise::correctPositions
+run
+finish
+p impulses_[0]
+p impulses_[1]
