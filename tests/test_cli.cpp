@@ -2,8 +2,6 @@
 // CSV output and error messages. Tag: [cli].
 #include <catch2/catch.hpp>
 
-#include <sys/wait.h>
-
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -12,27 +10,16 @@
 #include <string>
 #include <vector>
 
+#include "command_runner.hpp"
+
 using Catch::Matchers::Contains;
 
 namespace {
 
-struct Result {
-    int exitCode = -1;
-    std::string output;  // stdout and stderr together
-};
+using Result = stepwise::test::CommandResult;
 
 /// Runs `stepwise ARGS` and captures what it prints.
-Result stepwise(const std::string& args) {
-    const std::string command = std::string("'") + STEPWISE_CLI_PATH + "' " + args + " 2>&1";
-    Result result;
-    std::FILE* pipe = popen(command.c_str(), "r");
-    REQUIRE(pipe != nullptr);
-    char buffer[4096];
-    while (std::size_t n = std::fread(buffer, 1, sizeof buffer, pipe)) result.output.append(buffer, n);
-    const int status = pclose(pipe);
-    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return result;
-}
+Result runStepwise(const std::string& args) { return stepwise::test::shell(std::string("'") + STEPWISE_CLI_PATH + "' " + args); }
 
 /// A scratch file in the system's temporary folder, removed at scope exit.
 struct TempFile {
@@ -57,37 +44,37 @@ const std::string kSourceDir = STEPWISE_SOURCE_DIR;
 }  // namespace
 
 TEST_CASE("With no arguments stepwise prints its usage", "[cli]") {
-    const Result r = stepwise("");
+    const Result r = runStepwise("");
     CHECK(r.exitCode == 0);
     CHECK_THAT(r.output, Contains("Usage:") && Contains("stepwise run") && Contains("stepwise check"));
 }
 
 TEST_CASE("Unknown commands and options are errors with exit code 2", "[cli]") {
-    CHECK(stepwise("fly").exitCode == 2);
-    const Result r = stepwise("run --speed 3");
+    CHECK(runStepwise("fly").exitCode == 2);
+    const Result r = runStepwise("run --speed 3");
     CHECK(r.exitCode == 2);
     CHECK_THAT(r.output, Contains("unknown option '--speed'"));
-    CHECK(stepwise("run --steps").exitCode == 2);          // missing value
-    CHECK(stepwise("run --steps ten").exitCode == 2);      // not a number
-    CHECK(stepwise("run --every 0").exitCode == 2);        // must be > 0
-    CHECK(stepwise("run --duration 1 --steps 5").exitCode == 2);
-    CHECK(stepwise("check").exitCode == 2);
+    CHECK(runStepwise("run --steps").exitCode == 2);          // missing value
+    CHECK(runStepwise("run --steps ten").exitCode == 2);      // not a number
+    CHECK(runStepwise("run --every 0").exitCode == 2);        // must be > 0
+    CHECK(runStepwise("run --duration 1 --steps 5").exitCode == 2);
+    CHECK(runStepwise("check").exitCode == 2);
 }
 
 TEST_CASE("run with no file runs the default scene and prints a summary", "[cli]") {
-    const Result r = stepwise("run --steps 30");
+    const Result r = runStepwise("run --steps 30");
     CHECK(r.exitCode == 0);
     CHECK_THAT(r.output, Contains("default.scene") && Contains("Simulated") && Contains("Energy") &&
                              Contains("momentum") && Contains("integrate") && Contains("narrowphase"));
 }
 
 TEST_CASE("check validates a scene and describes it", "[cli]") {
-    const Result good = stepwise("check '" + kSourceDir + "/config/lesson03_bounce.scene'");
+    const Result good = runStepwise("check '" + kSourceDir + "/config/lesson03_bounce.scene'");
     CHECK(good.exitCode == 0);
     CHECK_THAT(good.output, Contains("ball") && Contains("floor") && Contains("valid"));
 
     TempFile bad("bad.scene", "World, TimeStep=0\nDynamicObject, Name=a, Mass=-2\n");
-    const Result r = stepwise("check " + bad.quoted());
+    const Result r = runStepwise("check " + bad.quoted());
     CHECK(r.exitCode == 2);
     // file:line:column for each problem, and nothing half-loaded
     CHECK_THAT(r.output, Contains("bad.scene:1:") && Contains("TimeStep") && Contains("bad.scene:2:") &&
@@ -97,7 +84,7 @@ TEST_CASE("check validates a scene and describes it", "[cli]") {
 TEST_CASE("run --csv writes the header, the initial state and every K-th step", "[cli]") {
     TempFile csv("trajectory.csv");
     const std::string scene = "'" + kSourceDir + "/config/lesson03_collisions.scene'";
-    const Result r = stepwise("run " + scene + " --steps 12 --every 4 --csv " + csv.quoted());
+    const Result r = runStepwise("run " + scene + " --steps 12 --every 4 --csv " + csv.quoted());
     REQUIRE(r.exitCode == 0);
     const std::vector<std::string> rows = lines(csv.path);
     REQUIRE(!rows.empty());
@@ -119,8 +106,8 @@ TEST_CASE("run --csv writes the header, the initial state and every K-th step", 
 TEST_CASE("CSV output is identical run after run", "[cli]") {
     TempFile first("first.csv"), second("second.csv");
     const std::string scene = "'" + kSourceDir + "/config/default.scene'";
-    REQUIRE(stepwise("run " + scene + " --duration 3 --csv " + first.quoted()).exitCode == 0);
-    REQUIRE(stepwise("run " + scene + " --duration 3 --csv " + second.quoted()).exitCode == 0);
+    REQUIRE(runStepwise("run " + scene + " --duration 3 --csv " + first.quoted()).exitCode == 0);
+    REQUIRE(runStepwise("run " + scene + " --duration 3 --csv " + second.quoted()).exitCode == 0);
     CHECK(lines(first.path) == lines(second.path));
 }
 
@@ -128,7 +115,7 @@ TEST_CASE("A non-finite state ends the run with exit code 1 naming object, stage
     TempFile scene("runaway.scene",
                    "World, Gravity=(0,0,0)\n"
                    "DynamicObject, Name=rocket, Acceleration=(0, 1e308, 0)\n");
-    const Result r = stepwise("run " + scene.quoted() + " --duration 10");
+    const Result r = runStepwise("run " + scene.quoted() + " --duration 10");
     CHECK(r.exitCode == 1);
     CHECK_THAT(r.output, Contains("rocket") && Contains("integrate") && Contains("step") && Contains("non-finite"));
 }
@@ -137,6 +124,6 @@ TEST_CASE("Every shipped scene runs for one simulated second", "[cli]") {
     for (const auto& entry : std::filesystem::directory_iterator(kSourceDir + "/config")) {
         if (entry.path().extension() != ".scene") continue;
         INFO(entry.path().string());
-        CHECK(stepwise("run '" + entry.path().string() + "' --duration 1").exitCode == 0);
+        CHECK(runStepwise("run '" + entry.path().string() + "' --duration 1").exitCode == 0);
     }
 }

@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "command_runner.hpp"
 #include "config/scene_loader.hpp"
 #include "viewer/camera.hpp"
 #include "viewer/fixed_step_clock.hpp"
@@ -34,22 +35,8 @@ namespace {
 const std::string kSourceDir = STEPWISE_SOURCE_DIR;
 const std::string kScene = kSourceDir + "/config/viewer_test.scene";
 
-struct Result {
-    int exitCode = -1;
-    std::string output;  // stdout and stderr together
-};
-
-/// Runs a shell command and captures what it prints.
-Result shell(const std::string& command) {
-    Result result;
-    std::FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-    REQUIRE(pipe != nullptr);
-    char buffer[4096];
-    while (std::size_t n = std::fread(buffer, 1, sizeof buffer, pipe)) result.output.append(buffer, n);
-    const int status = pclose(pipe);
-    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return result;
-}
+using Result = stepwise::test::CommandResult;
+using stepwise::test::shell;
 
 std::string cli() { return std::string("'") + STEPWISE_CLI_PATH + "'"; }
 
