@@ -10,16 +10,16 @@ namespace stepwise {
 /// @brief Body B of a contact: a dynamic body, a kinematic body (infinite
 /// mass, prescribed velocity) or a plane (infinite mass, at rest).
 ///
-/// Folding the three kinds into one view lets the impulse formula be
-/// written once: a kinematic body or plane is simply one with m⁻¹ = 0.
+/// Folding the three kinds into one view lets the impulse stage prepare a
+/// contact once: what B's surface does at the point, how it accelerates, and
+/// its material. A kinematic body or plane has no `dynamic`, which the
+/// impulse formulas read as m⁻¹ = 0 and I⁻¹ = 0.
 struct ContactBody {
     DynamicObject* dynamic = nullptr;  ///< The body when it is dynamic, else nullptr.
-    Vec3 velocity{0, 0, 0};            ///< Velocity of B's material at the contact point, m/s.
+    Vec3 velocity{0, 0, 0};            ///< Velocity of B's material at the contact point, m/s (for a dynamic B only its centre's: the resolver reads the body itself).
     Vec3 acceleration{0, 0, 0};        ///< Acceleration of B, m/s² (zero unless dynamic).
-    Real inverseMass = 0;              ///< 1/m, 1/kg (0 for kinematic bodies and planes).
     Real elasticity = 1;               ///< Restitution factor of B's material.
     Real friction = 1;                 ///< Friction factor of B's material.
-
 };
 
 /// @brief Looks up body @p ref and describes it at world point @p point.
@@ -31,7 +31,6 @@ inline ContactBody contactBody(const BodySet& bodies, const BodyRef& ref, const 
             view.dynamic = &body;
             view.velocity = body.velocity;
             view.acceleration = body.acceleration;
-            view.inverseMass = body.inverseMass;
             view.elasticity = body.elasticity;
             view.friction = body.friction;
             break;
