@@ -53,6 +53,14 @@ void printSceneHeader(const std::string& path, const Scene& scene) {
     std::printf("Scene %s\n", path.c_str());
     std::printf("  integrator %s, time step %.6g s (%.4g steps/s), gravity %s m/s^2\n", toString(s.integrator),
                 double(s.timeStep), 1.0 / double(s.timeStep), vec(s.gravity).c_str());
+    if (s.solver == SolverKind::SequentialImpulse) {
+        std::printf("  solver SequentialImpulse: %d substeps x (%d solve + %d relax passes), contacts %.3g Hz, "
+                    "warm starting %s, sleep %s\n",
+                    s.substeps, s.velocityIterations, s.relaxIterations, double(contactHertzInUse(s)),
+                    s.warmStarting ? "on" : "off", s.sleeping ? "on" : "off");
+    } else {
+        std::printf("  solver Impulse: %d passes, warm starting %s\n", s.impulseIterations, s.warmStarting ? "on" : "off");
+    }
     std::printf("  %zu dynamic, %zu kinematic, %zu plane(s)\n", scene.dynamics.size(), scene.kinematics.size(),
                 scene.planes.size());
 }
@@ -135,11 +143,12 @@ void printConservation(const Energy& before, const Energy& after, const Vec3& p0
 }
 
 void printStageTimes(const World& world, double wallSeconds) {
-    std::printf("\nTime per stage (mean over the steps it ran)\n");
+    std::printf("\nTime per stage (a substep stage runs several times a step; skipped stages show 0 runs)\n");
     std::printf("  %-20s %8s %12s %12s\n", "stage", "runs", "us/step", "total ms");
+    const double steps = world.stepCount() ? double(world.stepCount()) : 1.0;
     for (std::size_t i = 0; i < kStageCount; ++i) {
         const StageRecord& r = world.stageRecords()[i];
-        const double mean = r.runs ? 1e6 * r.totalSeconds / double(r.runs) : 0.0;
+        const double mean = 1e6 * r.totalSeconds / steps;
         std::printf("  %-20s %8llu %12.3f %12.3f\n", stageName(static_cast<Stage>(i)),
                     static_cast<unsigned long long>(r.runs), mean, 1e3 * r.totalSeconds);
     }

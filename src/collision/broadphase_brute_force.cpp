@@ -24,15 +24,15 @@ Aabb boxAabb(const Vec3& centre, const Quat& orientation, const Vec3& halfExtent
 
 namespace {
 
-/// Bounds grown by kSpeculativeDistance: the narrowphase reports contacts
-/// that close (touching, or speculative for boxes), so the broadphase must
-/// not rule such pairs out.
+/// Bounds grown by kSpeculativeDistance plus the body's sweep (how far it can
+/// move this step): the narrowphase reports contacts that close (touching, or
+/// speculative), so the broadphase must not rule such pairs out.
 template <class Body>
 Aabb boundsOf(const Body& body) {
     Aabb box = body.shape == Shape::Sphere ? sphereAabb(body.position, body.radius)
                                            : boxAabb(body.position, body.orientation, body.halfExtents());
-    box.min -= Vec3(kSpeculativeDistance);
-    box.max += Vec3(kSpeculativeDistance);
+    box.min -= Vec3(kSpeculativeDistance + body.sweep);
+    box.max += Vec3(kSpeculativeDistance + body.sweep);
     return box;
 }
 

@@ -51,10 +51,23 @@ Geometry geometryOf(const CollisionPlane& plane) {
     return g;
 }
 
+namespace {
+
+Real sweepOf(const BodySet& bodies, const BodyRef& ref) {
+    switch (ref.kind) {
+        case BodyKind::Dynamic: return bodies.dynamics[ref.index].sweep;
+        case BodyKind::Kinematic: return bodies.kinematics[ref.index].sweep;
+        case BodyKind::Plane: break;
+    }
+    return 0;
+}
+
+}  // namespace
+
 void findContacts(const BodySet& bodies, const std::vector<CandidatePair>& pairs, std::vector<Contact>& contacts) {
     contacts.clear();
     for (const CandidatePair& pair : pairs) {
-        const Geometry a = geometryOf(bodies.dynamics[pair.a]);
+        Geometry a = geometryOf(bodies.dynamics[pair.a]);
         Geometry b;
         switch (pair.b.kind) {
             case BodyKind::Dynamic: b = geometryOf(bodies.dynamics[pair.b.index]); break;
@@ -66,10 +79,23 @@ void findContacts(const BodySet& bodies, const std::vector<CandidatePair>& pairs
         const PairTest test = pairTestFor(a.type, b.type);
         if (test == nullptr) continue;
 
+        // Sweep: a sphere's test reaches as far as the two bodies can close
+        // this step (GameObject::sweep), found by testing a sphere grown by
+        // that much; depths and points are then given back for the real one.
+        const Real reach = bodies.dynamics[pair.a].sweep + sweepOf(bodies, pair.b);
+        Geometry& grown = a.type == GeometryType::Sphere ? a : b;
+        const bool grows = reach > 0 && grown.type == GeometryType::Sphere;
+        if (grows) grown.radius += reach;
+
         ContactManifold found;
         if (!test(a, b, found)) continue;
         for (int i = 0; i < found.pointCount; ++i) {
-            const ContactPoint& p = found.points[i];
+            ContactPoint p = found.points[i];
+            if (grows) {
+                p.depth -= reach;
+                // The point sat on the grown surface: move it back onto the real one.
+                p.position += (&grown == &a ? -reach : reach) * found.normal;
+            }
             contacts.push_back({pair.a, pair.b, found.normal, p.position, p.depth, p.featureId});
         }
     }

@@ -85,6 +85,8 @@ bool inRange(Real value, Range range) {
         case Range::Positive: return value > 0;
         case Range::NonNegative: return value >= 0;
         case Range::UnitInterval: return value >= 0 && value <= 1;
+        case Range::Count: return value >= 1 && value == std::floor(value);
+        case Range::WholeNumber: return value >= 0 && value == std::floor(value);
     }
     return false;
 }
@@ -110,6 +112,8 @@ std::string describe(Range range) {
         case Range::Positive: return "a number > 0";
         case Range::NonNegative: return "a number >= 0";
         case Range::UnitInterval: return "a number from 0 to 1";
+        case Range::Count: return "a whole number >= 1";
+        case Range::WholeNumber: return "a whole number >= 0";
     }
     return "a number";
 }

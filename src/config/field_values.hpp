@@ -32,6 +32,8 @@ enum class Range : std::uint8_t {
     Positive,      ///< > 0 (mass, radius, scale, time step, duration).
     NonNegative,   ///< ≥ 0 (friction).
     UnitInterval,  ///< 0 to 1 inclusive (elasticity, colour channels).
+    Count,         ///< A whole number ≥ 1 (substeps, iterations).
+    WholeNumber,   ///< A whole number ≥ 0 (relax iterations).
 };
 
 /// @brief Words for an expected value, e.g. "a number > 0", as used in diagnostics.

@@ -227,6 +227,27 @@ private:
         settings.timeStep = values.number("TimeStep", kDefaultTimeStep);
         settings.integrator = values.choice<IntegratorKind>("Integrator", kIntegratorChoices, kDefaultIntegrator);
         settings.duration = values.number("Duration", kDefaultDuration);
+
+        const WorldSettings defaults;
+        auto count = [&](std::string_view field, int fallback) {
+            return static_cast<int>(values.number(field, static_cast<Real>(fallback)));
+        };
+        settings.solver = values.choice<SolverKind>("Solver", kSolverChoices, defaults.solver);
+        settings.substeps = count("Substeps", defaults.substeps);
+        settings.velocityIterations = count("Iterations", defaults.velocityIterations);
+        settings.relaxIterations = count("RelaxIterations", defaults.relaxIterations);
+        settings.impulseIterations = count("ImpulseIterations", defaults.impulseIterations);
+        settings.warmStarting = values.choice<bool>("WarmStarting", kBooleanChoices, defaults.warmStarting);
+        settings.accumulateImpulses = values.choice<bool>("AccumulateImpulses", kBooleanChoices, defaults.accumulateImpulses);
+        settings.positionCorrection = values.choice<bool>("PositionCorrection", kBooleanChoices, defaults.positionCorrection);
+        settings.contactHertz = values.number("ContactHertz", defaults.contactHertz);
+        settings.contactDampingRatio = values.number("ContactDampingRatio", defaults.contactDampingRatio);
+        settings.jointHertz = values.number("JointHertz", defaults.jointHertz);
+        settings.jointDampingRatio = values.number("JointDampingRatio", defaults.jointDampingRatio);
+        settings.sleeping = values.choice<bool>("Sleep", kBooleanChoices, defaults.sleeping);
+        settings.sleepLinearSpeed = values.number("SleepLinearSpeed", defaults.sleepLinearSpeed);
+        settings.sleepAngularSpeed = values.number("SleepAngularSpeed", defaults.sleepAngularSpeed);
+        settings.timeToSleep = values.number("TimeToSleep", defaults.timeToSleep);
     }
 
     /// The object's name: its Name field, or the record type plus its index

@@ -86,6 +86,23 @@ constexpr FieldSpec kWorldFields[] = {
     {"TimeStep",        FieldKind::Number,     kNamedOnly, Range::Positive, kTimeHint}, // s
     {"Integrator",      FieldKind::Integrator, kNamedOnly, Range::Any},
     {"Duration",        FieldKind::Number,     kNamedOnly, Range::Positive, kTimeHint}, // s
+    // The solver and its switches (docs/config-format.md#world-solver, lectures/08-constraint-solver.md)
+    {"Solver",              FieldKind::Solver,  kNamedOnly, Range::Any},
+    {"Substeps",            FieldKind::Number,  kNamedOnly, Range::Count},            // per step
+    {"Iterations",          FieldKind::Number,  kNamedOnly, Range::Count},            // solve passes per substep
+    {"RelaxIterations",     FieldKind::Number,  kNamedOnly, Range::WholeNumber},      // relax passes per substep
+    {"ImpulseIterations",   FieldKind::Number,  kNamedOnly, Range::Count},            // Solver=Impulse passes
+    {"WarmStarting",        FieldKind::Boolean, kNamedOnly, Range::Any},
+    {"AccumulateImpulses",  FieldKind::Boolean, kNamedOnly, Range::Any},
+    {"PositionCorrection",  FieldKind::Boolean, kNamedOnly, Range::Any},
+    {"ContactHertz",        FieldKind::Number,  kNamedOnly, Range::NonNegative},      // Hz
+    {"ContactDampingRatio", FieldKind::Number,  kNamedOnly, Range::NonNegative},
+    {"JointHertz",          FieldKind::Number,  kNamedOnly, Range::NonNegative},      // Hz
+    {"JointDampingRatio",   FieldKind::Number,  kNamedOnly, Range::NonNegative},
+    {"Sleep",               FieldKind::Boolean, kNamedOnly, Range::Any},
+    {"SleepLinearSpeed",    FieldKind::Number,  kNamedOnly, Range::NonNegative},      // m/s
+    {"SleepAngularSpeed",   FieldKind::Number,  kNamedOnly, Range::NonNegative},      // rad/s
+    {"TimeToSleep",         FieldKind::Number,  kNamedOnly, Range::Positive, kTimeHint}, // s
 };
 
 constexpr RecordSpec kRecords[] = {
@@ -124,6 +141,11 @@ const std::array<Choice<IntegratorKind>, 6> kIntegratorChoices = {{
     {"SemiImplicitEuler", IntegratorKind::SymplecticEuler},
     {"Verlet", IntegratorKind::Verlet},
     {"VelocityVerlet", IntegratorKind::Verlet},
+}};
+
+const std::array<Choice<SolverKind>, 2> kSolverChoices = {{
+    {"Impulse", SolverKind::Impulse},
+    {"SequentialImpulse", SolverKind::SequentialImpulse},
 }};
 
 const std::array<Choice<bool>, 6> kBooleanChoices = {{

@@ -17,12 +17,26 @@ namespace {
 /// |n·x| above this means x is too close to n to build a tangent from.
 constexpr Real kAlmostParallel = Real(0.57735);  // 1/√3: some axis always has |n_i| ≤ 1/√3
 
-/// Two unit vectors that complete n to a right-handed orthonormal basis.
+}  // namespace
+
 void tangentBasis(const Vec3& n, Vec3 (&t)[2]) {
     const Vec3 helper = std::abs(n.x) < kAlmostParallel ? Vec3(1, 0, 0) : Vec3(0, 1, 0);
     t[0] = glm::normalize(glm::cross(n, helper));
     t[1] = glm::cross(n, t[0]);
 }
+
+ContactKey keyOf(const Contact& contact) {
+    constexpr unsigned kKindShift = 30;  // two bits of kind above a 30-bit index
+    return {contact.a, (static_cast<std::uint32_t>(contact.b.kind) << kKindShift) | contact.b.index, contact.featureId};
+}
+
+const CachedImpulse* findCachedImpulse(const std::vector<CachedImpulse>& cache, const ContactKey& key) {
+    const auto found = std::lower_bound(cache.begin(), cache.end(), key,
+                                        [](const CachedImpulse& entry, const ContactKey& k) { return entry.key < k; });
+    return (found == cache.end() || found->key != key) ? nullptr : &*found;
+}
+
+namespace {
 
 /// 1/m_eff along direction d: m_A⁻¹ + m_B⁻¹ + (r_A×d)·I_A⁻¹(r_A×d) + (r_B×d)·I_B⁻¹(r_B×d).
 Real inverseEffectiveMass(const ContactConstraint& c, const Vec3& d) {
@@ -135,16 +149,10 @@ void solve(ContactConstraint& c) {
     applyImpulse(c, change);
 }
 
-ContactKey keyOf(const Contact& contact) {
-    constexpr unsigned kKindShift = 30;  // two bits of kind above a 30-bit index
-    return {contact.a, (static_cast<std::uint32_t>(contact.b.kind) << kKindShift) | contact.b.index, contact.featureId};
-}
-
 /// Applies last step's impulses of the same contact point, if it had one.
 void warmStartFromCache(ContactConstraint& c, const ContactKey& key, const std::vector<CachedImpulse>& cache) {
-    const auto found = std::lower_bound(cache.begin(), cache.end(), key,
-                                        [](const CachedImpulse& entry, const ContactKey& k) { return entry.key < k; });
-    if (found == cache.end() || found->key != key || !c.active) return;
+    const CachedImpulse* found = findCachedImpulse(cache, key);
+    if (found == nullptr || !c.active) return;
     c.normalImpulse = found->normalImpulse;
     // The tangent axes are rebuilt each step; carry the friction over as a world vector.
     for (int k = 0; k < 2; ++k) c.tangentImpulse[k] = glm::dot(found->frictionImpulse, c.tangent[k]);

@@ -88,6 +88,15 @@ struct CachedImpulse {
     Vec3 frictionImpulse{0, 0, 0}; ///< Its total friction impulse as a world vector, N·s (tangent axes change between steps).
 };
 
+/// @brief Two unit vectors t₁, t₂ that complete the unit normal @p n to a right-handed orthonormal basis (n, t₁, t₂).
+void tangentBasis(const Vec3& n, Vec3 (&t)[2]);
+
+/// @brief The warm-start key of @p contact: body A, body B (kind in the top two bits, index below), feature id.
+ContactKey keyOf(const Contact& contact);
+
+/// @brief The entry of @p cache (sorted by key) for @p key, or nullptr when that point is new this step.
+const CachedImpulse* findCachedImpulse(const std::vector<CachedImpulse>& cache, const ContactKey& key);
+
 /// @brief Scratch arrays of stages 6 and 7, owned by the World and reused every step.
 struct ContactWorkspace {
     std::vector<CachedImpulse> previousImpulses; ///< Last step's impulses, sorted by key (warm starting).

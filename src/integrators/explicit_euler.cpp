@@ -46,6 +46,7 @@ namespace stepwise {
 
 void integrateExplicitEuler(std::span<DynamicObject> bodies, Real h) {
     for (DynamicObject& body : bodies) {
+        if (body.asleep) continue;  // a sleeping body keeps its state until its island wakes
         // The position uses the velocity at the *start* of the step, so
         // this line must come before the velocity update.
         body.position += h * body.velocity;

@@ -55,6 +55,7 @@
 #pragma once
 
 #include <span>
+#include <vector>
 
 #include "forces/apply_forces.hpp"
 #include "objects/game_object.hpp"
@@ -103,6 +104,15 @@ Quat rotateTorqueFree(const Quat& orientation, const Vec3& angularMomentum, cons
 /// move the position within the same step: x_{n+1} = x_n + h·v_n + share·h·Δv.
 /// (0 for explicit Euler, 1 for symplectic Euler, ½ for velocity Verlet.)
 Real positionShareOfVelocityChange(IntegratorKind integrator);
+
+/// @brief Sequential impulse: copies every body's v and ω before a substep's constraint solve.
+void recordVelocities(std::span<const DynamicObject> bodies, std::vector<Vec3>& velocity,
+                      std::vector<Vec3>& angularVelocity);
+
+/// @brief Sequential impulse: moves each constrained body by h·Δv + (1 − s)·h²·a and turns it by h·Δω,
+/// Δv and Δω being what the constraint solve changed since recordVelocities() (velocity_change_drift.cpp).
+void driftByVelocityChange(std::span<DynamicObject> bodies, std::span<const Vec3> velocityBefore,
+                           std::span<const Vec3> angularVelocityBefore, Real h, IntegratorKind integrator);
 
 /// @brief Stage 3: moves kinematic bodies along their prescribed constant velocities.
 void moveKinematics(std::span<KinematicsObject> bodies, Real h);

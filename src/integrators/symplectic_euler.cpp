@@ -36,6 +36,7 @@ namespace stepwise {
 
 void integrateSymplecticEuler(std::span<DynamicObject> bodies, Real h) {
     for (DynamicObject& body : bodies) {
+        if (body.asleep) continue;  // a sleeping body keeps its state until its island wakes
         body.velocity += h * body.acceleration;
         body.position += h * body.velocity;  // the new velocity: that is the whole difference
 

@@ -39,6 +39,7 @@ namespace stepwise {
 void integrateVerlet(std::span<DynamicObject> bodies, Real h, const AccelerationFunction& accelerations) {
     const Real halfHSquared = Real(0.5) * h * h;
     for (DynamicObject& body : bodies) {
+        if (body.asleep) continue;  // a sleeping body keeps its state until its island wakes
         body.position += h * body.velocity + halfHSquared * body.acceleration;
         // Half the velocity update now, with a_n; the other half needs a_{n+1}.
         body.velocity += Real(0.5) * h * body.acceleration;
@@ -49,6 +50,7 @@ void integrateVerlet(std::span<DynamicObject> bodies, Real h, const Acceleration
     }
     accelerations(bodies);  // a_{n+1} = a(x_{n+1}) and τ_{n+1} = τ(q_{n+1}), written into each body
     for (DynamicObject& body : bodies) {
+        if (body.asleep) continue;  // a sleeping body keeps its state until its island wakes
         body.velocity += Real(0.5) * h * body.acceleration;
         body.angularMomentum += Real(0.5) * h * body.torque;  // the other half kick, with τ_{n+1}
         updateAngularVelocity(body);

@@ -23,4 +23,12 @@ const char* toString(IntegratorKind kind) {
     return "?";
 }
 
+const char* toString(SolverKind kind) {
+    switch (kind) {
+        case SolverKind::Impulse: return "Impulse";
+        case SolverKind::SequentialImpulse: return "SequentialImpulse";
+    }
+    return "?";
+}
+
 }  // namespace stepwise

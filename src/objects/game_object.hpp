@@ -41,6 +41,11 @@ public:
     Quat orientation{1, 0, 0, 0};///< Rotation from body to world space (unit quaternion, w first).
     Vec3 scale{1, 1, 1};         ///< Full size, m: a box's edge lengths; a sphere's diameter when no radius is given.
     Color color;                 ///< Display colour.
+    /// How far the object can move during the current step, m (set by the
+    /// sequential-impulse step; 0 otherwise). Its bounds grow by this much and
+    /// a sphere's contacts reach this far, so a contact is found *before* the
+    /// surfaces meet and the solver can stop them exactly at touching.
+    Real sweep = 0;
 };
 
 /// @brief A simulated rigid body: gravity and contacts change its motion.
@@ -62,6 +67,9 @@ public:
     Real inverseMass = Real(1);      ///< 1/mass, 1/kg; what the impulse formulas use.
     Vec3 velocity{0, 0, 0};          ///< Linear velocity of the centre of mass, m/s.
     Vec3 angularVelocity{0, 0, 0};   ///< Angular velocity in world space, rad/s.
+    bool asleep = false;             ///< Sleeping: not integrated, not solved, until something wakes its island.
+    Real stillTime = 0;              ///< How long the body has been below the sleep speeds, s.
+    std::uint32_t sleepIsland = 0;   ///< Island it fell asleep with (bodies of one island wake together).
     Vec3 constantAcceleration{0, 0, 0}; ///< The scene's per-object acceleration, m/s² (added to gravity).
     Vec3 acceleration{0, 0, 0};      ///< Total acceleration this step, m/s² (written by apply-forces).
     Real elasticity = Real(0.5);     ///< Coefficient of restitution, 0–1.

@@ -22,8 +22,9 @@ constexpr int kLineHeight = 15;
 constexpr int kMargin = 8;
 
 /// Short stage names for the one-line timing table.
-constexpr const char* kShortStageNames[kStageCount] = {"forces",      "integrate", "kinematics", "broad",
-                                                       "narrow",      "impulses",  "positions"};
+constexpr const char* kShortStageNames[kStageCount] = {"forces",  "integrate", "kinematics", "broad",   "narrow",
+                                                       "impulses", "positions", "prepare",   "solve",   "relax",
+                                                       "bounce",   "sleep"};
 
 std::string format(const char* pattern, double a, double b = 0, double c = 0) {
     char text[200];
@@ -147,7 +148,7 @@ std::vector<std::string> hudLines(const Simulation& simulation, const OverlaySta
     }
     lines.push_back(timing);
     lines.push_back(world.stepCount() == 0 ? "skipped stages: none yet (no step taken)"
-                    : skipped.empty()      ? "skipped stages: none (all 7 ran in the last step)"
+                    : skipped.empty()      ? "skipped stages: none (every stage ran in the last step)"
                                            : "skipped stages: " + skipped);
 
     std::string toggles = "H help";

@@ -203,6 +203,17 @@ std::string Simulation::describeStage(Stage stage) const {
                     " removed; resting bodies moved as a support force would";
             break;
         }
+        case Stage::PrepareConstraints:
+            text += std::to_string(w.contacts().size()) + " contact constraints prepared (anchors, effective masses, warm start)";
+            break;
+        case Stage::SolveConstraints:
+        case Stage::RelaxConstraints:
+            text += std::to_string(w.settings().substeps) + " substeps of h/" + std::to_string(w.settings().substeps);
+            break;
+        case Stage::Restitution:
+        case Stage::Sleep:
+            text += "done";
+            break;
         case Stage::Count: break;
     }
     const StageRecord& record = w.stageRecords()[static_cast<std::size_t>(stage)];

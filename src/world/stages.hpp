@@ -16,6 +16,11 @@ enum class Stage : std::uint8_t {
     Narrowphase,       ///< Exact shape tests on candidate pairs → contacts.
     ResolveImpulses,   ///< Normal (restitution) and friction impulses change velocities.
     CorrectPositions,  ///< Push overlapping bodies apart (positions only).
+    PrepareConstraints,///< Sequential impulse: contacts and joints → anchors, effective masses, warm start.
+    SolveConstraints,  ///< Sequential impulse, per substep: warm start, soft solve, move by h·Δv.
+    RelaxConstraints,  ///< Sequential impulse, per substep: solve without the push-out bias.
+    Restitution,       ///< Sequential impulse, after the substeps: bounces.
+    Sleep,             ///< Islands; still islands fall asleep.
     Count              ///< Number of stages (not a stage).
 };
 
@@ -28,8 +33,8 @@ const char* stageName(Stage stage);
 /// @brief What the World measured about one stage.
 struct StageRecord {
     bool ranLastStep = false;    ///< Did the stage run in the most recent step?
-    std::uint64_t runs = 0;      ///< Steps in which it ran.
-    double lastSeconds = 0;      ///< Wall-clock time of its most recent run, s.
+    std::uint64_t runs = 0;      ///< Times it ran (a substep stage runs several times a step).
+    double lastSeconds = 0;      ///< Wall-clock time it took in the most recent step (all its runs), s.
     double totalSeconds = 0;     ///< Wall-clock time summed over all runs, s.
 };
 

@@ -9,6 +9,7 @@
 #include "collision/narrowphase.hpp"
 #include "core/errors.hpp"
 #include "dynamics/inertia.hpp"
+#include "dynamics/islands.hpp"
 #include "forces/apply_forces.hpp"
 #include "integrators/integrators.hpp"
 
@@ -32,6 +33,9 @@ World::World(Scene scene)
     require(isFinite(settings_.timeStep) && settings_.timeStep > 0, "World", "time step must be > 0 s");
     require(stepwise::isFinite(settings_.gravity), "World", "gravity must be finite");
     require(settings_.impulseIterations >= 1, "World", "impulse iterations must be at least 1");
+    require(settings_.substeps >= 1, "World", "substeps must be at least 1");
+    require(settings_.velocityIterations >= 1, "World", "iterations must be at least 1");
+    require(settings_.relaxIterations >= 0, "World", "relax iterations must not be negative");
     for (DynamicObject& body : dynamics_) {
         require(isFinite(body.mass) && body.mass > 0, body.name, "mass must be > 0 kg");
         require(isFinite(body.radius) && body.radius > 0, body.name, "radius must be > 0 m");
@@ -56,9 +60,30 @@ const DynamicObject* World::findDynamic(std::string_view name) const {
 
 BodySet World::bodies() { return {dynamics_, kinematics_, planes_}; }
 
-/// One step of the simulation, from t to t + h. Each line is one stage,
-/// each stage lives in its own file; read them in this order.
 void World::step() {
+    for (StageRecord& record : stageRecords_) {
+        record.ranLastStep = false;
+        record.lastSeconds = 0;
+    }
+    switch (settings_.solver) {
+        case SolverKind::Impulse: stepWithImpulses(); break;
+        case SolverKind::SequentialImpulse: stepWithSequentialImpulses(); break;
+    }
+    time_ += settings_.timeStep;
+    ++stepCount_;
+}
+
+void World::integrate(Real h, const AccelerationFunction& forces) {
+    switch (settings_.integrator) {
+        case IntegratorKind::ExplicitEuler: integrateExplicitEuler(dynamics_, h); break;
+        case IntegratorKind::SymplecticEuler: integrateSymplecticEuler(dynamics_, h); break;
+        case IntegratorKind::Verlet: integrateVerlet(dynamics_, h, forces); break;
+    }
+}
+
+/// `Solver=Impulse`, the foundation's step: move, then find and repair the
+/// collisions the move made. Each line is one stage, in its own file.
+void World::stepWithImpulses() {
     const Real h = settings_.timeStep;
     const AccelerationFunction forces = uniformForces(settings_.gravity);
 
@@ -66,13 +91,7 @@ void World::step() {
     runStage(Stage::ApplyForces, [&] { forces(dynamics_); });
 
     // 2. Advance dynamic bodies by h (src/integrators/*.cpp)
-    runStage(Stage::Integrate, [&] {
-        switch (settings_.integrator) {
-            case IntegratorKind::ExplicitEuler: integrateExplicitEuler(dynamics_, h); break;
-            case IntegratorKind::SymplecticEuler: integrateSymplecticEuler(dynamics_, h); break;
-            case IntegratorKind::Verlet: integrateVerlet(dynamics_, h, forces); break;
-        }
-    });
+    runStage(Stage::Integrate, [&] { integrate(h, forces); });
 
     // 3. Advance kinematic bodies along their prescribed motion (src/integrators/kinematic_motion.cpp)
     runStage(Stage::MoveKinematics, [&] { moveKinematics(kinematics_, h); });
@@ -93,9 +112,98 @@ void World::step() {
     // 7. Push overlapping bodies apart (src/dynamics/impulse_resolver.cpp, correctPositions)
     const Real supportStep = positionShareOfVelocityChange(settings_.integrator) * h;
     runStage(Stage::CorrectPositions, [&] { correctPositions(bodies(), contacts_, h, supportStep, contactWorkspace_); });
+}
 
-    time_ += h;
-    ++stepCount_;
+/// Sweep = |v|·h + ½|a|·h²: the distance free flight can carry a body in a
+/// step (for a kinematic body, plus what its turning moves its farthest point).
+void World::measureSweeps(Real h) {
+    for (DynamicObject& body : dynamics_) {
+        body.sweep = body.asleep ? Real(0)
+                                 : glm::length(body.velocity) * h + Real(0.5) * glm::length(body.acceleration) * h * h;
+    }
+    for (KinematicsObject& body : kinematics_) {
+        const Real reach = body.shape == Shape::Sphere ? body.radius : glm::length(body.halfExtents());
+        body.sweep = (glm::length(body.velocity) + glm::length(body.angularVelocity) * reach) * h;
+    }
+}
+
+/// `Solver=SequentialImpulse`, Catto's soft step: find the contacts first,
+/// then hold them (and the joints) through `substeps` short substeps.
+void World::stepWithSequentialImpulses() {
+    const Real h = settings_.timeStep;
+    const Real hs = h / Real(settings_.substeps);
+    const AccelerationFunction forces = uniformForces(settings_.gravity);
+    ContactSolverSettings contactSettings;
+    contactSettings.substep = hs;
+    contactSettings.accumulate = settings_.accumulateImpulses;
+    contactSettings.positionCorrection = settings_.positionCorrection;
+    contactSettings.softness = makeSoftness(contactHertzInUse(settings_),
+                                            settings_.contactDampingRatio, hs);
+
+    // 1. Forces → accelerations (src/forces/apply_forces.cpp); again at every substep.
+    //    How far each body can move this step sets how far ahead contacts are looked for.
+    runStage(Stage::ApplyForces, [&] {
+        forces(dynamics_);
+        measureSweeps(h);
+    });
+
+    // 2. Which pairs might touch? Sleepers against static objects cannot. (src/collision/broadphase_brute_force.cpp)
+    runStage(Stage::Broadphase, [&] {
+        findPairsBruteForce(bodies(), boundingBoxes_, pairs_);
+        dropSleepingPairs(bodies(), pairs_);
+    });
+
+    // 3. Which of them touch, or are about to (src/collision/narrowphase.cpp → *_*.cpp)
+    runStage(Stage::Narrowphase, [&] { findContacts(bodies(), pairs_, contacts_); });
+
+    // 4. Contacts and joints → constraints; an awake body wakes the islands it touches
+    //    (src/dynamics/contact_solver.cpp, src/dynamics/islands.cpp)
+    runStage(Stage::PrepareConstraints, [&] {
+        wakeTouchedIslands(bodies(), contacts_, links_);
+        prepareContacts(bodies(), contacts_, h, settings_.warmStarting, solverWorkspace_);
+    });
+
+    for (int substep = 0; substep < settings_.substeps; ++substep) {
+        // 5. Free flight for h_s (src/integrators/*.cpp, kinematic_motion.cpp)
+        if (substep > 0) runStage(Stage::ApplyForces, [&] { forces(dynamics_); });
+        runStage(Stage::Integrate, [&] {
+            recordPoses(bodies(), solverWorkspace_);  // the solve measures separations from here
+            integrate(hs, forces);
+        });
+        runStage(Stage::MoveKinematics, [&] { moveKinematics(kinematics_, hs); });
+
+        // 6. Warm start, soft solve, and move by what the solve changed
+        //    (src/dynamics/contact_solver.cpp, src/integrators/velocity_change_drift.cpp)
+        runStage(Stage::SolveConstraints, [&] {
+            recordVelocities(dynamics_, solverWorkspace_.velocityBefore, solverWorkspace_.angularVelocityBefore);
+            warmStartContacts(solverWorkspace_);
+            for (int pass = 0; pass < settings_.velocityIterations; ++pass) {
+                solveContacts(solverWorkspace_, contactSettings, true);
+            }
+            driftByVelocityChange(dynamics_, solverWorkspace_.velocityBefore, solverWorkspace_.angularVelocityBefore, hs,
+                                  settings_.integrator);
+        });
+
+        // 7. Relax: the same passes without the push-out bias, so the push-out leaves no speed behind
+        runStage(Stage::RelaxConstraints, [&] {
+            recordPoses(bodies(), solverWorkspace_);  // where the drift left them
+            for (int pass = 0; pass < settings_.relaxIterations; ++pass) {
+                solveContacts(solverWorkspace_, contactSettings, false);
+            }
+        });
+    }
+
+    // 8. Bounces, once per step, from the approach speed at touch (src/dynamics/contact_solver.cpp)
+    runStage(Stage::Restitution, [&] {
+        applyRestitution(solverWorkspace_);
+        impulses_.resize(contacts_.size());
+        storeContactImpulses(contacts_, solverWorkspace_, impulses_);
+    });
+
+    // 9. Islands at rest fall asleep (src/dynamics/islands.cpp)
+    if (settings_.sleeping) {
+        runStage(Stage::Sleep, [&] { updateSleep(bodies(), contacts_, links_, settings_, islandWorkspace_); });
+    }
 }
 
 template <class StageBody>
@@ -108,7 +216,7 @@ void World::runStage(Stage stage, StageBody&& body) {
     StageRecord& record = stageRecords_[static_cast<std::size_t>(stage)];
     record.ranLastStep = true;
     record.runs += 1;
-    record.lastSeconds = seconds;
+    record.lastSeconds += seconds;
     record.totalSeconds += seconds;
     checkFinite(stage);
 }
@@ -143,6 +251,11 @@ const char* stageName(Stage stage) {
         case Stage::Narrowphase: return "narrowphase";
         case Stage::ResolveImpulses: return "resolve-impulses";
         case Stage::CorrectPositions: return "correct-positions";
+        case Stage::PrepareConstraints: return "prepare-constraints";
+        case Stage::SolveConstraints: return "solve-constraints";
+        case Stage::RelaxConstraints: return "relax-constraints";
+        case Stage::Restitution: return "restitution";
+        case Stage::Sleep: return "sleep";
         case Stage::Count: break;
     }
     return "?";

@@ -8,7 +8,10 @@
 
 #include "collision/broadphase.hpp"
 #include "collision/contact.hpp"
+#include "dynamics/contact_solver.hpp"
 #include "dynamics/impulse_resolver.hpp"
+#include "dynamics/islands.hpp"
+#include "forces/apply_forces.hpp"
 #include "world/body_set.hpp"
 #include "world/scene.hpp"
 #include "world/stages.hpp"
@@ -56,6 +59,10 @@ private:
     template <class StageBody>
     void runStage(Stage stage, StageBody&& body);
     void checkFinite(Stage stage) const;
+    void stepWithImpulses();
+    void measureSweeps(Real h);
+    void stepWithSequentialImpulses();
+    void integrate(Real h, const AccelerationFunction& forces);
     BodySet bodies();
 
     WorldSettings settings_;
@@ -68,6 +75,9 @@ private:
     std::vector<Contact> contacts_;
     std::vector<ImpulseReport> impulses_;
     ContactWorkspace contactWorkspace_;
+    SolverWorkspace solverWorkspace_;
+    IslandWorkspace islandWorkspace_;
+    std::vector<BodyLink> links_;  ///< Bodies held together by joints (for islands).
 
     StageRecords stageRecords_{};
     Real time_ = 0;

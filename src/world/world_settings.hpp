@@ -16,6 +16,20 @@ enum class IntegratorKind : std::uint8_t {
 /// @brief Scene-file spelling of an integrator ("Euler", "SymplecticEuler", "Verlet").
 const char* toString(IntegratorKind kind);
 
+/// @brief Which collision response runs (`World, Solver=…`).
+enum class SolverKind : std::uint8_t {
+    /// The foundation's scheme: integrate, find the overlaps, resolve them
+    /// with impulses, push the bodies apart (src/dynamics/impulse_resolver.cpp).
+    Impulse,
+    /// Catto's soft step: contacts and joints found at the start of the step
+    /// and held through substeps by soft, warm-started sequential impulses
+    /// (src/dynamics/contact_solver.cpp, src/dynamics/joints/).
+    SequentialImpulse,
+};
+
+/// @brief Scene-file spelling of a solver ("Impulse", "SequentialImpulse").
+const char* toString(SolverKind kind);
+
 /// @brief Default time step, s: 60 steps per second, the usual display rate.
 inline constexpr Real kDefaultTimeStep = Real(1) / Real(60);
 /// @brief Default run length of `stepwise run`, s.
@@ -26,6 +40,32 @@ inline constexpr Real kDefaultDuration = Real(10);
 /// a plane (four contacts on one body), needs several for its impulses to agree.
 inline constexpr int kDefaultImpulseIterations = 10;
 
+/// @brief Default substeps of the sequential-impulse solver. Collision runs
+/// once per step, so eight substeps cost far less than eight steps; they are
+/// what lets the contacts be stiff (see kDefaultContactHertz) and a 20-box
+/// tower stand (measured in tests/test_solver.cpp and bench/).
+inline constexpr int kDefaultSubsteps = 8;
+/// @brief Default contact stiffness, Hz: overlaps close like a spring of this
+/// frequency. Capped at a quarter of the substep rate when used (120 Hz at
+/// 1/60 s and 8 substeps). A soft contact carries a load W by overlapping
+/// about W/(m_eff·ω²), ω = 2πf; a tower of n boxes sinks by the sum over its
+/// contacts, so the stiffness sets how far a tall stack settles (8 mm for 20
+/// unit boxes at 120 Hz, 3 cm at 60 Hz, and a soft base lets it topple).
+inline constexpr Real kDefaultContactHertz = 120;
+/// @brief Default contact damping ratio: critically damped, so an overlap
+/// closes without overshooting into a bounce.
+inline constexpr Real kDefaultContactDampingRatio = 1;
+/// @brief Default joint stiffness, Hz (capped at a quarter of the substep rate).
+inline constexpr Real kDefaultJointHertz = 60;
+/// @brief Default joint damping ratio.
+inline constexpr Real kDefaultJointDampingRatio = 2;
+/// @brief A body slower than this, m/s, counts as still for sleeping.
+inline constexpr Real kDefaultSleepLinearSpeed = Real(0.05);
+/// @brief A body turning slower than this, rad/s (≈ 2.9°/s), counts as still.
+inline constexpr Real kDefaultSleepAngularSpeed = Real(0.05);
+/// @brief An island whose bodies have all been still this long, s, falls asleep.
+inline constexpr Real kDefaultTimeToSleep = Real(0.5);
+
 /// @brief Global simulation settings: one per World.
 struct WorldSettings {
     Vec3 gravity{0, -kStandardGravity, 0};             ///< Uniform gravitational acceleration, m/s².
@@ -34,6 +74,35 @@ struct WorldSettings {
     Real duration = kDefaultDuration;                  ///< Default run length, s; > 0.
     int impulseIterations = kDefaultImpulseIterations; ///< Passes over the contacts per step, ≥ 1.
     bool warmStarting = true;                          ///< Start each persisting contact from last step's impulses.
+    SolverKind solver = SolverKind::SequentialImpulse; ///< Collision response and joints.
+    int substeps = kDefaultSubsteps;                   ///< Sequential impulse: substeps per step, ≥ 1.
+    int velocityIterations = 1;                        ///< Sequential impulse: solve passes per substep, ≥ 1.
+    int relaxIterations = 1;                           ///< Sequential impulse: relax passes per substep, ≥ 0.
+    bool accumulateImpulses = true;                    ///< Clamp accumulated impulses (true) or each increment.
+    bool positionCorrection = true;                    ///< Soft push-out of overlaps and joint drift.
+    Real contactHertz = kDefaultContactHertz;          ///< Contact softness frequency, Hz.
+    Real contactDampingRatio = kDefaultContactDampingRatio; ///< Contact softness damping ratio.
+    Real jointHertz = kDefaultJointHertz;              ///< Joint softness frequency, Hz.
+    Real jointDampingRatio = kDefaultJointDampingRatio; ///< Joint softness damping ratio.
+    bool sleeping = true;                              ///< Islands at rest fall asleep (sequential impulse only).
+    Real sleepLinearSpeed = kDefaultSleepLinearSpeed;  ///< Still below this speed, m/s.
+    Real sleepAngularSpeed = kDefaultSleepAngularSpeed; ///< Still below this angular speed, rad/s.
+    Real timeToSleep = kDefaultTimeToSleep;            ///< Still for this long → asleep, s.
 };
+
+/// @brief The contact frequency the sequential-impulse solver really uses, Hz:
+/// ContactHertz, capped at a quarter of the substep rate substeps/h.
+inline Real contactHertzInUse(const WorldSettings& settings) {
+    const Real cap = Real(0.25) * Real(settings.substeps) / settings.timeStep;
+    return settings.contactHertz < cap ? settings.contactHertz : cap;
+}
+
+/// @brief How far a body resting on a rigid support sinks into it under its own weight
+/// with the soft contacts of @p settings, m: g/ω² with ω = 2π·contactHertzInUse()
+/// (a soft contact is a spring of that frequency; 17 µm at 120 Hz).
+inline Real restingSag(const WorldSettings& settings) {
+    const Real omega = Real(2) * Real(3.14159265358979323846) * contactHertzInUse(settings);
+    return glm::length(settings.gravity) / (omega * omega);
+}
 
 }  // namespace stepwise

@@ -1,0 +1,157 @@
+/// @file contact_solver.hpp
+/// @brief The sequential-impulse solver's contact constraints: soft, warm-started, sub-stepped.
+///
+/// This is the contact half of `Solver=SequentialImpulse` (the joints are in
+/// src/dynamics/joints/). The foundation's pairwise scheme
+/// (impulse_resolver.hpp, `Solver=Impulse`) integrates first and repairs the
+/// overlap afterwards; this solver follows Catto's *soft step* (Box2D v3):
+/// contacts are found at the start of the step and then held through every
+/// substep, so the position error is seen while it is being made.
+///
+/// **The constraint.** For a contact point with normal n (from A to B) and
+/// lever arms r_A, r_B, the separation C = (p_B − p_A)·n must stay ≥ 0. Its
+/// time derivative is the relative normal velocity
+/// \f[ \dot C = J v = \big((v_B + \omega_B\times r_B) - (v_A + \omega_A\times r_A)\big)\cdot n, \f]
+/// so J = [−nᵀ, −(r_A×n)ᵀ, nᵀ, (r_B×n)ᵀ] and the effective mass is
+/// \f[ K = J M^{-1} J^T = m_A^{-1} + m_B^{-1} + (r_A\times n)\cdot I_A^{-1}(r_A\times n) + (r_B\times n)\cdot I_B^{-1}(r_B\times n). \f]
+/// One iteration applies λ = −K⁻¹(J v + bias), clamped so the *accumulated*
+/// λ stays ≥ 0 (contacts push, never pull): projected Gauss–Seidel.
+///
+/// **Position error without energy.** While the surfaces overlap (C < 0) the
+/// bias is soft (softness.hpp): b·C, at most kMaxPushOutSpeed, with a softened
+/// mass. While they are still apart (C > 0, a *speculative* point) the bias
+/// is C/h_s: the bodies may close the gap within this substep, not more. The
+/// push-out speed would be kinetic energy if it stayed, so after moving the
+/// positions each substep *relaxes*: it solves again without the soft bias,
+/// removing the push-out velocity but keeping the position it gained.
+///
+/// **Friction.** Two tangent directions t₁, t₂ with the same J structure;
+/// the accumulated friction impulse is kept inside Coulomb's circle
+/// |λ_t| ≤ μ·λ_n, with λ_n the current accumulated normal impulse.
+///
+/// **Restitution** is applied once, after all substeps, from the approach
+/// speed at the moment of touching v_c (reconstructed from the pre-solve
+/// velocity and the gap, see prepareContacts()). A contact that never
+/// pushed during the step (its largest normal impulse was zero) does not bounce.
+///
+/// **Warm starting.** Each point found again (same ContactKey) starts from
+/// last step's impulses; they are applied at the start of every substep.
+///
+/// References: Catto, "Solver2D" and "Soft Step" (box2d.org blog, 2024);
+/// Catto, "Iterative Dynamics with Temporal Coherence" (GDC 2005);
+/// Tonge, "Iterative Rigid Body Solvers" (GDC 2012).
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "collision/contact.hpp"
+#include "dynamics/impulse_resolver.hpp"
+#include "dynamics/softness.hpp"
+#include "world/body_set.hpp"
+#include "world/world_settings.hpp"
+
+namespace stepwise {
+
+/// Largest speed at which a soft contact pushes overlapping bodies apart, m/s.
+/// A deep overlap (a body dropped inside another) is removed over several
+/// steps at this speed instead of exploding out of it.
+inline constexpr Real kMaxPushOutSpeed = Real(3);
+
+/// @brief Where a body is: the part of its state the separation of a contact depends on.
+struct Pose {
+    Vec3 position{0, 0, 0};        ///< Centre, m.
+    Quat orientation{1, 0, 0, 0};  ///< Body-to-world rotation.
+};
+
+/// @brief One contact point held by the sequential-impulse solver through a step.
+struct SolverContact {
+    std::uint32_t indexA = 0;        ///< A's index in the dynamic array.
+    BodyRef refB;                    ///< B: its kind and index.
+    DynamicObject* a = nullptr;      ///< Body A (dynamic).
+    DynamicObject* b = nullptr;      ///< Body B when dynamic, else nullptr.
+    Vec3 staticVelocity{0, 0, 0};    ///< Velocity of a kinematic B's surface at the point, m/s (zero for a plane).
+    Mat3 inverseInertiaA{0};         ///< A's world inverse inertia at the start of the step, 1/(kg·m²).
+    Mat3 inverseInertiaB{0};         ///< B's, or zero.
+    Real inverseMassA = 0;           ///< 1/m_A, 1/kg.
+    Real inverseMassB = 0;           ///< 1/m_B, or zero.
+    Vec3 rA{0, 0, 0};                ///< Lever arm from A's centre to the point (world frame, start of step), m.
+    Vec3 rB{0, 0, 0};                ///< The same from B's centre (zero for a plane), m.
+    Vec3 localAnchorA{0, 0, 0};      ///< The point in A's body frame, m (a box's material point).
+    Vec3 localAnchorB{0, 0, 0};      ///< The point in B's body frame, m.
+    bool anchorTurnsWithA = true;    ///< False for a sphere: its contact point stays below the centre while it rolls.
+    bool anchorTurnsWithB = true;    ///< The same for B.
+    Vec3 startPointA{0, 0, 0};       ///< The anchor on A in the world at the start of the step, m.
+    Vec3 startPointB{0, 0, 0};       ///< The anchor on B, m.
+    Real startSeparation = 0;        ///< C at the start of the step: −Contact::depth, m (> 0: a gap).
+    Vec3 normal{0, 1, 0};            ///< From A towards B, fixed for the step.
+    Vec3 tangent[2];                 ///< Friction directions across the normal.
+    Real normalMass = 0;             ///< K⁻¹ along n, kg.
+    Real tangentMass[2] = {0, 0};    ///< K⁻¹ along each tangent, kg.
+    Real friction = 0;               ///< μ of the pair.
+    Real restitution = 0;            ///< e of the pair (0 when the contact is resting).
+    Real approachAtTouch = 0;        ///< v_c: approach speed when the surfaces meet, m/s (≥ 0).
+    Real normalImpulse = 0;          ///< Accumulated λ_n of the current substep, N·s.
+    Real tangentImpulse[2] = {0, 0}; ///< Accumulated friction impulses, N·s.
+    Real maxNormalImpulse = 0;       ///< Largest λ_n seen this step (0: never pushed), N·s.
+};
+
+/// @brief What the contact solver needs of the World's settings for one substep.
+struct ContactSolverSettings {
+    Real substep = 0;                ///< h_s = h / substeps, s.
+    Softness softness;               ///< From ContactHertz and ContactDampingRatio at h_s.
+    bool accumulate = true;          ///< Clamp the accumulated impulse (true) or each increment (false).
+    bool positionCorrection = true;  ///< Use the soft bias on overlaps (false: overlaps are never pushed out).
+};
+
+/// @brief Scratch arrays of the sequential-impulse contact solver, reused every step.
+struct SolverWorkspace {
+    std::vector<SolverContact> contacts;         ///< One per contact point, this step.
+    std::vector<CachedImpulse> previousImpulses; ///< Last step's impulses, sorted by key.
+    std::vector<CachedImpulse> currentImpulses;  ///< This step's, swapped in at the end.
+    std::vector<Pose> dynamicPoses;              ///< Per dynamic body: the pose separations are measured at.
+    std::vector<Pose> kinematicPoses;            ///< Per kinematic body: the same.
+    std::vector<Vec3> velocityBefore;            ///< Per dynamic body: v before this substep's solve, m/s.
+    std::vector<Vec3> angularVelocityBefore;     ///< Per dynamic body: ω before this substep's solve, rad/s.
+};
+
+/// @brief Builds one SolverContact per contact: anchors, effective masses,
+/// bounce, and (with @p warmStart) last step's impulses.
+///
+/// The bounce: the relative normal velocity v_n (< 0 approaching) is taken
+/// before any impulse, at the start of the step, when the surfaces are a gap
+/// C apart (negative: an overlap). Under the approach acceleration a (the
+/// bodies' accelerations along −n) the approach speed when they meet is
+/// \f[ v_c = \sqrt{\max(0,\; v_n^2 + 2\,a\,C)}, \f]
+/// which is the speed the restitution law e·v_c refers to: bouncing with v_n
+/// instead would make a ball's apex depend on where in the step it touched.
+/// Below kRestingContactSteps·h·(acceleration along n) the contact is
+/// resting and does not bounce (a box on a floor is pulled in by g·h every
+/// step; that is not an impact).
+/// @param h full step, s (for the resting rule)
+void prepareContacts(const BodySet& bodies, std::span<const Contact> contacts, Real h, bool warmStart,
+                     SolverWorkspace& workspace);
+
+/// @brief Records every body's pose: the separations of the next solveContacts() are measured there.
+///
+/// The solve measures C where the bodies were at the start of the substep,
+/// before free flight moved them: its bias then means what Box2D's does,
+/// "C + h_s·v_n ≥ 0 after the substep" (the drift moves the bodies with the
+/// solved velocity). The relax pass measures C where they are after the drift.
+void recordPoses(const BodySet& bodies, SolverWorkspace& workspace);
+
+/// @brief Applies every contact's accumulated impulses (the warm start), at the start of a substep.
+void warmStartContacts(SolverWorkspace& workspace);
+
+/// @brief One Gauss–Seidel pass over all contacts.
+/// @param useBias true for the solve (soft push-out), false for the relax pass.
+void solveContacts(SolverWorkspace& workspace, const ContactSolverSettings& settings, bool useBias);
+
+/// @brief After the substeps: the bounce, e·v_c along n, for contacts that pushed and are not resting.
+void applyRestitution(SolverWorkspace& workspace);
+
+/// @brief Keeps this step's impulses for the next step's warm start, and fills @p reports (may be empty).
+void storeContactImpulses(std::span<const Contact> contacts, SolverWorkspace& workspace,
+                          std::span<ImpulseReport> reports);
+
+}  // namespace stepwise

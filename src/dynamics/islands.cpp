@@ -1,0 +1,133 @@
+/// @file islands.cpp
+/// @brief Islands by union–find over contacts and joints, and the sleep decision (see islands.hpp).
+#include "dynamics/islands.hpp"
+
+#include <algorithm>
+#include <limits>
+
+namespace stepwise {
+
+namespace {
+
+/// Root of i's tree, halving the path on the way (Tarjan): near-constant time.
+std::uint32_t findRoot(std::vector<std::uint32_t>& parent, std::uint32_t i) {
+    while (parent[i] != i) {
+        parent[i] = parent[parent[i]];
+        i = parent[i];
+    }
+    return i;
+}
+
+void join(std::vector<std::uint32_t>& parent, std::uint32_t a, std::uint32_t b) {
+    const std::uint32_t ra = findRoot(parent, a);
+    const std::uint32_t rb = findRoot(parent, b);
+    if (ra != rb) parent[std::max(ra, rb)] = std::min(ra, rb);  // the lower index is the root: deterministic
+}
+
+bool isMovingKinematic(const BodySet& bodies, const BodyRef& ref) {
+    if (ref.kind != BodyKind::Kinematic) return false;
+    const KinematicsObject& k = bodies.kinematics[ref.index];
+    return k.velocity != Vec3(0) || k.angularVelocity != Vec3(0);
+}
+
+}  // namespace
+
+void dropSleepingPairs(const BodySet& bodies, std::vector<CandidatePair>& pairs) {
+    std::erase_if(pairs, [&](const CandidatePair& pair) {
+        if (!bodies.dynamics[pair.a].asleep) return false;
+        if (pair.b.kind == BodyKind::Dynamic) return bodies.dynamics[pair.b.index].asleep;
+        return !isMovingKinematic(bodies, pair.b);  // a moving kinematic body must still find the sleeper
+    });
+}
+
+std::size_t wakeIsland(std::span<DynamicObject> bodies, std::uint32_t body) {
+    if (!bodies[body].asleep) return 0;
+    const std::uint32_t island = bodies[body].sleepIsland;
+    std::size_t woken = 0;
+    for (DynamicObject& other : bodies) {
+        if (other.asleep && other.sleepIsland == island) {
+            other.asleep = false;
+            other.stillTime = 0;
+            ++woken;
+        }
+    }
+    return woken;
+}
+
+std::size_t wakeTouchedIslands(const BodySet& bodies, std::span<const Contact> contacts, std::span<const BodyLink> links) {
+    std::size_t woken = 0;
+    auto wakePair = [&](std::uint32_t a, BodyRef b) {
+        const bool aAsleep = bodies.dynamics[a].asleep;
+        if (b.kind == BodyKind::Dynamic) {
+            const bool bAsleep = bodies.dynamics[b.index].asleep;
+            if (aAsleep && !bAsleep) woken += wakeIsland(bodies.dynamics, a);
+            if (bAsleep && !aAsleep) woken += wakeIsland(bodies.dynamics, b.index);
+        } else if (aAsleep && isMovingKinematic(bodies, b)) {
+            woken += wakeIsland(bodies.dynamics, a);
+        }
+    };
+    for (const Contact& contact : contacts) wakePair(contact.a, contact.b);
+    for (const BodyLink& link : links) {
+        if (link.b != kWorldAnchor) wakePair(link.a, {BodyKind::Dynamic, link.b});
+    }
+    return woken;
+}
+
+std::size_t updateSleep(const BodySet& bodies, std::span<const Contact> contacts, std::span<const BodyLink> links,
+                        const WorldSettings& settings, IslandWorkspace& workspace) {
+    std::span<DynamicObject> dynamics = bodies.dynamics;
+    const std::size_t n = dynamics.size();
+    const Real h = settings.timeStep;
+    const Real linear2 = settings.sleepLinearSpeed * settings.sleepLinearSpeed;
+    const Real angular2 = settings.sleepAngularSpeed * settings.sleepAngularSpeed;
+
+    // 1. Still times: compare squared speeds, no square root per body.
+    for (DynamicObject& body : dynamics) {
+        if (body.asleep) continue;
+        const bool still = glm::dot(body.velocity, body.velocity) < linear2 &&
+                           glm::dot(body.angularVelocity, body.angularVelocity) < angular2;
+        body.stillTime = still ? body.stillTime + h : Real(0);
+    }
+    for (const Contact& contact : contacts) {  // carried by a moving platform is not still
+        if (isMovingKinematic(bodies, contact.b)) dynamics[contact.a].stillTime = 0;
+    }
+
+    // 2. Islands: union–find over dynamic–dynamic contacts and joints.
+    workspace.parent.resize(n);
+    for (std::uint32_t i = 0; i < n; ++i) workspace.parent[i] = i;
+    for (const Contact& contact : contacts) {
+        if (contact.b.kind == BodyKind::Dynamic) join(workspace.parent, contact.a, contact.b.index);
+    }
+    for (const BodyLink& link : links) {
+        if (link.b != kWorldAnchor) join(workspace.parent, link.a, link.b);
+    }
+
+    // 3. An island sleeps when its least still body has been still long enough.
+    workspace.islandStillTime.assign(n, std::numeric_limits<Real>::max());
+    for (std::uint32_t i = 0; i < n; ++i) {
+        if (dynamics[i].asleep) continue;
+        Real& least = workspace.islandStillTime[findRoot(workspace.parent, i)];
+        least = std::min(least, dynamics[i].stillTime);
+    }
+    std::size_t asleep = 0;
+    bool fellAsleep = false;
+    for (std::uint32_t i = 0; i < n; ++i) {
+        DynamicObject& body = dynamics[i];
+        if (!body.asleep) {
+            const std::uint32_t root = findRoot(workspace.parent, i);
+            if (workspace.islandStillTime[root] >= settings.timeToSleep) {
+                body.asleep = true;
+                body.sleepIsland = workspace.nextSleepIsland + root;
+                body.velocity = Vec3(0);
+                body.angularVelocity = Vec3(0);
+                body.angularMomentum = Vec3(0);
+                fellAsleep = true;
+            }
+        }
+        if (body.asleep) ++asleep;
+    }
+    if (fellAsleep) workspace.nextSleepIsland += static_cast<std::uint32_t>(n);  // fresh ids for later islands
+    return asleep;
+}
+
+}  // namespace stepwise

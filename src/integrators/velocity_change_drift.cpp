@@ -1,0 +1,53 @@
+/// @file velocity_change_drift.cpp
+/// @brief Sequential impulse, within a substep: the bodies move by what the constraints did to their velocities.
+///
+/// The integrator has already carried each body through the substep with its
+/// free-flight velocity; the constraint solve then changed that velocity by
+/// Δv (and the angular velocity by Δω). Had those impulses been there from
+/// the substep's start, the body would also have moved by h_s·Δv and turned
+/// by h_s·Δω, so that is added here:
+/// \f[ x \leftarrow x + h_s\,\Delta v, \qquad q \leftarrow \exp(\tfrac12 h_s\,\Delta\omega)\,q. \f]
+/// For symplectic Euler the result is exactly x_n + h_s·v_{n+1}, the
+/// position update every sequential-impulse engine makes after its solve
+/// (Box2D's "integrate positions"). Without this drift a resting body would
+/// sink by g·h_s² each substep and be pushed back out by the soft bias: jitter.
+///
+/// The other integrators moved the position with a different velocity u
+/// than the v they ended with: u = v − (1 − s)·h_s·a, with s the share from
+/// positionShareOfVelocityChange() (explicit Euler moved with the old
+/// velocity, s = 0; Verlet with the mean, s = ½). A constraint force acts
+/// *implicitly*, on the end-of-substep velocity, whatever the integrator, so
+/// a constrained body ends at x_n + h_s·v_{n+1}:
+/// [ x \leftarrow x + h_s\,\Delta v + (1 - s)\,h_s^2\,a. ]
+/// A body the constraints did not touch (Δv = 0, Δω = 0) keeps its
+/// integrator's free flight exactly. Check: a resting ball (v_n = 0) ends
+/// where it started with every integrator, because Δv = −h_s·a.
+#include "integrators/integrators.hpp"
+
+namespace stepwise {
+
+void recordVelocities(std::span<const DynamicObject> bodies, std::vector<Vec3>& velocity,
+                      std::vector<Vec3>& angularVelocity) {
+    velocity.resize(bodies.size());
+    angularVelocity.resize(bodies.size());
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+        velocity[i] = bodies[i].velocity;
+        angularVelocity[i] = bodies[i].angularVelocity;
+    }
+}
+
+void driftByVelocityChange(std::span<DynamicObject> bodies, std::span<const Vec3> velocityBefore,
+                           std::span<const Vec3> angularVelocityBefore, Real h, IntegratorKind integrator) {
+    const Real lag = Real(1) - positionShareOfVelocityChange(integrator);
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+        DynamicObject& body = bodies[i];
+        if (body.asleep) continue;
+        const Vec3 change = body.velocity - velocityBefore[i];
+        const Vec3 turn = body.angularVelocity - angularVelocityBefore[i];
+        if (change == Vec3(0) && turn == Vec3(0)) continue;  // free flight: the integrator's own step stands
+        body.position += h * change + lag * h * h * body.acceleration;
+        if (turn != Vec3(0)) body.orientation = rotateByAngularVelocity(body.orientation, turn, h);
+    }
+}
+
+}  // namespace stepwise
