@@ -57,6 +57,7 @@ struct App {
     Drag drag = Drag::None;
     int mouseX = 0;
     int mouseY = 0;
+    bool pointerInside = false;  // the pointer is in the window (GLUT reports entering and leaving)
 
     Clock::time_point lastFrame = Clock::now();
     Clock::time_point messageShown = Clock::now();
@@ -229,6 +230,9 @@ void onDisplay() {
     app->lastFrame = now;
     app->simulation->advanceFrame(frame);
     if (app->drag == Drag::Grab) app->simulation->aimGrab(mouseRay(app->mouseX, app->mouseY).direction);
+    // Bodies move under a still cursor: pick again every frame, so the
+    // outline is always on the body under the cursor now.
+    if (app->pointerInside) describePointer(pickAt(app->mouseX, app->mouseY));
     if (!app->overlay.message.empty() &&
         std::chrono::duration<double>(now - app->messageShown).count() > kMessageSeconds) {
         app->overlay.message.clear();
@@ -284,6 +288,7 @@ void logPick(const std::optional<PickHit>& hit, int x, int y) {
 void onMouse(int button, int state, int x, int y) {
     app->mouseX = x;
     app->mouseY = y;
+    app->pointerInside = true;
     const std::optional<MouseButton> which = mouseButton(button);
     if (!which) return;
     if (state == GLUT_UP) {
@@ -320,7 +325,13 @@ void onMotion(int x, int y) {
 void onPassiveMotion(int x, int y) {
     app->mouseX = x;
     app->mouseY = y;
+    app->pointerInside = true;
     describePointer(pickAt(x, y));
+}
+
+void onEntry(int state) {
+    app->pointerInside = state == GLUT_ENTERED;
+    if (!app->pointerInside) describePointer(std::nullopt);  // a held body stays outlined
 }
 
 // ---- Screenshot mode ------------------------------------------------------
@@ -475,6 +486,7 @@ int runViewer(const cli::ViewOptions& options) {
         glutMouseFunc(onMouse);
         glutMotionFunc(onMotion);
         glutPassiveMotionFunc(onPassiveMotion);
+        glutEntryFunc(onEntry);
         glutTimerFunc(kFrameMilliseconds, onTimer, 0);
         state.lastFrame = Clock::now();
         notify("H: help");
