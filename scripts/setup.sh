@@ -17,7 +17,9 @@ set -euo pipefail
 #   doxygen                   the API reference (`docs` target)
 #   xvfb, xauth               a virtual X display (xvfb-run) for the viewer's screenshot tests
 #                             and for `stepwise view --screenshot` on a machine without a screen
-packages=(cmake ninja-build g++ libglm-dev freeglut3-dev catch2 doxygen xvfb xauth)
+#   xdotool                   moves the mouse and presses keys in that display, so the viewer's
+#                             picking test drives the real window (tests/test_viewer.cpp)
+packages=(cmake ninja-build g++ libglm-dev freeglut3-dev catch2 doxygen xvfb xauth xdotool)
 
 if ! command -v dpkg-query >/dev/null 2>&1; then
     echo "setup: dpkg-query not found: this script installs packages on Debian/Ubuntu only." >&2

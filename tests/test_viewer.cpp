@@ -1,10 +1,13 @@
-// The viewer (src/viewer/, `stepwise view`): its camera and ray maths, its
-// fixed-step clock, and real screenshots drawn under Xvfb, checked pixel by
-// pixel against where the physics puts the bodies. Tag: [viewer].
+// The viewer (src/viewer/, `stepwise view`): its camera, ray, mouse and
+// clock maths; real screenshots drawn under Xvfb, checked pixel by pixel
+// against where the physics puts the bodies; and the real window driven with
+// the mouse by xdotool, its picks and pushes checked against the physics.
+// Tag: [viewer] (the ones under Xvfb also [xvfb], the mouse one [xdotool]).
 //
 // The screenshot tests need xvfb-run (Debian package xvfb, installed by
-// scripts/setup.sh) and a program built with STEPWISE_VIEWER=ON; without
-// either they pass with a WARN saying what was skipped.
+// scripts/setup.sh) and a program built with STEPWISE_VIEWER=ON, and the
+// picking test also xdotool; without them they pass with a WARN saying what
+// was skipped.
 #include <catch2/catch.hpp>
 
 #include <sys/wait.h>
@@ -17,13 +20,18 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include "command_runner.hpp"
 #include "config/scene_loader.hpp"
 #include "viewer/camera.hpp"
+#include "dynamics/inertia.hpp"
+#include "test_support.hpp"
 #include "viewer/fixed_step_clock.hpp"
+#include "viewer/mouse_controls.hpp"
+#include "viewer/mouse_force.hpp"
 #include "viewer/picking.hpp"
 
 using Catch::Matchers::Contains;
@@ -40,20 +48,21 @@ using stepwise::test::shell;
 
 std::string cli() { return std::string("'") + STEPWISE_CLI_PATH + "'"; }
 
-/// Runs `stepwise view ARGS` in a virtual X display. LeakSanitizer (in the
-/// asan preset) is told to ignore leaks inside Mesa's driver, listed in
-/// src/viewer/lsan_suppressions.txt; leaks in Stepwise's own code still fail.
+/// Runs @p command (`stepwise view …`, or a script that starts it) in a
+/// virtual X display. LeakSanitizer (in the asan preset) is told to ignore
+/// leaks inside Mesa's driver, listed in src/viewer/lsan_suppressions.txt;
+/// leaks in Stepwise's own code still fail.
 ///
 /// `xvfb-run -a` picks the first free display number, but two started at
 /// the same moment (CTest runs tests in parallel) can pick the same one, and
 /// the loser's server fails to start. That is retried, a few times, after a
 /// pause; any other failure is returned as it is.
-Result viewUnderXvfb(const std::string& args) {
+Result underXvfb(const std::string& command) {
     Result result;
     for (int attempt = 0; attempt < 4; ++attempt) {
         if (attempt > 0) ::usleep(static_cast<useconds_t>(300000 + 400000 * attempt + (::getpid() % 7) * 50000));
         result = shell("LSAN_OPTIONS=print_suppressions=0:suppressions='" + kSourceDir +
-                       "/src/viewer/lsan_suppressions.txt' xvfb-run -a " + cli() + " view " + args);
+                       "/src/viewer/lsan_suppressions.txt' xvfb-run -a " + command);
         const bool serverClash = result.exitCode != 0 &&
                                  (result.output.find("Xvfb failed to start") != std::string::npos ||
                                   result.output.find("already active") != std::string::npos ||
@@ -63,6 +72,9 @@ Result viewUnderXvfb(const std::string& args) {
     }
     return result;
 }
+
+/// Runs `stepwise view ARGS` in a virtual X display (see underXvfb()).
+Result viewUnderXvfb(const std::string& args) { return underXvfb(cli() + " view " + args); }
 
 /// True when the screenshot tests can run here; otherwise WARNs why not.
 bool canTakeScreenshots() {
@@ -84,6 +96,19 @@ struct TempFile {
         : path(std::filesystem::temp_directory_path() /
                ("stepwise-test-" + std::to_string(::getpid()) + "-" + name)) {}
     ~TempFile() { std::filesystem::remove(path); }
+    std::string quoted() const { return "'" + path.string() + "'"; }
+};
+
+/// A fresh directory under the temporary directory, removed with everything in it.
+struct TempDir {
+    std::filesystem::path path;
+    explicit TempDir(const std::string& name)
+        : path(std::filesystem::temp_directory_path() /
+               ("stepwise-test-" + std::to_string(::getpid()) + "-" + name)) {
+        std::filesystem::remove_all(path);
+        std::filesystem::create_directories(path);
+    }
+    ~TempDir() { std::filesystem::remove_all(path); }
     std::string quoted() const { return "'" + path.string() + "'"; }
 };
 
@@ -271,6 +296,258 @@ TEST_CASE("Ray casts hit spheres and turned boxes where the geometry says", "[vi
     CHECK(hit->point.y == Approx(4.5));
 }
 
+TEST_CASE("The ray through a cursor pixel meets a sphere, a turned box and a plane at the point drawn there",
+          "[viewer]") {
+    // Each shape gets a point on its camera-facing side; the ray through the
+    // pixel that point is drawn at must enter the shape exactly there.
+    OrbitCamera camera;
+    camera.target = Vec3(0.2, 0.5, -0.4);
+    camera.distance = 9;
+    camera.yaw = Real(-0.7);
+    camera.pitch = Real(0.45);
+    const int width = 640, height = 400;
+    const Vec3 eye = camera.eye();
+    const Mat4 view = camera.viewMatrix();
+    const Vec3 cameraRight(view[0][0], view[1][0], view[2][0]);
+    const Vec3 cameraUp(view[0][1], view[1][1], view[2][1]);
+    auto rayAt = [&](const Vec3& p) {
+        const Vec3 pixel = camera.project(p, width, height);
+        return camera.rayThroughPixel(pixel.x, pixel.y, width, height);
+    };
+
+    SECTION("sphere: the nearer root of the quadratic") {
+        const Vec3 centre(0.5, 1, -0.3);
+        const Real radius = Real(0.7);
+        // Off the centre, to the right of it and above, still facing the eye.
+        const Vec3 normal = glm::normalize(glm::normalize(eye - centre) + Real(0.6) * cameraRight + Real(0.3) * cameraUp);
+        REQUIRE(glm::dot(normal, eye - centre) > 0);
+        const Vec3 surface = centre + radius * normal;
+        const Ray ray = rayAt(surface);
+        const std::optional<Real> s = raySphere(ray, centre, radius);
+        REQUIRE(s.has_value());
+        CHECK(glm::length(ray.origin + *s * ray.direction - surface) < 1e-9);
+        // The ray enters there and leaves on the far side: the far point is not the hit.
+        CHECK(*s < glm::length(centre - ray.origin));
+    }
+    SECTION("oriented box: the entry point of the slab test, on the face turned to the eye") {
+        const Vec3 centre(-0.6, 0.4, 0.8);
+        const Quat turn = glm::angleAxis(Real(0.5), glm::normalize(Vec3(1, 1, 0)));
+        const Vec3 half(0.5, 0.3, 0.8);
+        // The face whose outward normal looks most towards the eye, and a point off its centre.
+        int axis = 0;
+        Real sign = 1, best = -2;
+        for (int i = 0; i < 3; ++i) {
+            for (Real side : {Real(-1), Real(1)}) {
+                Vec3 local(0);
+                local[i] = side;
+                const Real facing = glm::dot(glm::normalize(turn * local), glm::normalize(eye - centre));
+                if (facing > best) {
+                    best = facing;
+                    axis = i;
+                    sign = side;
+                }
+            }
+        }
+        Vec3 local(0);
+        local[axis] = sign * half[axis];
+        local[(axis + 1) % 3] = Real(0.4) * half[(axis + 1) % 3];
+        local[(axis + 2) % 3] = Real(-0.7) * half[(axis + 2) % 3];
+        const Vec3 onFace = centre + turn * local;
+        const Ray ray = rayAt(onFace);
+        const std::optional<Real> s = rayBox(ray, centre, turn, half);
+        REQUIRE(s.has_value());
+        CHECK(glm::length(ray.origin + *s * ray.direction - onFace) < 1e-9);
+        // A pixel beside the box: its ray passes farther from the centre than
+        // the box's corners are, so the slab test must find no hit.
+        const Ray beside = rayAt(centre + Real(2.5) * glm::length(half) * cameraRight);
+        const Vec3 toCentre = centre - beside.origin;
+        REQUIRE(glm::length(toCentre - glm::dot(toCentre, beside.direction) * beside.direction) > glm::length(half));
+        CHECK_FALSE(rayBox(beside, centre, turn, half).has_value());
+    }
+    SECTION("plane: s = n·(p0 − o) / n·d") {
+        const Vec3 onFloor(1.3, -1, 2.1);
+        const Ray ray = rayAt(onFloor);
+        const std::optional<Real> s = rayPlane(ray, Vec3(0, -1, 0), Vec3(0, 1, 0));
+        REQUIRE(s.has_value());
+        CHECK(glm::length(ray.origin + *s * ray.direction - onFloor) < 1e-9);
+        // Seen from below the plane counts too (the floor is drawn two-sided) ...
+        CHECK(rayPlane({Vec3(0, -3, 0), Vec3(0, 1, 0)}, Vec3(0, -1, 0), Vec3(0, 1, 0)) == Approx(2));
+        // ... but not a plane behind the ray's start, nor one the ray runs along.
+        CHECK_FALSE(rayPlane({Vec3(0, -3, 0), Vec3(0, -1, 0)}, Vec3(0, -1, 0), Vec3(0, 1, 0)).has_value());
+        CHECK_FALSE(rayPlane({Vec3(0, 2, 0), Vec3(1, 0, 0)}, Vec3(0, -1, 0), Vec3(0, 1, 0)).has_value());
+    }
+}
+
+TEST_CASE("Picking takes the nearest hit along the cursor's ray, and the floor hides what is below it", "[viewer]") {
+    OrbitCamera camera;
+    camera.distance = 12;
+    const int width = 640, height = 400;
+    const Vec3 towardsEye = glm::normalize(camera.eye() - camera.target);
+
+    Scene scene;
+    DynamicObject front = test::sphere("front", camera.target + Real(2) * towardsEye, Vec3(0), Real(0.5));
+    DynamicObject back = test::sphere("back", camera.target - Real(2) * towardsEye, Vec3(0), Real(0.5));
+    DynamicObject buried = test::sphere("buried", Vec3(4, -3, 0), Vec3(0), Real(0.5));
+    KinematicsObject slab;
+    slab.name = "slab";
+    slab.shape = Shape::Box;
+    slab.position = Vec3(-4, 1, 0);
+    slab.scale = Vec3(2, 0.4, 2);
+    scene.dynamics = {back, front, buried};  // the farther one first: the order must not matter
+    scene.kinematics = {slab};
+    scene.planes = {test::ground("floor")};
+    const World world(scene);
+    auto pickAtPointOf = [&](const Vec3& p) {
+        const Vec3 pixel = camera.project(p, width, height);
+        return pickBody(world, camera.rayThroughPixel(pixel.x, pixel.y, width, height));
+    };
+
+    // Front and back lie on one line of sight: the front one is picked, at its near surface.
+    const std::optional<PickHit> hit = pickAtPointOf(world.dynamics()[0].position);
+    REQUIRE(hit.has_value());
+    CHECK(hit->kind == BodyKind::Dynamic);
+    CHECK(hit->index == 1);
+    CHECK(glm::length(hit->point - (world.dynamics()[1].position + Real(0.5) * towardsEye)) < 1e-9);
+
+    // A kinematic body is picked (to be named; the viewer does not push it).
+    const std::optional<PickHit> onSlab = pickAtPointOf(slab.position + Vec3(0, 0.2, 0));
+    REQUIRE(onSlab.has_value());
+    CHECK(onSlab->kind == BodyKind::Kinematic);
+    CHECK(onSlab->point.y == Approx(1.2));
+
+    // The ball under the floor is behind the floor from the eye: the floor is hit, at y = 0.
+    const std::optional<PickHit> onFloor = pickAtPointOf(world.dynamics()[2].position);
+    REQUIRE(onFloor.has_value());
+    CHECK(onFloor->kind == BodyKind::Plane);
+    CHECK(onFloor->point.y == Approx(0).margin(1e-9));
+
+    // Straight up into the sky nothing is hit.
+    CHECK_FALSE(pickBody(world, Ray{camera.eye(), Vec3(0, 1, 0)}).has_value());
+}
+
+TEST_CASE("A push acts at the picked point: the body moves along the ray and turns about r x F", "[viewer]") {
+    // A ball of 2 kg and radius 1 m at the camera's target, no gravity: the
+    // grab's acceleration is 20 m/s^2 and I = 2/5 m R^2 = 0.8 kg m^2.
+    const Real mass = 2, radius = 1, h = Real(1) / 60;
+    const Vec3 noGravity(0);
+    const Real inertia = Real(0.4) * mass * radius * radius;
+    OrbitCamera camera;
+    camera.distance = 6;
+    const int width = 640, height = 400;
+    const Mat4 view = camera.viewMatrix();
+    const Vec3 cameraRight(view[0][0], view[1][0], view[2][0]);
+    const Vec3 cameraUp(view[0][1], view[1][1], view[2][1]);
+
+    auto pushOnce = [&](Real pixelsRightOfCentre, bool pull) {
+        DynamicObject ball = test::sphere("ball", camera.target, Vec3(0), radius, mass);
+        initialiseMassProperties(ball);
+        const Ray ray = camera.rayThroughPixel(Real(width) / 2 + pixelsRightOfCentre, Real(height) / 2, width, height);
+        const std::optional<Real> s = raySphere(ray, ball.position, radius);
+        REQUIRE(s.has_value());
+        const Vec3 hit = ray.origin + *s * ray.direction;
+        const Grab grab = grabAt(ball, 0, hit, ray.direction, pull);
+        CHECK(glm::length(grabPoint(ball, grab) - hit) < 1e-12);
+        applyGrab(ball, grab, noGravity, h);
+
+        // Linear: dv = F h / m = 20 m/s^2 * h along the ray (against it for a pull).
+        const Vec3 force = (pull ? -1 : 1) * mass * Real(20) * ray.direction;
+        CHECK(glm::length(ball.velocity - force * h / mass) < 1e-12);
+        // Angular: dL = r x F h, and for a ball w = L / I about any axis.
+        const Vec3 r = hit - ball.position;
+        CHECK(glm::length(ball.angularVelocity - glm::cross(r, force) * h / inertia) < 1e-12);
+        return ball;
+    };
+
+    SECTION("through the centre it only moves") {
+        const DynamicObject ball = pushOnce(0, false);
+        CHECK(glm::length(ball.angularVelocity) < 1e-9);
+        CHECK(glm::dot(ball.velocity, camera.target - camera.eye()) > 0);  // away from the eye
+    }
+    SECTION("right of the centre it turns about the camera's up axis, its right side going away") {
+        const DynamicObject ball = pushOnce(60, false);
+        CHECK(glm::dot(ball.angularVelocity, cameraUp) > 0);
+        CHECK(std::abs(glm::dot(glm::normalize(ball.angularVelocity), cameraUp)) > 0.99);
+        // The pushed point gains more speed along the push than the centre:
+        // an off-centre push spends part of the impulse on turning, not less on the point.
+        const Vec3 rightSide = ball.position + radius * cameraRight;
+        CHECK(glm::dot(velocityAt(ball, rightSide), camera.target - camera.eye()) >
+              glm::dot(ball.velocity, camera.target - camera.eye()));
+    }
+    SECTION("left of the centre, or pulled, it turns the other way") {
+        CHECK(glm::dot(pushOnce(-60, false).angularVelocity, cameraUp) < 0);
+        const DynamicObject pulled = pushOnce(60, true);
+        CHECK(glm::dot(pulled.angularVelocity, cameraUp) < 0);
+        CHECK(glm::dot(pulled.velocity, camera.target - camera.eye()) < 0);  // towards the eye
+    }
+    SECTION("the held point turns with the body; with gravity the force is 2 m |g|") {
+        DynamicObject ball = test::sphere("ball", Vec3(0), Vec3(0), radius, mass);
+        const Grab grab = grabAt(ball, 0, Vec3(radius, 0, 0), Vec3(0, 0, -1), false);
+        ball.orientation = glm::angleAxis(kPi / 2, Vec3(0, 1, 0));  // a quarter turn about +y takes +x to -z
+        ball.position = Vec3(0, 5, 0);
+        CHECK(glm::length(grabPoint(ball, grab) - Vec3(0, 5, -radius)) < 1e-12);
+        CHECK(grabAcceleration(Vec3(0, -9.81, 0)) == Approx(2 * 9.81));
+        CHECK(glm::length(grabForce(ball, grab, Vec3(0, -9.81, 0)) - Vec3(0, 0, -mass * 2 * 9.81)) < 1e-12);
+    }
+}
+
+TEST_CASE("Mouse drags move the camera as their formulas say", "[viewer]") {
+    OrbitCamera start;
+    start.target = Vec3(1, 2, 3);
+    start.distance = 8;
+    start.yaw = Real(0.3);
+    start.pitch = Real(0.2);
+    const int width = 800, height = 500;
+
+    SECTION("a button press picks the drag: grab on a dynamic body, else orbit, zoom or pan") {
+        const Modifiers none, shift{true, false}, ctrl{false, true};
+        CHECK(dragForPress(MouseButton::Left, none, true) == Drag::Grab);
+        CHECK(dragForPress(MouseButton::Right, none, true) == Drag::Grab);
+        CHECK(dragForPress(MouseButton::Left, none, false) == Drag::Orbit);
+        CHECK(dragForPress(MouseButton::Right, none, false) == Drag::Zoom);
+        CHECK(dragForPress(MouseButton::Middle, none, true) == Drag::Pan);
+        CHECK(dragForPress(MouseButton::Left, shift, true) == Drag::Pan);
+        CHECK(dragForPress(MouseButton::Left, ctrl, true) == Drag::Zoom);
+        CHECK(dragForPress(MouseButton::WheelUp, none, true) == Drag::None);
+    }
+    SECTION("orbit: the angles change by 0.008 rad per pixel; target and distance stay") {
+        OrbitCamera camera = start;
+        dragCamera(camera, Drag::Orbit, 100, -50, height);
+        CHECK(camera.yaw == Approx(0.3 - 0.8));
+        CHECK(camera.pitch == Approx(0.2 - 0.4));
+        CHECK(glm::length(camera.eye() - camera.target) == Approx(8));
+        CHECK(glm::length(camera.target - start.target) == 0);
+        // Dragging far down stops short of looking straight down (the view would flip).
+        dragCamera(camera, Drag::Orbit, 0, 10000, height);
+        CHECK(camera.pitch == Approx(1.5));
+    }
+    SECTION("zoom: the distance is multiplied by exp(0.01 dy), or 0.9 per wheel click; the eye stays on its line") {
+        OrbitCamera camera = start;
+        dragCamera(camera, Drag::Zoom, 37, 30, height);  // sideways motion does not zoom
+        CHECK(camera.distance == Approx(8 * std::exp(0.3)));
+        const Vec3 line = glm::normalize(start.eye() - start.target);
+        CHECK(glm::length(glm::normalize(camera.eye() - camera.target) - line) < 1e-12);
+        camera = start;
+        wheelZoom(camera, MouseButton::WheelUp);
+        CHECK(camera.distance == Approx(7.2));
+        wheelZoom(camera, MouseButton::WheelDown);
+        CHECK(camera.distance == Approx(8));
+    }
+    SECTION("pan: the scene at the target's depth follows the cursor pixel for pixel") {
+        OrbitCamera camera = start;
+        const Vec3 before = camera.project(start.target, width, height);
+        dragCamera(camera, Drag::Pan, 40, -25, height);
+        const Vec3 after = camera.project(start.target, width, height);
+        CHECK(after.x - before.x == Approx(40).margin(1e-6));
+        CHECK(after.y - before.y == Approx(-25).margin(1e-6));
+        CHECK(glm::length((camera.eye() - camera.target) - (start.eye() - start.target)) < 1e-12);
+    }
+    SECTION("a grab leaves the camera alone") {
+        OrbitCamera camera = start;
+        dragCamera(camera, Drag::Grab, 40, 40, height);
+        CHECK(glm::length(camera.eye() - start.eye()) == 0);
+    }
+}
+
 TEST_CASE("The fixed-step clock turns any frame rate into the same whole steps", "[viewer]") {
     const double h = 1.0 / 240;
     SECTION("60 frames a second for 2 s give 480 steps of 1/240 s") {
@@ -327,6 +604,7 @@ TEST_CASE("stepwise view rejects malformed options with exit code 2", "[viewer]"
     CHECK_THAT(shell(cli() + " view --screenshot x.png --size 10x10").output, Contains("--size expects"));
     CHECK(shell(cli() + " view --screenshot x.png --at -1").exitCode == 2);
     CHECK(shell(cli() + " view --zoom 3").exitCode == 2);
+    CHECK_THAT(shell(cli() + " view --screenshot x.png --log-events y.log").output, Contains("--log-events"));
     CHECK(shell(cli() + " view /no/such.scene").exitCode == 2);
 }
 
@@ -410,4 +688,153 @@ TEST_CASE("A screenshot with the overlays shows the heads-up display's text", "[
         }
     }
     CHECK(white > 200);
+}
+
+TEST_CASE("In the window, the mouse picks, highlights, pushes and pulls the body under the cursor",
+          "[viewer][xvfb][xdotool]") {
+    // The real window under Xvfb, driven by xdotool (Debian package xdotool,
+    // installed by scripts/setup.sh): point at the ball right of its centre,
+    // take a picture (P) with and without the pointer on it, hold the left
+    // button for exactly three steps (paused, N steps once), then the right
+    // button for two. The viewer's --log-events file says what it picked and
+    // pushed; every number is checked against the camera and the physics.
+    if (!canTakeScreenshots()) return;
+    if (std::system("command -v xdotool >/dev/null 2>&1") != 0) {
+        WARN("skipped: xdotool is not installed (Debian package xdotool; scripts/setup.sh installs it)");
+        return;
+    }
+    const std::string scene = kSourceDir + "/config/viewer_pick.scene";
+    const int width = 320, height = 240;
+    const TempDir dir("viewer-pick");
+
+    // The ball (R = 1 m, 2 kg, at the origin, no gravity) and the camera the viewer starts with.
+    const World world(loadSceneFile(scene));
+    REQUIRE(world.dynamics().size() == 1);
+    const DynamicObject& ball = world.dynamics()[0];
+    const Real radius = ball.radius, mass = ball.mass, h = world.settings().timeStep;
+    REQUIRE(glm::length(world.settings().gravity) == 0);
+    const OrbitCamera camera = cameraForScene(world);
+    const Mat4 view = camera.viewMatrix();
+    const Vec3 cameraRight(view[0][0], view[1][0], view[2][0]);
+    const Vec3 cameraUp(view[0][1], view[1][1], view[2][1]);
+    const Vec3 aim = camera.project(ball.position + Real(0.5) * radius * cameraRight, width, height);
+    const int px = static_cast<int>(aim.x), py = static_cast<int>(aim.y);
+
+    const std::string script =
+        "cd " + dir.quoted() + " || exit 3\n" + cli() + " view '" + scene + "' --size " + std::to_string(width) +
+        "x" + std::to_string(height) + " --log-events events.log &\n" +
+        "viewer=$!\n"
+        "window=$(timeout 60 xdotool search --sync --onlyvisible --name 'stepwise view' | head -n 1)\n"
+        "if [ -z \"$window\" ]; then echo 'test: no viewer window'; kill $viewer; exit 3; fi\n"
+        // O hides the text, Space pauses, P takes a picture with the pointer off the ball.
+        "xdotool mousemove --window $window 2 2 key o space p\n"
+        "xdotool mousemove --window $window " + std::to_string(px) + " " + std::to_string(py) + " key p\n" +
+        "xdotool mousedown 1 key n key n key n mouseup 1\n"
+        "xdotool mousedown 3 key n key n mouseup 3\n"
+        "xdotool key Escape\n"
+        "wait $viewer\n";
+    {
+        std::ofstream out(dir.path / "drive.sh");
+        out << script;
+    }
+    const Result run = underXvfb("timeout 180 bash '" + (dir.path / "drive.sh").string() + "'");
+    INFO(run.output);
+    REQUIRE(run.exitCode == 0);
+
+    // The log, line by line.
+    std::vector<std::vector<std::string>> events;
+    for (const std::string& line : lines(dir.path / "events.log")) {
+        std::istringstream words(line);
+        events.emplace_back(std::istream_iterator<std::string>(words), std::istream_iterator<std::string>());
+    }
+    auto all = [&](const std::string& kind) {
+        std::vector<std::vector<std::string>> found;
+        for (const auto& e : events) {
+            if (!e.empty() && e[0] == kind) found.push_back(e);
+        }
+        return found;
+    };
+    auto vecAt = [](const std::vector<std::string>& e, std::size_t i) {
+        REQUIRE(e.size() >= i + 3);
+        return Vec3(std::stod(e[i]), std::stod(e[i + 1]), std::stod(e[i + 2]));
+    };
+    const auto picks = all("pick"), pushes = all("push"), pulls = all("pull"), releases = all("release"),
+               pictures = all("picture"), highlights = all("highlight");
+    REQUIRE(picks.size() == 2);
+    REQUIRE(releases.size() == 2);
+    REQUIRE(pictures.size() == 2);
+    CHECK(pushes.size() == 3);  // one per N while the left button was down
+    CHECK(pulls.size() == 2);
+    REQUIRE_FALSE(highlights.empty());
+    CHECK(highlights[0][1] == "ball");
+
+    // The ray through the pixel's centre, and where it meets the ball: the
+    // nearer root of |o + s d - c|^2 = R^2, solved here on its own.
+    const Ray ray = camera.rayThroughPixel(Real(px) + Real(0.5), Real(py) + Real(0.5), width, height);
+    auto entry = [&](const Vec3& centre) {
+        const Vec3 m = ray.origin - centre;
+        const Real b = glm::dot(m, ray.direction), c = glm::dot(m, m) - radius * radius;
+        REQUIRE(b * b - c > 0);
+        return ray.origin + (-b - std::sqrt(b * b - c)) * ray.direction;
+    };
+    const Real a = 20;  // m/s^2, the grab's acceleration without gravity
+    const Vec3 force = mass * a * ray.direction;
+
+    // Left button: the ball at rest at the origin, hit right of its centre.
+    for (const auto& pick : picks) {
+        REQUIRE(pick.size() == 10);  // pick NAME pixel PX PY hit X Y Z KIND
+        CHECK(pick[1] == "ball");
+        CHECK(pick[3] == std::to_string(px));
+        CHECK(pick[4] == std::to_string(py));
+        CHECK(pick[9] == "dynamic");
+    }
+    const Vec3 hit = vecAt(picks[0], 6);
+    CHECK(glm::length(hit - entry(ball.position)) < 1e-6);
+    Vec3 centre = ball.position, velocity(0);
+    for (const auto& push : pushes) {
+        REQUIRE(push.size() == 12);  // push NAME step N at X Y Z force FX FY FZ
+        // The force is F = m a along the ray, at a point on the ball's surface
+        // (the held point turns with the ball, so it stays there).
+        CHECK(glm::length(vecAt(push, 9) - force) < 1e-6 * glm::length(force));
+        CHECK(glm::length(vecAt(push, 5) - centre) == Approx(radius).epsilon(1e-6));
+        velocity += force * h / mass;  // symplectic Euler, no other force: v += (F/m) h, then x += v h
+        centre += velocity * h;
+    }
+    CHECK(glm::length(vecAt(pushes[0], 5) - hit) < 1e-6);
+    const Vec3 v1 = vecAt(releases[0], 3), w1 = vecAt(releases[0], 7);  // release NAME v VX VY VZ w WX WY WZ
+    CHECK(glm::length(v1 - Real(3) * a * h * ray.direction) < 1e-6);  // 3 steps of a h = 1/3 m/s
+    // It turns about r x F: for a ball the axis stays put while r turns
+    // towards F, so only the size drifts (a few per cent over three steps).
+    const Vec3 torqueAxis = glm::normalize(glm::cross(hit - ball.position, force));
+    CHECK(glm::dot(glm::normalize(w1), torqueAxis) > 0.9999);
+    const Real inertia = Real(0.4) * mass * radius * radius;
+    CHECK(glm::length(w1) == Approx(3 * h * glm::length(glm::cross(hit - ball.position, force)) / inertia)
+                                 .epsilon(0.05));
+    CHECK(glm::dot(w1, cameraUp) > 0);  // right of the centre, pushed away: its right side goes away
+
+    // Right button at the same pixel: the ball has moved on a little; the pull is against the ray.
+    const Vec3 pullHit = vecAt(picks[1], 6);
+    CHECK(glm::length(pullHit - entry(centre)) < 1e-6);
+    for (const auto& pull : pulls) CHECK(glm::length(vecAt(pull, 9) + force) < 1e-6 * glm::length(force));
+    CHECK(glm::length(vecAt(releases[1], 3) - a * h * ray.direction) < 1e-6);  // 3 - 2 steps' worth
+
+    // The pictures: no yellow outline with the pointer off the ball, a clear one on it.
+    auto yellowPixels = [&](const std::string& name) {
+        const Image image = decodePng(readBytes(dir.path / name));
+        REQUIRE(image.width == width);
+        REQUIRE(image.height == height);
+        int count = 0;
+        for (int y = 0; y < height; ++y) {
+            for (int x = 0; x < width; ++x) {
+                const std::uint8_t* p = image.at(x, y);
+                if (p[0] > 200 && p[1] > 200 && p[2] < 100) ++count;
+            }
+        }
+        return count;
+    };
+    const int offBall = yellowPixels(pictures[0][1]);
+    const int onBall = yellowPixels(pictures[1][1]);
+    INFO("yellow pixels: " << offBall << " with the pointer off the ball, " << onBall << " on it");
+    CHECK(offBall < 10);
+    CHECK(onBall > 300);
 }

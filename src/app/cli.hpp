@@ -46,6 +46,7 @@ struct ViewOptions {
     int height = 600;                          ///< --size WxH: window height, pixels.
     std::optional<std::string> dumpStatePath;  ///< --dump-state PATH: the state drawn, as `run --csv` writes it.
     std::string keys;                          ///< --keys KEYS: keys pressed before the screenshot (e.g. "CV").
+    std::optional<std::string> logEventsPath;  ///< --log-events PATH: one line per pick, push and release (window only).
 };
 
 /// @brief Parses the arguments after `view`. @throws UsageError.

@@ -22,8 +22,9 @@ const char* usageText() {
            "                    qw,qx,qy,qz,wx,wy,wz, one row per object per sample,\n"
            "                    starting with the initial state at time 0\n"
            "      --every K     write a CSV sample every K steps (default 1)\n"
-           "  stepwise view [FILE] [--size WxH]\n"
-           "      Open a window onto the scene (H in the window lists the controls).\n"
+           "  stepwise view [FILE] [--size WxH] [--log-events PATH]\n"
+           "      Open a window onto the scene (H in the window lists the controls);\n"
+           "      --log-events writes a line per mouse pick, push and release to PATH.\n"
            "  stepwise view [FILE] --screenshot PATH [--at T] [--size WxH] [--keys KEYS]\n"
            "                [--dump-state PATH]\n"
            "      Simulate to T seconds (default 0) as 'run --duration T' does, draw one\n"
@@ -103,6 +104,8 @@ ViewOptions parseViewOptions(const std::vector<std::string>& args, const std::st
             options.dumpStatePath = value();
         } else if (arg == "--keys") {
             options.keys = value();
+        } else if (arg == "--log-events") {
+            options.logEventsPath = value();
         } else if (arg.size() > 1 && arg[0] == '-') {
             throw UsageError("unknown option '" + arg + "' for 'view'");
         } else if (sceneGiven) {
@@ -114,6 +117,9 @@ ViewOptions parseViewOptions(const std::vector<std::string>& args, const std::st
     }
     if (!options.screenshotPath && (atGiven || options.dumpStatePath || !options.keys.empty())) {
         throw UsageError("--at, --dump-state and --keys go with --screenshot PATH");
+    }
+    if (options.screenshotPath && options.logEventsPath) {
+        throw UsageError("--log-events records what the mouse does in the window; a --screenshot has no mouse");
     }
     if (!sceneGiven) options.scenePath = defaultScene;
     return options;

@@ -104,6 +104,7 @@ std::vector<std::string> helpLines() {
         "  I       islands and sleeping bodies: not available yet (sleeping arrives with issue 4)",
         "  F       frame the scene again (reset the camera)",
         "  O       hide / show the on-screen text",
+        "  P       save a picture of the window (stepwise-SCENE-stepN.png, current directory)",
         "  Esc, Q  quit",
         "Kinematic bodies wear diagonal stripes; joints are not drawn yet (they arrive with the solver issue).",
     };

@@ -9,7 +9,6 @@
 
 #include "config/scene_loader.hpp"
 #include "core/errors.hpp"
-#include "dynamics/inertia.hpp"
 #include "io/trajectory_csv.hpp"
 
 namespace stepwise::viewer {
@@ -74,7 +73,12 @@ void Simulation::takeStep() {
         // The held point's force, as an impulse F·h given just before the
         // step: the velocity change a force F makes over one step.
         DynamicObject& body = world_->dynamics()[grab_->body];
-        applyImpulseAt(body, grabForce() * world_->settings().timeStep, grabPoint());
+        if (log_) {
+            log_->line("%s %s step %llu at %s force %s", grab_->pull ? "pull" : "push", body.name.c_str(),
+                       static_cast<unsigned long long>(world_->stepCount() + 1),
+                       EventLog::vec(grabPoint()).c_str(), EventLog::vec(grabForce()).c_str());
+        }
+        applyGrab(body, *grab_, world_->settings().gravity, world_->settings().timeStep);
     }
     try {
         world_->step();
@@ -222,29 +226,28 @@ std::string Simulation::describeStage(Stage stage) const {
 }
 
 void Simulation::grab(std::uint32_t body, const Vec3& point, const Vec3& rayDirection, bool pull) {
-    const DynamicObject& b = world_->dynamics()[body];
-    grab_ = Grab{body, glm::conjugate(b.orientation) * (point - b.position), Vec3(0), pull};
-    aimGrab(rayDirection);
+    grab_ = grabAt(world_->dynamics()[body], body, point, rayDirection, pull);
 }
 
 void Simulation::aimGrab(const Vec3& rayDirection) {
-    if (grab_) grab_->direction = grab_->pull ? -rayDirection : rayDirection;
+    if (grab_) viewer::aimGrab(*grab_, rayDirection);
+}
+
+void Simulation::release() {
+    if (grab_ && log_) {
+        const DynamicObject& b = world_->dynamics()[grab_->body];
+        log_->line("release %s v %s w %s", b.name.c_str(), EventLog::vec(b.velocity).c_str(),
+                   EventLog::vec(b.angularVelocity).c_str());
+    }
+    grab_.reset();
 }
 
 Vec3 Simulation::grabPoint() const {
-    if (!grab_) return Vec3(0);
-    const DynamicObject& b = world_->dynamics()[grab_->body];
-    return b.position + b.orientation * grab_->localPoint;
-}
-
-Real Simulation::pickAcceleration() const {
-    const Real g = glm::length(world_->settings().gravity);
-    return g > 0 ? 2 * g : Real(20);
+    return grab_ ? viewer::grabPoint(world_->dynamics()[grab_->body], *grab_) : Vec3(0);
 }
 
 Vec3 Simulation::grabForce() const {
-    if (!grab_) return Vec3(0);
-    return world_->dynamics()[grab_->body].mass * pickAcceleration() * grab_->direction;
+    return grab_ ? viewer::grabForce(world_->dynamics()[grab_->body], *grab_, world_->settings().gravity) : Vec3(0);
 }
 
 void Simulation::dumpState(const std::string& path) const {

@@ -13,18 +13,12 @@
 #include <string>
 #include <vector>
 
+#include "viewer/event_log.hpp"
 #include "viewer/fixed_step_clock.hpp"
+#include "viewer/mouse_force.hpp"
 #include "world/world.hpp"
 
 namespace stepwise::viewer {
-
-/// @brief A body held with the mouse: pushed (left button) or pulled (right button) at a point.
-struct Grab {
-    std::uint32_t body = 0;      ///< Index of the dynamic body.
-    Vec3 localPoint{0, 0, 0};    ///< The held point in the body's own frame, m (it turns with the body).
-    Vec3 direction{0, 0, -1};    ///< Unit direction of the force: along the mouse ray to push, against it to pull.
-    bool pull = false;           ///< True for the right button.
-};
 
 /// @brief Where the body poses were before the step the stage walk-through is showing.
 struct PoseSnapshot {
@@ -78,20 +72,22 @@ public:
     /// @brief Body poses before the step the walk-through shows (empty outside the walk-through).
     const PoseSnapshot& poseBeforeStep() const { return before_; }
 
-    /// @brief Starts holding dynamic body @p body at world point @p point.
+    /// @brief Starts holding dynamic body @p body at world point @p point (see mouse_force.hpp).
     void grab(std::uint32_t body, const Vec3& point, const Vec3& rayDirection, bool pull);
     /// @brief Follows the mouse: the force now points along (or against) @p rayDirection.
     void aimGrab(const Vec3& rayDirection);
-    /// @brief Lets go.
-    void release() { grab_.reset(); }
+    /// @brief Lets go; logs the held body's velocity and angular velocity (a `release` line).
+    void release();
     /// @brief The body being held, if any.
     const std::optional<Grab>& grabbed() const { return grab_; }
     /// @brief World-space position of the held point now, m.
     Vec3 grabPoint() const;
-    /// @brief Force applied to the held body, N: mass × pickAcceleration(), along the grab's direction.
+    /// @brief Force applied to the held body, N: mass × grabAcceleration(g), along the grab's direction.
     Vec3 grabForce() const;
-    /// @brief Acceleration a grab gives a body, m/s²: twice the gravity's, or 20 m/s² without gravity.
-    Real pickAcceleration() const;
+
+    /// @brief Sends a `push`/`pull` line for every step a held body is pushed, and a
+    /// `release` line, to @p log (`--log-events`); nullptr: none. The log must outlive the Simulation.
+    void setEventLog(EventLog* log) { log_ = log; }
 
     /// @brief Writes the current state as `stepwise run --csv` writes a sample (header plus one row per object).
     /// @throws std::runtime_error when the file cannot be written.
@@ -119,6 +115,7 @@ private:
     PoseSnapshot before_;
     std::string error_;
     int loads_ = 0;
+    EventLog* log_ = nullptr;
 };
 
 /// @brief The name of the object @p ref points to in @p world.

@@ -9,6 +9,7 @@
 #include <cstdarg>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <memory>
 #include <stdexcept>
 
@@ -21,6 +22,8 @@
 #include "core/errors.hpp"
 #include "viewer/camera.hpp"
 #include "viewer/display_check.hpp"
+#include "viewer/event_log.hpp"
+#include "viewer/mouse_controls.hpp"
 #include "viewer/overlay.hpp"
 #include "viewer/picking.hpp"
 #include "viewer/png_writer.hpp"
@@ -38,14 +41,9 @@ using Clock = std::chrono::steady_clock;
 constexpr unsigned kFrameMilliseconds = 16;
 /// Seconds a notice (reloaded, not available yet, …) stays on screen.
 constexpr double kMessageSeconds = 4.0;
-/// Camera turn per pixel of mouse drag, rad.
-constexpr Real kOrbitPerPixel = Real(0.008);
-/// Zoom factor exponent per pixel of drag and per wheel click.
-constexpr Real kZoomPerPixel = Real(0.01);
-constexpr Real kZoomPerWheelClick = Real(0.9);
-
-/// What a mouse drag does.
-enum class Drag { None, Orbit, Pan, Zoom, Grab };
+/// GLUT's numbers for the X11 wheel "buttons" (freeglut has no names for them).
+constexpr int kGlutWheelUp = 3;
+constexpr int kGlutWheelDown = 4;
 
 /// Everything the GLUT callbacks share. GLUT's callbacks are plain functions
 /// without a user pointer, so the one instance is reached through `app`.
@@ -59,6 +57,7 @@ struct App {
     Drag drag = Drag::None;
     int mouseX = 0;
     int mouseY = 0;
+    bool pointerInside = false;  // the pointer is in the window (GLUT reports entering and leaving)
 
     Clock::time_point lastFrame = Clock::now();
     Clock::time_point messageShown = Clock::now();
@@ -70,6 +69,9 @@ struct App {
     std::string screenshotPath;
     std::string dumpStatePath;
     int exitCode = cli::kExitOk;
+
+    EventLog log;  // --log-events; writes nothing without it
+    std::string highlighted = "none";  // last body named in a "highlight" line
 };
 
 App* app = nullptr;
@@ -92,7 +94,7 @@ void describePointer(const std::optional<PickHit>& hit) {
     if (const std::optional<Grab>& grab = app->simulation->grabbed()) {
         app->overlay.pointed = std::string(grab->pull ? "pulling " : "pushing ") + world.dynamics()[grab->body].name;
         app->overlay.draw.hovered = BodyRef{BodyKind::Dynamic, grab->body};
-    } else if (hit) {
+    } else if (hit && hit->kind != BodyKind::Plane) {
         const BodyRef ref{hit->kind, hit->index};
         app->overlay.pointed = "pointing at " + bodyName(world, ref) +
                                (hit->kind == BodyKind::Kinematic ? " (kinematic: cannot be pushed)" : "");
@@ -101,7 +103,15 @@ void describePointer(const std::optional<PickHit>& hit) {
         app->overlay.pointed.clear();
         app->overlay.draw.hovered.reset();
     }
+    const std::string highlighted =
+        app->overlay.draw.hovered ? bodyName(world, *app->overlay.draw.hovered) : std::string("none");
+    if (highlighted != app->highlighted) {
+        app->highlighted = highlighted;
+        app->log.line("highlight %s", highlighted.c_str());
+    }
 }
+
+void savePicture();  // the P key, below: it draws, so it comes after drawFrame()
 
 /// One key press: shared by the keyboard callback and `--keys`.
 void pressKey(unsigned char key) {
@@ -155,6 +165,10 @@ void pressKey(unsigned char key) {
         case 'F': app->camera = cameraForScene(sim.world()); break;
         case 'o':
         case 'O': app->overlay.hud = !app->overlay.hud; break;
+        case 'p':
+        case 'P':
+            if (!app->screenshot) savePicture();  // a --screenshot is a picture already
+            break;
         default: break;
     }
 }
@@ -165,6 +179,49 @@ void drawFrame(double framesPerSecond) {
     drawOverlay(*app->simulation, app->width, app->height, app->overlay);
 }
 
+/// Draws a frame into the back buffer and writes it to the PNG file @p path,
+/// reading it back before any buffer swap (so the window shows nothing new).
+/// @throws std::runtime_error when the file cannot be written.
+void writeFrame(const std::string& path, double framesPerSecond) {
+    drawFrame(framesPerSecond);
+    glFinish();
+    const int width = app->width;
+    const int height = app->height;
+    std::vector<std::uint8_t> bottomUp(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3);
+    glReadBuffer(GL_BACK);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, width, height, GL_RGB, GL_UNSIGNED_BYTE, bottomUp.data());
+    // OpenGL's rows start at the bottom, PNG's at the top.
+    std::vector<std::uint8_t> topDown(bottomUp.size());
+    const std::size_t row = static_cast<std::size_t>(width) * 3;
+    for (std::size_t y = 0; y < static_cast<std::size_t>(height); ++y) {
+        std::copy_n(bottomUp.begin() + static_cast<std::ptrdiff_t>(y * row), row,
+                    topDown.begin() + static_cast<std::ptrdiff_t>((static_cast<std::size_t>(height) - 1 - y) * row));
+    }
+    writePng(path, width, height, topDown);
+}
+
+/// The P key: a picture of the window as it is now, in the current directory,
+/// named after the scene and the step (`stepwise-NAME-stepN.png`, then
+/// `stepwise-NAME-stepN-2.png`, … so that no earlier picture is overwritten).
+void savePicture() {
+    const Simulation& sim = *app->simulation;
+    const std::string stem = "stepwise-" + std::filesystem::path(sim.scenePath()).stem().string() + "-step" +
+                             std::to_string(sim.world().stepCount());
+    std::string path = stem + ".png";
+    for (int copy = 2; std::filesystem::exists(path); ++copy) path = stem + "-" + std::to_string(copy) + ".png";
+    try {
+        writeFrame(path, app->overlay.framesPerSecond);
+        std::printf("Picture of the window at t = %.6g s written to %s\n", double(sim.world().time()), path.c_str());
+        std::fflush(stdout);
+        app->log.line("picture %s", path.c_str());
+        notify("P: saved " + path);
+    } catch (const std::runtime_error& e) {
+        std::fprintf(stderr, "stepwise view: %s\n", e.what());
+        notify(std::string("P: ") + e.what());
+    }
+}
+
 // ---- Interactive callbacks -------------------------------------------------
 
 void onDisplay() {
@@ -173,6 +230,9 @@ void onDisplay() {
     app->lastFrame = now;
     app->simulation->advanceFrame(frame);
     if (app->drag == Drag::Grab) app->simulation->aimGrab(mouseRay(app->mouseX, app->mouseY).direction);
+    // Bodies move under a still cursor: pick again every frame, so the
+    // outline is always on the body under the cursor now.
+    if (app->pointerInside) describePointer(pickAt(app->mouseX, app->mouseY));
     if (!app->overlay.message.empty() &&
         std::chrono::duration<double>(now - app->messageShown).count() > kMessageSeconds) {
         app->overlay.message.clear();
@@ -202,35 +262,53 @@ void onReshape(int width, int height) {
 
 void onKeyboard(unsigned char key, int, int) { pressKey(key); }
 
+/// GLUT's button code as a MouseButton; nothing for buttons the viewer does not use.
+std::optional<MouseButton> mouseButton(int button) {
+    switch (button) {
+        case GLUT_LEFT_BUTTON: return MouseButton::Left;
+        case GLUT_MIDDLE_BUTTON: return MouseButton::Middle;
+        case GLUT_RIGHT_BUTTON: return MouseButton::Right;
+        case kGlutWheelUp: return MouseButton::WheelUp;
+        case kGlutWheelDown: return MouseButton::WheelDown;
+        default: return std::nullopt;
+    }
+}
+
+/// A "pick" line of the event log for a press at pixel (x, y).
+void logPick(const std::optional<PickHit>& hit, int x, int y) {
+    if (!hit) {
+        app->log.line("pick none pixel %d %d", x, y);
+        return;
+    }
+    static constexpr const char* kKindNames[] = {"dynamic", "kinematic", "plane"};
+    app->log.line("pick %s pixel %d %d hit %s %s", bodyName(app->simulation->world(), {hit->kind, hit->index}).c_str(),
+                  x, y, EventLog::vec(hit->point).c_str(), kKindNames[static_cast<int>(hit->kind)]);
+}
+
 void onMouse(int button, int state, int x, int y) {
     app->mouseX = x;
     app->mouseY = y;
+    app->pointerInside = true;
+    const std::optional<MouseButton> which = mouseButton(button);
+    if (!which) return;
     if (state == GLUT_UP) {
         if (app->drag == Drag::Grab) app->simulation->release();
         app->drag = Drag::None;
         describePointer(pickAt(x, y));
         return;
     }
-    if (button == 3 || button == 4) {  // wheel, as buttons 3 (up) and 4 (down) in X11
-        app->camera.zoom(button == 3 ? kZoomPerWheelClick : 1 / kZoomPerWheelClick);
+    if (*which == MouseButton::WheelUp || *which == MouseButton::WheelDown) {
+        wheelZoom(app->camera, *which);
         return;
     }
-    const int modifiers = glutGetModifiers();
-    if (button == GLUT_MIDDLE_BUTTON || (button == GLUT_LEFT_BUTTON && (modifiers & GLUT_ACTIVE_SHIFT))) {
-        app->drag = Drag::Pan;
-        return;
-    }
-    if (button == GLUT_LEFT_BUTTON && (modifiers & GLUT_ACTIVE_CTRL)) {
-        app->drag = Drag::Zoom;
-        return;
-    }
+    const int glutModifiers = glutGetModifiers();
+    const Modifiers modifiers{(glutModifiers & GLUT_ACTIVE_SHIFT) != 0, (glutModifiers & GLUT_ACTIVE_CTRL) != 0};
     const std::optional<PickHit> hit = pickAt(x, y);
-    if (hit && hit->kind == BodyKind::Dynamic && (button == GLUT_LEFT_BUTTON || button == GLUT_RIGHT_BUTTON)) {
-        app->simulation->grab(hit->index, hit->point, mouseRay(x, y).direction, button == GLUT_RIGHT_BUTTON);
-        app->drag = Drag::Grab;
-        if (app->simulation->clock().paused()) notify("paused: Space resumes, then the push acts");
-    } else {
-        app->drag = button == GLUT_RIGHT_BUTTON ? Drag::Zoom : Drag::Orbit;
+    app->drag = dragForPress(*which, modifiers, hit && hit->kind == BodyKind::Dynamic);
+    logPick(hit, x, y);
+    if (app->drag == Drag::Grab) {
+        app->simulation->grab(hit->index, hit->point, mouseRay(x, y).direction, *which == MouseButton::Right);
+        if (app->simulation->clock().paused()) notify("paused: Space resumes (or N steps), then the push acts");
     }
     describePointer(hit);
 }
@@ -240,19 +318,20 @@ void onMotion(int x, int y) {
     const Real dy = Real(y - app->mouseY);
     app->mouseX = x;
     app->mouseY = y;
-    switch (app->drag) {
-        case Drag::Orbit: app->camera.orbit(-dx * kOrbitPerPixel, dy * kOrbitPerPixel); break;
-        case Drag::Pan: app->camera.pan(-dx / Real(app->height), dy / Real(app->height)); break;
-        case Drag::Zoom: app->camera.zoom(std::exp(dy * kZoomPerPixel)); break;
-        case Drag::Grab: app->simulation->aimGrab(mouseRay(x, y).direction); break;
-        case Drag::None: break;
-    }
+    if (app->drag == Drag::Grab) app->simulation->aimGrab(mouseRay(x, y).direction);
+    else dragCamera(app->camera, app->drag, dx, dy, app->height);
 }
 
 void onPassiveMotion(int x, int y) {
     app->mouseX = x;
     app->mouseY = y;
+    app->pointerInside = true;
     describePointer(pickAt(x, y));
+}
+
+void onEntry(int state) {
+    app->pointerInside = state == GLUT_ENTERED;
+    if (!app->pointerInside) describePointer(std::nullopt);  // a held body stays outlined
 }
 
 // ---- Screenshot mode ------------------------------------------------------
@@ -268,22 +347,8 @@ void onScreenshotDisplay() {
                      width, height, app->width, app->height);
         app->exitCode = cli::kExitUsageError;
     } else {
-        drawFrame(0);
-        glFinish();
-        // Read the frame just drawn from the back buffer, before any swap.
-        std::vector<std::uint8_t> bottomUp(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3);
-        glReadBuffer(GL_BACK);
-        glPixelStorei(GL_PACK_ALIGNMENT, 1);
-        glReadPixels(0, 0, width, height, GL_RGB, GL_UNSIGNED_BYTE, bottomUp.data());
-        // OpenGL's rows start at the bottom, PNG's at the top.
-        std::vector<std::uint8_t> topDown(bottomUp.size());
-        const std::size_t row = static_cast<std::size_t>(width) * 3;
-        for (std::size_t y = 0; y < static_cast<std::size_t>(height); ++y) {
-            std::copy_n(bottomUp.begin() + static_cast<std::ptrdiff_t>(y * row), row,
-                        topDown.begin() + static_cast<std::ptrdiff_t>((static_cast<std::size_t>(height) - 1 - y) * row));
-        }
         try {
-            writePng(app->screenshotPath, width, height, topDown);
+            writeFrame(app->screenshotPath, 0);
             std::printf("Screenshot of %s at t = %.6g s (step %llu), %dx%d, written to %s\n",
                         app->simulation->scenePath().c_str(), double(app->simulation->world().time()),
                         static_cast<unsigned long long>(app->simulation->world().stepCount()), width, height,
@@ -403,6 +468,16 @@ int runViewer(const cli::ViewOptions& options) {
         check.reset();  // freeglut has its own connection now
         glutDisplayFunc(onScreenshotDisplay);
     } else {
+        if (options.logEventsPath) {
+            try {
+                state.log.open(*options.logEventsPath);
+            } catch (const std::runtime_error& e) {
+                std::fprintf(stderr, "stepwise view: %s\n", e.what());
+                app = nullptr;
+                return cli::kExitUsageError;
+            }
+            state.simulation->setEventLog(&state.log);
+        }
         openWindow(("stepwise view " + options.scenePath).c_str());
         check.reset();
         glutDisplayFunc(onDisplay);
@@ -411,6 +486,7 @@ int runViewer(const cli::ViewOptions& options) {
         glutMouseFunc(onMouse);
         glutMotionFunc(onMotion);
         glutPassiveMotionFunc(onPassiveMotion);
+        glutEntryFunc(onEntry);
         glutTimerFunc(kFrameMilliseconds, onTimer, 0);
         state.lastFrame = Clock::now();
         notify("H: help");
