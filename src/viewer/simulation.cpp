@@ -2,6 +2,8 @@
 /// @brief The viewer's World: loading and reloading, fixed steps, the stage walk-through, picking forces.
 #include "viewer/simulation.hpp"
 
+#include "dynamics/islands.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -78,6 +80,7 @@ void Simulation::takeStep() {
                        static_cast<unsigned long long>(world_->stepCount() + 1),
                        EventLog::vec(grabPoint()).c_str(), EventLog::vec(grabForce()).c_str());
         }
+        wakeIsland(world_->dynamics(), grab_->body);  // a sleeping body must feel the push
         applyGrab(body, *grab_, world_->settings().gravity, world_->settings().timeStep);
     }
     try {
