@@ -127,7 +127,11 @@ TEST_CASE("An elastic ball glances off a fixed kinematic sphere with its speed k
     Vec3 normal(0);
     while (world.time() < 3) {
         world.step();
-        if (!world.contacts().empty() && normal == Vec3(0)) normal = world.contacts()[0].normal;
+        // The normal of the contact that pushed (a contact may be found a
+        // step early, still a gap apart, and push nothing in that step).
+        if (!world.contacts().empty() && world.impulses()[0].normalImpulse > 0 && normal == Vec3(0)) {
+            normal = world.contacts()[0].normal;
+        }
     }
     REQUIRE(normal != Vec3(0));
     const Vec3 expected = Vec3(2, 0, 0) - 2 * glm::dot(Vec3(2, 0, 0), normal) * normal;

@@ -41,17 +41,20 @@ inline constexpr Real kDefaultDuration = Real(10);
 inline constexpr int kDefaultImpulseIterations = 10;
 
 /// @brief Default substeps of the sequential-impulse solver. Collision runs
-/// once per step, so eight substeps cost far less than eight steps; they are
-/// what lets the contacts be stiff (see kDefaultContactHertz) and a 20-box
-/// tower stand (measured in tests/test_solver.cpp and bench/).
-inline constexpr int kDefaultSubsteps = 8;
+/// once per step, so sixteen substeps cost far less than sixteen steps; they
+/// are what lets the contacts be stiff (see kDefaultContactHertz), a 20-box
+/// tower stand and a 100:1 mass ratio hold (tests/test_solver.cpp; measured
+/// worst box drift in 10 s: tower 3 mm, 100 kg on 1 kg 1.5 mm; with 12
+/// substeps at 180 Hz 6 mm and 15 mm, with 8 at 120 Hz 15 mm and 6 mm).
+inline constexpr int kDefaultSubsteps = 16;
 /// @brief Default contact stiffness, Hz: overlaps close like a spring of this
-/// frequency. Capped at a quarter of the substep rate when used (120 Hz at
-/// 1/60 s and 8 substeps). A soft contact carries a load W by overlapping
-/// about W/(m_eff·ω²), ω = 2πf; a tower of n boxes sinks by the sum over its
-/// contacts, so the stiffness sets how far a tall stack settles (8 mm for 20
-/// unit boxes at 120 Hz, 3 cm at 60 Hz, and a soft base lets it topple).
-inline constexpr Real kDefaultContactHertz = 120;
+/// frequency. Capped at a quarter of the substep rate when used (240 Hz is
+/// that cap at 1/60 s and 16 substeps; stiffer than the cap, the tower sways).
+/// A soft contact carries a load W by overlapping about W/(m_eff·ω²), ω = 2πf;
+/// a tower of n boxes sinks by the sum over its contacts, so the stiffness
+/// sets how far a tall stack settles (about 3 mm for 20 unit boxes at 240 Hz,
+/// 3 cm at 60 Hz, where the soft base also lets it topple).
+inline constexpr Real kDefaultContactHertz = 240;
 /// @brief Default contact damping ratio: critically damped, so an overlap
 /// closes without overshooting into a bounce.
 inline constexpr Real kDefaultContactDampingRatio = 1;
@@ -99,7 +102,7 @@ inline Real contactHertzInUse(const WorldSettings& settings) {
 
 /// @brief How far a body resting on a rigid support sinks into it under its own weight
 /// with the soft contacts of @p settings, m: g/ω² with ω = 2π·contactHertzInUse()
-/// (a soft contact is a spring of that frequency; 17 µm at 120 Hz).
+/// (a soft contact is a spring of that frequency; 4 µm at 240 Hz).
 inline Real restingSag(const WorldSettings& settings) {
     const Real omega = Real(2) * Real(3.14159265358979323846) * contactHertzInUse(settings);
     return glm::length(settings.gravity) / (omega * omega);
