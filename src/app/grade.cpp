@@ -80,7 +80,10 @@ GradeRow gradeFile(const fs::path& path, const fs::path& folder, const std::vect
         scene = std::make_unique<Scene>(loadSceneFile(path.string()));
     } catch (const ConfigError& error) {
         const std::size_t count = error.diagnostics().size();
+        // The row already names the file: "line 14:109: error: Mass: …" leaves room for the message.
         row.note = error.diagnostics().front().message();
+        const std::string prefix = path.string() + ":";
+        if (row.note.rfind(prefix, 0) == 0) row.note = "line " + row.note.substr(prefix.size());
         if (count > 1) row.note += " (and " + std::to_string(count - 1) + " more)";
         return row;
     }
