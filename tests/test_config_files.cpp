@@ -1,7 +1,8 @@
 /// @file test_config_files.cpp
 /// @brief Files on disk: loadSceneFile, every example in docs/config-format.md, every shipped scene.
 ///
-/// The documentation's examples are tests: a ```scene block must load, a
+/// The documentation's examples are tests: a ```scene block must load (and
+/// its Expect records must pass), a
 /// ```scene-error block must fail with exactly the message printed in the
 /// ```text block that follows it. So the reference cannot drift from the code.
 #include <catch2/catch.hpp>
@@ -13,6 +14,7 @@
 #include <vector>
 
 #include "config/scene_loader.hpp"
+#include "expectation_runner.hpp"
 
 using namespace stepwise;
 namespace fs = std::filesystem;
@@ -119,7 +121,17 @@ TEST_CASE("Every example in docs/config-format.md behaves as documented", "[conf
         if (block.tag == "scene") {
             ++scenes;
             try {
-                (void)parseScene(block.body, kExampleSource);
+                const Scene scene = parseScene(block.body, kExampleSource);
+                if (!scene.expectations.empty()) {
+                    // An example of Expect records must show ones that hold.
+                    const test::ExpectationOutcome outcome = test::runExpectations(scene);
+                    for (std::size_t k = 0; k < outcome.results.size(); ++k) {
+                        INFO(describe(outcome.expectations[k]) << " -> "
+                                                                << describeMeasurement(outcome.expectations[k],
+                                                                                       outcome.results[k]));
+                        CHECK(outcome.results[k].passed);
+                    }
+                }
             } catch (const ConfigError& error) {
                 FAIL("a ```scene example does not load:\n" << error.what());
             }

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "world/expectations.hpp"
+
 /// @brief The `stepwise` command-line program (src/app/).
 namespace stepwise::cli {
 
@@ -15,6 +17,7 @@ namespace stepwise::cli {
 inline constexpr int kExitOk = 0;              ///< Success.
 inline constexpr int kExitSimulationError = 1; ///< The simulation reached an impossible state.
 inline constexpr int kExitUsageError = 2;      ///< Bad command line or bad scene file.
+inline constexpr int kExitExpectationFailed = 3; ///< An Expect record failed (run), or a graded scene did (grade).
 
 /// @brief Thrown for a malformed command line; the message says what and how to fix it.
 class UsageError : public std::runtime_error {
@@ -51,6 +54,24 @@ struct ViewOptions {
 
 /// @brief Parses the arguments after `view`. @throws UsageError.
 ViewOptions parseViewOptions(const std::vector<std::string>& args, const std::string& defaultScene);
+
+/// @brief Options of `stepwise grade`.
+struct GradeOptions {
+    std::string folder;                     ///< Folder of scene files (searched recursively).
+    std::string glob = "*.scene";           ///< --scene-glob GLOB: which files, matched against the path below the folder.
+    std::optional<std::string> expectPath;  ///< --expect FILE: check these Expect records instead of each file's own.
+    std::uint64_t maxSteps = 1000000;       ///< --max-steps N: a scene needing more steps is an error row.
+};
+
+/// @brief Parses the arguments after `grade`. @throws UsageError.
+GradeOptions parseGradeOptions(const std::vector<std::string>& args);
+
+/// @brief `stepwise grade DIR`: run every scene in a folder, one table row per file. Returns the exit code.
+int gradeCommand(const GradeOptions& options);
+
+/// @brief Prints the pass/fail table of a run's expectations (what `stepwise run` shows after its summary).
+/// @return true when every expectation passed.
+bool printExpectationTable(const std::vector<Expectation>& expectations, const std::vector<ExpectationResult>& results);
 
 /// @brief `stepwise check FILE`: validate and describe a scene. Returns the exit code.
 int checkCommand(const std::string& scenePath);

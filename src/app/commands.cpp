@@ -162,8 +162,12 @@ int runCommand(const RunOptions& options) {
     std::unique_ptr<Scene> scene = loadOrReport(options.scenePath);
     if (!scene) return kExitUsageError;
     printSceneHeader(options.scenePath, *scene);
+    const std::vector<Expectation> expectations = scene->expectations;
 
     World world(std::move(*scene));
+    // Observes between steps only: the trajectory is the same with or without Expect records.
+    ExpectationMonitor monitor(world, expectations);
+    monitor.observe(world);
     const double h = double(world.settings().timeStep);
     const double duration = options.duration.value_or(double(world.settings().duration));
     // Round to the nearest whole step: 10 s at 1/60 s is 600 steps, not 599.99.
@@ -190,6 +194,7 @@ int runCommand(const RunOptions& options) {
         try {
             for (std::uint64_t i = 0; i < steps; ++i) {
                 world.step();
+                monitor.observe(world);
                 if (csv && world.stepCount() % options.every == 0) writeTrajectoryRows(csv, world);
                 progress.update(world.stepCount(), double(world.time()));
             }
@@ -208,6 +213,9 @@ int runCommand(const RunOptions& options) {
                       angularMomentumOf(world));
     printStageTimes(world, wall);
     if (csv) std::printf("\nTrajectory written to %s\n", options.csvPath->c_str());
+    if (!expectations.empty() && !printExpectationTable(expectations, monitor.results(world)) && exitCode == kExitOk) {
+        exitCode = kExitExpectationFailed;
+    }
     return exitCode;
 }
 
@@ -233,6 +241,7 @@ int checkCommand(const std::string& scenePath) {
         std::printf("  CollisionPlane   %-16s through %s m, normal %s\n", p.name.c_str(), vec(p.position).c_str(),
                     vec(p.normal).c_str());
     }
+    for (const Expectation& e : scene->expectations) std::printf("  Expect (line %d)  %s\n", e.line, describe(e).c_str());
     std::printf("OK: %s is a valid scene.\n", scenePath.c_str());
     return kExitOk;
 }

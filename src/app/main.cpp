@@ -45,8 +45,9 @@ int viewCommand(const std::vector<std::string>& args) {
 
 }  // namespace
 
-/// @brief Runs the command named by the first argument (`run`, `check`, `view`, `--help`).
-/// @return the exit code: 0 success, 1 simulation failure, 2 bad command line or scene.
+/// @brief Runs the command named by the first argument (`run`, `check`, `view`, `grade`, `--help`).
+/// @return the exit code: 0 success, 1 simulation failure, 2 bad command line or scene,
+///         3 an expectation failed (`run`) or a graded file did not pass (`grade`).
 int main(int argc, char** argv) {
     using namespace stepwise::cli;
     const std::vector<std::string> args(argv + 1, argv + argc);
@@ -64,7 +65,8 @@ int main(int argc, char** argv) {
             return checkCommand(rest[0]);
         }
         if (command == "view") return viewCommand(rest);
-        throw UsageError("unknown command '" + command + "' (commands: run, check, view)");
+        if (command == "grade") return gradeCommand(parseGradeOptions(rest));
+        throw UsageError("unknown command '" + command + "' (commands: run, check, view, grade)");
     } catch (const UsageError& error) {
         std::fprintf(stderr, "stepwise: error: %s\nRun 'stepwise --help' for usage.\n", error.what());
         return kExitUsageError;

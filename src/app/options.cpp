@@ -31,12 +31,20 @@ const char* usageText() {
            "      frame into the PNG file PATH and exit; --keys presses window keys first\n"
            "      (e.g. CV: contacts and velocities); --dump-state writes the state drawn\n"
            "      in the CSV format of --csv. Without a screen, prefix 'xvfb-run -a'.\n"
+           "      A scene with Expect records ends with a table: each expectation, PASS or\n"
+           "      FAIL, and the value measured.\n"
            "  stepwise check FILE\n"
            "      Validate FILE and print what it contains.\n"
+           "  stepwise grade DIR [--scene-glob GLOB] [--expect FILE] [--max-steps N]\n"
+           "      Run every scene file below DIR (GLOB, default *.scene, matches the path\n"
+           "      below DIR) and print one row per file: PASS, FAIL or ERROR, expectations\n"
+           "      passed, the first failure. --expect FILE checks FILE's Expect records\n"
+           "      instead of each file's own; --max-steps (default 1000000) caps a run.\n"
            "  stepwise --help\n"
            "\n"
            "Exit codes: 0 success, 1 the simulation failed (non-finite state),\n"
-           "            2 bad command line or bad scene file.\n"
+           "            2 bad command line or bad scene file,\n"
+           "            3 an expectation failed (run), or a file did not pass (grade).\n"
            "Scene format: docs/config-format.md\n";
 }
 

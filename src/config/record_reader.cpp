@@ -2,6 +2,7 @@
 /// @brief Assigns each token of a record line to its field, parses it, and reports what is wrong.
 #include "config/record_reader.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "config/spelling.hpp"
@@ -58,6 +59,12 @@ const RecordValues::Slot& RecordValues::slot(std::string_view field) const {
 }
 
 int RecordValues::valueColumn(std::string_view field) const { return slot(field).valueColumn; }
+
+bool RecordValues::isSet(std::string_view field, int component) const {
+    const Slot& s = slot(field);
+    if (component != kWholeField) return s.setAtColumn.at(static_cast<std::size_t>(component)) != 0;
+    return std::any_of(s.setAtColumn.begin(), s.setAtColumn.end(), [](int column) { return column != 0; });
+}
 
 const std::string& RecordValues::asWritten(std::string_view field) const { return slot(field).asWritten; }
 
@@ -200,6 +207,9 @@ private:
                 break;
             case FieldKind::Boolean:
                 readChoice(field, slot, value, wordsOf(kBooleanChoices));
+                break;
+            case FieldKind::Compare:
+                readChoice(field, slot, value, wordsOf(kCompareChoices));
                 break;
             case FieldKind::Name: {
                 const Parsed<std::string> name = parseName(value);

@@ -60,6 +60,9 @@ public:
     /// @brief Column of the first character of the field's value where it was first given (0 if not).
     int valueColumn(std::string_view field) const;
 
+    /// @brief Did the line give the field (any part of it), or one @p component (0–2) of it?
+    bool isSet(std::string_view field, int component = kWholeField) const;
+
     /// @brief The whole value as written when given whole, e.g. "(0, 0, 0)"; "" otherwise.
     const std::string& asWritten(std::string_view field) const;
 

@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -64,6 +65,28 @@ constexpr Real kRadiusPerDiameter = Real(0.5);
 /// amplify rounding noise into an arbitrary direction.
 constexpr Real kMinNormalLength = Real(1e-9);
 
+/// An Expect record's apex must be one the run can count to; more than this is a typo.
+constexpr Real kMaxApex = 1000;
+constexpr std::string_view kApexCountHint = "Apex=3 is the third time the body stops rising";
+/// Record names an Expect record's names must belong to.
+constexpr std::string_view kDynamicRecord = "DynamicObject";
+constexpr std::string_view kPlaneRecord = "CollisionPlane";
+
+/// The quantity fields of an Expect record, and what each measures.
+struct ExpectQuantityField {
+    std::string_view name;    ///< Field name in the record table.
+    ExpectQuantity quantity;  ///< What it measures.
+};
+constexpr ExpectQuantityField kExpectQuantityFields[] = {
+    {"Position", ExpectQuantity::Position},         {"Velocity", ExpectQuantity::Velocity},
+    {"Speed", ExpectQuantity::Speed},               {"AngularSpeed", ExpectQuantity::AngularSpeed},
+    {"TiltDeg", ExpectQuantity::TiltDeg},           {"EnergyChange", ExpectQuantity::EnergyChange},
+    {"AtRest", ExpectQuantity::AtRest},             {"Asleep", ExpectQuantity::Asleep},
+    {"NotThroughPlane", ExpectQuantity::NotThroughPlane},
+};
+const std::string kExpectQuantityList =
+    "Position[XYZ], Velocity[XYZ], Speed, AngularSpeed, TiltDeg, EnergyChange, AtRest, Asleep, NotThroughPlane";
+
 const Vec3 kAxisX{1, 0, 0};
 const Vec3 kAxisY{0, 1, 0};
 const Vec3 kAxisZ{0, 0, 1};
@@ -85,6 +108,12 @@ Quat orientationFromDegrees(const Vec3& degrees) {
     const Quat aboutY = glm::angleAxis(glm::radians(degrees.y), kAxisY);
     const Quat aboutZ = glm::angleAxis(glm::radians(degrees.z), kAxisZ);
     return aboutZ * aboutY * aboutX;
+}
+
+std::string formatNumber(Real value) {
+    std::ostringstream text;
+    text << value;
+    return text.str();
 }
 
 std::string formatVector(const Vec3& v) {
@@ -137,11 +166,13 @@ public:
             case RecordKind::KinematicsObject: addKinematic(values, line, index); break;
             case RecordKind::CollisionPlane: addPlane(values, line, index); break;
             case RecordKind::World: setWorld(values, line); break;
+            case RecordKind::Expect: addExpect(values, line); break;
         }
     }
 
     /// The finished Scene, or ConfigError with every problem found.
     Scene finish() {
+        resolveExpectNames();
         if (sink_.diagnostics().empty()) return std::move(scene_);
         std::vector<ConfigDiagnostic> diagnostics = sink_.diagnostics();
         sortByPosition(diagnostics);
@@ -250,6 +281,208 @@ private:
         settings.timeToSleep = values.number("TimeToSleep", defaults.timeToSleep);
     }
 
+    /// An Expect record (src/world/expectations.hpp): exactly one quantity,
+    /// at most one timing (Time, Apex, or a From/Until window), and the
+    /// Tolerance or Compare its quantity needs. The names it refers to are
+    /// checked in finish(), when every object of the file is known.
+    void addExpect(const RecordValues& values, const SceneLine& line) {
+        Expectation e;
+        e.line = line.number;
+        const ExpectParts parts = expectParts(values, line);
+        const Token& recordName = line.tokens.front();
+        const std::string written = lineText(line);
+
+        if (parts.quantity == nullptr) {
+            sink_.report(line.number, recordName.column, "Expect", "one quantity to check (" + kExpectQuantityList + ")",
+                         written, "e.g. Expect, Object=ball, Time=1, PositionY=0.5, Tolerance=0.01");
+            return;
+        }
+        const std::string_view quantity = parts.quantityField;
+        e.quantity = parts.kind;
+        e.component = parts.component;
+        const bool vector = quantity == "Position" || quantity == "Velocity";
+        if (vector && e.component >= 0) {
+            e.target = values.triple(quantity, kZero)[e.component];
+        } else if (vector) {
+            e.targetVector = values.triple(quantity, kZero);
+        } else if (e.quantity == ExpectQuantity::AtRest || e.quantity == ExpectQuantity::Asleep) {
+            e.flag = values.choice<bool>(quantity, kBooleanChoices, true);
+        } else if (e.quantity == ExpectQuantity::NotThroughPlane) {
+            e.plane = values.text(quantity).value_or("");
+        } else {
+            e.target = values.number(quantity, 0);
+        }
+
+        // When: one moment, one apex, or a window (the whole run by default).
+        if (values.isSet("Time")) {
+            e.when = ExpectWhen::Instant;
+            e.time = values.number("Time", 0);
+        } else if (values.isSet("Apex")) {
+            e.when = ExpectWhen::Apex;
+            const Real apex = values.number("Apex", 1);
+            e.apex = static_cast<int>(apex);
+            if (apex != std::floor(apex) || apex > kMaxApex) {
+                sink_.report(line.number, values.valueColumn("Apex"), "Apex", "a whole number from 1 to 1000",
+                             formatNumber(apex), std::string(kApexCountHint));
+            }
+        } else {
+            e.from = values.number("From", 0);
+            e.until = values.number("Until", -1);
+            if (values.isSet("Until") && values.isSet("From") && e.until < e.from) {
+                sink_.report(line.number, values.valueColumn("Until"), "Until", "a time not before From (" +
+                             formatNumber(e.from) + " s)", formatNumber(e.until), "the window runs from From to Until");
+            }
+        }
+        if (parts.secondTiming != nullptr) {
+            sink_.report(line.number, parts.secondTiming->column, std::string(splitNamed(*parts.secondTiming)->name.text),
+                         "one timing per Expect record (Time, Apex, or a From/Until window)",
+                         std::string(parts.secondTiming->text),
+                         std::string(splitNamed(*parts.timing)->name.text) + " is given at column " +
+                             std::to_string(parts.timing->column) + "; write a second Expect line");
+        }
+        if (parts.secondQuantity != nullptr) {
+            sink_.report(line.number, parts.secondQuantity->column,
+                         std::string(splitNamed(*parts.secondQuantity)->name.text), "one quantity per Expect record",
+                         std::string(parts.secondQuantity->text),
+                         std::string(splitNamed(*parts.quantity)->name.text) + " at column " +
+                             std::to_string(parts.quantity->column) + " is this record's quantity; write a second "
+                             "Expect line for the other one");
+        }
+
+        // How: Tolerance and Compare, as the quantity needs them.
+        e.compare = values.choice<ExpectCompare>("Compare", kCompareChoices, ExpectCompare::Within);
+        const bool numeric = !vector || e.component >= 0;
+        const bool comparable = numeric && e.quantity != ExpectQuantity::AtRest &&
+                                e.quantity != ExpectQuantity::Asleep && e.quantity != ExpectQuantity::NotThroughPlane;
+        const std::string name = quantityLabel(values, parts);
+        if (values.isSet("Compare") && !comparable) {
+            sink_.report(line.number, values.valueColumn("Compare"), "Compare",
+                         "no Compare for " + name, values.text("Compare").value_or(""),
+                         "Compare (Within, AtLeast, AtMost) goes with a single number, e.g. PositionY or Speed");
+        }
+        const bool oneSided = comparable && e.compare != ExpectCompare::Within;
+        // A misspelt Compare was reported already; guessing what it meant would add a second, wrong error.
+        const bool compareUnreadable = values.isSet("Compare") && !values.text("Compare");
+        const bool toleranceOptional = e.quantity == ExpectQuantity::AtRest || e.quantity == ExpectQuantity::NotThroughPlane;
+        const bool toleranceAllowed = !oneSided && e.quantity != ExpectQuantity::Asleep;
+        if (values.isSet("Tolerance") && !toleranceAllowed) {
+            sink_.report(line.number, values.valueColumn("Tolerance"), "Tolerance", "no Tolerance for " + name +
+                         (oneSided ? " with Compare=" + values.text("Compare").value_or("") : std::string()),
+                         formatNumber(values.number("Tolerance", 0)),
+                         oneSided ? "a one-sided bound is the target itself" : "there is nothing to tolerate");
+        } else if (!values.isSet("Tolerance") && toleranceAllowed && !toleranceOptional && !compareUnreadable) {
+            sink_.report(line.number, recordName.column, "Tolerance", "a Tolerance for " + name +
+                         (numeric ? " (it passes when |measured - target| <= Tolerance)"
+                                  : " (it passes when the distance from the target <= Tolerance)"),
+                         written,
+                         numeric ? "e.g. Tolerance=0.01; or Compare=AtLeast / AtMost for a one-sided bound"
+                                 : "e.g. Tolerance=0.01, in the quantity's unit");
+        }
+        const Real defaultTolerance = e.quantity == ExpectQuantity::AtRest ? kDefaultRestSpeed : 0;
+        e.tolerance = values.number("Tolerance", defaultTolerance);
+
+        // Who: a body (checked against the file's names in finish()).
+        if (const std::optional<std::string> object = values.text("Object")) {
+            e.object = *object;
+            pendingNames_.push_back({line.number, values.valueColumn("Object"), "Object", *object,
+                                     kDynamicRecord, scene_.expectations.size()});
+        } else if (e.quantity != ExpectQuantity::EnergyChange && !values.isSet("Object")) {
+            sink_.report(line.number, recordName.column, "Object", "the name of the DynamicObject to check", written,
+                         "every Expect except EnergyChange names its body, e.g. Object=ball");
+        }
+        if (e.quantity == ExpectQuantity::NotThroughPlane && values.text(quantity)) {
+            pendingNames_.push_back({line.number, values.valueColumn(quantity), std::string(quantity), e.plane,
+                                     kPlaneRecord, scene_.expectations.size()});
+        }
+        scene_.expectations.push_back(std::move(e));
+    }
+
+    /// The tokens of an Expect line that set its quantity and its timing.
+    struct ExpectParts {
+        const Token* quantity = nullptr;        ///< The first quantity field, e.g. `PositionY=0.5`.
+        std::string_view quantityField;         ///< Its field's canonical name ("Position").
+        ExpectQuantity kind = ExpectQuantity::Position;
+        int component = kWholeField;            ///< Its component (0–2), or kWholeField.
+        std::size_t field = 0;                  ///< Its index in the record table.
+        const Token* secondQuantity = nullptr;  ///< A second quantity field: an error.
+        const Token* timing = nullptr;          ///< The first of Time, Apex, From, Until.
+        const Token* secondTiming = nullptr;    ///< A timing that conflicts with the first: an error.
+    };
+
+    static ExpectParts expectParts(const RecordValues& values, const SceneLine& line) {
+        ExpectParts parts;
+        bool timingIsWindow = false;
+        for (std::size_t i = 1; i < line.tokens.size(); ++i) {
+            const std::optional<NamedToken> named = splitNamed(line.tokens[i]);
+            if (!named) continue;
+            const std::optional<FieldRef> ref = findField(values.spec(), named->name.text);
+            if (!ref) continue;
+            const std::string_view field = values.spec().fields[ref->field].name;
+            for (const ExpectQuantityField& q : kExpectQuantityFields) {
+                if (q.name != field) continue;
+                if (parts.quantity == nullptr) {
+                    parts.quantity = &line.tokens[i];
+                    parts.quantityField = q.name;
+                    parts.kind = q.quantity;
+                    parts.component = ref->component;
+                    parts.field = ref->field;
+                } else if (parts.secondQuantity == nullptr) {
+                    parts.secondQuantity = &line.tokens[i];
+                }
+            }
+            const bool window = field == "From" || field == "Until";
+            if (field == "Time" || field == "Apex" || window) {
+                if (parts.timing == nullptr) {
+                    parts.timing = &line.tokens[i];
+                    timingIsWindow = window;
+                } else if (parts.secondTiming == nullptr && !(window && timingIsWindow)) {
+                    parts.secondTiming = &line.tokens[i];
+                }
+            }
+        }
+        return parts;
+    }
+
+    /// "PositionY", "AtRest": the quantity's canonical name, for messages.
+    static std::string quantityLabel(const RecordValues& values, const ExpectParts& parts) {
+        return config::fieldName(values.spec().fields[parts.field], parts.component);
+    }
+
+    /// The record as written, fields joined by ", ": what a missing-field message shows as found.
+    static std::string lineText(const SceneLine& line) {
+        std::string text;
+        for (const Token& token : line.tokens) text += (text.empty() ? "" : ", ") + std::string(token.text);
+        return text;
+    }
+
+    /// The Expect records' Object and NotThroughPlane must name a body and a
+    /// plane of the file; the name is replaced by the object's own spelling.
+    void resolveExpectNames() {
+        for (const PendingName& pending : pendingNames_) {
+            const auto found = names_.find(toLower(pending.name));
+            if (found == names_.end() || found->second.record != pending.record) {
+                std::string hint;
+                if (found != names_.end()) {
+                    hint = "'" + found->second.name + "' is the " + std::string(found->second.record) + " on line " +
+                           std::to_string(found->second.line);
+                } else {
+                    std::vector<std::string> known;
+                    for (const auto& [key, use] : names_) {
+                        if (use.record == pending.record) known.push_back(use.name);
+                    }
+                    if (const auto suggestion = closestMatch(pending.name, known)) {
+                        hint = "did you mean '" + *suggestion + "'?";
+                    }
+                }
+                sink_.report(pending.line, pending.column, pending.field,
+                             "the name of a " + std::string(pending.record) + " in this file", pending.name, hint);
+                continue;
+            }
+            Expectation& e = scene_.expectations[pending.expectation];
+            (pending.field == "Object" ? e.object : e.plane) = found->second.name;
+        }
+    }
+
     /// The object's name: its Name field, or the record type plus its index
     /// within that type ("DynamicObject0"). Names are unique ignoring case, so
     /// "Ball" and "ball" cannot both exist; the second one is reported.
@@ -317,10 +550,21 @@ private:
         int line = 0;             ///< Line of that record.
     };
 
+    /// A name an Expect record refers to, checked once the whole file is read.
+    struct PendingName {
+        int line = 0;                 ///< Line of the Expect record.
+        int column = 0;               ///< Column of the name.
+        std::string field;            ///< "Object" or "NotThroughPlane".
+        std::string name;             ///< As written.
+        std::string_view record;      ///< The record type it must name.
+        std::size_t expectation = 0;  ///< Index into Scene::expectations.
+    };
+
     Scene scene_;
     DiagnosticSink sink_;
+    std::vector<PendingName> pendingNames_;  ///< Names used by Expect records.
     std::map<std::string, NameUse> names_;  ///< Lower-cased name → first use.
-    std::array<int, 4> counts_{};           ///< Records seen so far, per RecordKind (for default names).
+    std::array<int, 5> counts_{};           ///< Records seen so far, per RecordKind (for default names).
     int worldLine_ = 0;                     ///< Line of the World record; 0 before one is seen.
 };
 

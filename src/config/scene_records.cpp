@@ -35,6 +35,9 @@ constexpr std::string_view kElasticityHint =
 constexpr std::string_view kFrictionHint = "0 means frictionless; friction cannot be negative";
 constexpr std::string_view kSizeHint = "sizes are in metres and must be positive";
 constexpr std::string_view kTimeHint = "times are in seconds and must be positive, e.g. 1/60";
+constexpr std::string_view kMomentHint = "moments are in seconds from the start of the run, 0 or later";
+constexpr std::string_view kToleranceHint = "a tolerance is the allowed difference, in the quantity's unit, 0 or more";
+constexpr std::string_view kApexHint = "apexes are counted from 1: Apex=3 is the third time the body stops rising";
 
 // clang-format off
 /// DynamicObject: the classic 19 positional values, then named-only extras.
@@ -105,11 +108,34 @@ constexpr FieldSpec kWorldFields[] = {
     {"TimeToSleep",         FieldKind::Number,  kNamedOnly, Range::Positive, kTimeHint}, // s
 };
 
+/// Expect: one checked outcome (src/world/expectations.hpp), named fields only.
+/// Exactly one quantity field (Position … NotThroughPlane) per record; at most
+/// one of Time, Apex, or a From/Until window; the loader checks these rules.
+constexpr FieldSpec kExpectFields[] = {
+    {"Object",          FieldKind::Name,       kNamedOnly, Range::Any},              // a DynamicObject's name
+    {"Time",            FieldKind::Number,     kNamedOnly, Range::NonNegative, kMomentHint}, // s
+    {"Apex",            FieldKind::Number,     kNamedOnly, Range::Positive, kApexHint},      // 1, 2, 3, …
+    {"From",            FieldKind::Number,     kNamedOnly, Range::NonNegative, kMomentHint}, // s
+    {"Until",           FieldKind::Number,     kNamedOnly, Range::NonNegative, kMomentHint}, // s
+    {"Position",        FieldKind::Vector,     kNamedOnly, Range::Any},              // m
+    {"Velocity",        FieldKind::Vector,     kNamedOnly, Range::Any},              // m/s
+    {"Speed",           FieldKind::Number,     kNamedOnly, Range::NonNegative},      // m/s
+    {"AngularSpeed",    FieldKind::Number,     kNamedOnly, Range::NonNegative},      // rad/s
+    {"TiltDeg",         FieldKind::Number,     kNamedOnly, Range::NonNegative},      // degrees
+    {"EnergyChange",    FieldKind::Number,     kNamedOnly, Range::Any},              // fraction of |E0|
+    {"AtRest",          FieldKind::Boolean,    kNamedOnly, Range::Any},
+    {"Asleep",          FieldKind::Boolean,    kNamedOnly, Range::Any},              // not measurable yet
+    {"NotThroughPlane", FieldKind::Name,       kNamedOnly, Range::Any},              // a CollisionPlane's name
+    {"Tolerance",       FieldKind::Number,     kNamedOnly, Range::NonNegative, kToleranceHint},
+    {"Compare",         FieldKind::Compare,    kNamedOnly, Range::Any},
+};
+
 constexpr RecordSpec kRecords[] = {
     {RecordKind::DynamicObject,    "DynamicObject",    kDynamicFields},
     {RecordKind::KinematicsObject, "KinematicsObject", kKinematicFields},
     {RecordKind::CollisionPlane,   "CollisionPlane",   kPlaneFields},
     {RecordKind::World,            "World",            kWorldFields},
+    {RecordKind::Expect,           "Expect",           kExpectFields},
 };
 // clang-format on
 
@@ -155,6 +181,12 @@ const std::array<Choice<bool>, 6> kBooleanChoices = {{
     {"no", false},
     {"1", true},
     {"0", false},
+}};
+
+const std::array<Choice<ExpectCompare>, 3> kCompareChoices = {{
+    {"Within", ExpectCompare::Within},
+    {"AtLeast", ExpectCompare::AtLeast},
+    {"AtMost", ExpectCompare::AtMost},
 }};
 
 std::span<const RecordSpec> allRecords() { return kRecords; }

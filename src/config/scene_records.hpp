@@ -17,6 +17,7 @@
 
 #include "config/field_values.hpp"
 #include "objects/game_object.hpp"
+#include "world/expectations.hpp"
 #include "world/world_settings.hpp"
 
 namespace stepwise::config {
@@ -31,6 +32,7 @@ enum class FieldKind : std::uint8_t {
     Solver,      ///< A word from kSolverChoices.
     Boolean,     ///< Yes or no, a word from kBooleanChoices: `Hollow=true`, `Hollow=yes`, `Hollow=1`.
     Name,        ///< An object name (see parseName()).
+    Compare,     ///< A word from kCompareChoices: `Compare=AtLeast` (Expect records).
 };
 
 /// @brief firstPositional of a field that can only be given as `Field=Value`.
@@ -46,8 +48,8 @@ struct FieldSpec {
     std::string_view hint{};  ///< Advice shown when a value is out of range ("" if none).
 };
 
-/// @brief The four kinds of line a scene file may contain.
-enum class RecordKind : std::uint8_t { DynamicObject, KinematicsObject, CollisionPlane, World };
+/// @brief The kinds of line a scene file may contain.
+enum class RecordKind : std::uint8_t { DynamicObject, KinematicsObject, CollisionPlane, World, Expect };
 
 /// @brief One record type: its name and its field table.
 struct RecordSpec {
@@ -76,6 +78,9 @@ extern const std::array<Choice<SolverKind>, 2> kSolverChoices;
 
 /// @brief Accepted spellings of a Boolean field (any case): true/false, yes/no, 1/0.
 extern const std::array<Choice<bool>, 6> kBooleanChoices;
+
+/// @brief Accepted spellings of ExpectCompare (any case): Within, AtLeast, AtMost.
+extern const std::array<Choice<ExpectCompare>, 3> kCompareChoices;
 
 /// @brief Every record type, in the order the documentation lists them.
 std::span<const RecordSpec> allRecords();

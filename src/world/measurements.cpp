@@ -4,14 +4,23 @@
 
 namespace stepwise {
 
+Energy energyOf(const DynamicObject& body, const Vec3& gravity) {
+    Energy energy;
+    energy.translational = Real(0.5) * body.mass * glm::dot(body.velocity, body.velocity);
+    // ½·ω·L = ½·ωᵀ·I_world·ω: ω and L are kept consistent by updateAngularVelocity().
+    energy.rotational = Real(0.5) * glm::dot(body.angularVelocity, body.angularMomentum);
+    energy.potential = -body.mass * glm::dot(gravity + body.constantAcceleration, body.position);
+    energy.kinetic = energy.translational + energy.rotational;
+    return energy;
+}
+
 Energy energyOf(const World& world) {
     Energy energy;
-    const Vec3& gravity = world.settings().gravity;
     for (const DynamicObject& body : world.dynamics()) {
-        energy.translational += Real(0.5) * body.mass * glm::dot(body.velocity, body.velocity);
-        // ½·ω·L = ½·ωᵀ·I_world·ω: ω and L are kept consistent by updateAngularVelocity().
-        energy.rotational += Real(0.5) * glm::dot(body.angularVelocity, body.angularMomentum);
-        energy.potential -= body.mass * glm::dot(gravity + body.constantAcceleration, body.position);
+        const Energy own = energyOf(body, world.settings().gravity);
+        energy.translational += own.translational;
+        energy.rotational += own.rotational;
+        energy.potential += own.potential;
     }
     energy.kinetic = energy.translational + energy.rotational;
     return energy;

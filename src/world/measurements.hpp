@@ -25,6 +25,9 @@ struct Energy {
 /// that is m·9.81·y, the familiar m·g·h).
 Energy energyOf(const World& world);
 
+/// @brief The same energies for one body in a uniform field @p gravity (energyOf(world) sums these).
+Energy energyOf(const DynamicObject& body, const Vec3& gravity);
+
 /// @brief Total linear momentum Σ m·v of the dynamic bodies, kg·m/s.
 Vec3 linearMomentumOf(const World& world);
 

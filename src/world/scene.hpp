@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "objects/game_object.hpp"
+#include "world/expectations.hpp"
 #include "world/world_settings.hpp"
 
 namespace stepwise {
@@ -21,6 +22,7 @@ struct Scene {
     std::vector<KinematicsObject> kinematics;///< Prescribed-motion bodies.
     std::vector<CollisionPlane> planes;      ///< Infinite planes.
     std::vector<std::string> warnings;       ///< Things that load but may surprise (e.g. features not yet simulated).
+    std::vector<Expectation> expectations;   ///< `Expect` records: what `stepwise run` checks (World ignores them).
 };
 
 }  // namespace stepwise

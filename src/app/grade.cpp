@@ -1,0 +1,236 @@
+/// @file grade.cpp
+/// @brief The pass/fail table of `stepwise run`, and `stepwise grade`: a folder of scenes, one row per file.
+///
+/// Grading runs each scene exactly as `stepwise run FILE` would (its own
+/// World record, its own Duration) and checks the expectations after every
+/// step with an ExpectationMonitor. A file that cannot be loaded or run is a
+/// row that says why, never the end of the grading: one student's broken
+/// file must not hide the others' results.
+#include <fnmatch.h>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "app/cli.hpp"
+#include "config/scene_loader.hpp"
+#include "core/errors.hpp"
+#include "world/world.hpp"
+
+namespace stepwise::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+/// A table cell longer than this is cut with "...": a row stays one line on a terminal.
+constexpr std::size_t kMaxCellWidth = 110;
+
+/// How one graded file ended.
+enum class Outcome { Pass, Fail, Error };
+
+/// One row of the grading table.
+struct GradeRow {
+    std::string file;     ///< Path below the graded folder.
+    Outcome outcome = Outcome::Error;
+    std::size_t passed = 0;
+    std::size_t total = 0;
+    std::string note;     ///< The first failure, or the error.
+};
+
+const char* outcomeText(Outcome outcome) {
+    switch (outcome) {
+        case Outcome::Pass: return "PASS";
+        case Outcome::Fail: return "FAIL";
+        case Outcome::Error: return "ERROR";
+    }
+    return "?";
+}
+
+std::string cut(std::string text) {
+    if (text.size() > kMaxCellWidth) text = text.substr(0, kMaxCellWidth - 3) + "...";
+    return text;
+}
+
+/// The scene files below @p folder whose relative path matches @p glob, in name order.
+std::vector<fs::path> sceneFiles(const fs::path& folder, const std::string& glob) {
+    std::vector<fs::path> files;
+    for (const fs::directory_entry& entry : fs::recursive_directory_iterator(folder)) {
+        if (!entry.is_regular_file()) continue;
+        const std::string relative = entry.path().lexically_relative(folder).generic_string();
+        // No FNM_PATHNAME: '*' also matches '/', so "*.scene" finds alice/answer.scene too.
+        if (fnmatch(glob.c_str(), relative.c_str(), 0) == 0) files.push_back(entry.path());
+    }
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+/// Loads, simulates and checks one file; every way it can go wrong becomes the row's note.
+GradeRow gradeFile(const fs::path& path, const fs::path& folder, const std::vector<Expectation>* instructor,
+                   std::uint64_t maxSteps) {
+    GradeRow row;
+    row.file = path.lexically_relative(folder).generic_string();
+    std::unique_ptr<Scene> scene;
+    try {
+        scene = std::make_unique<Scene>(loadSceneFile(path.string()));
+    } catch (const ConfigError& error) {
+        const std::size_t count = error.diagnostics().size();
+        // The row already names the file: "line 14:109: error: Mass: …" leaves room for the message.
+        row.note = error.diagnostics().front().message();
+        const std::string prefix = path.string() + ":";
+        if (row.note.rfind(prefix, 0) == 0) row.note = "line " + row.note.substr(prefix.size());
+        if (count > 1) row.note += " (and " + std::to_string(count - 1) + " more)";
+        return row;
+    }
+    const std::vector<Expectation> expectations = instructor ? *instructor : scene->expectations;
+    row.total = expectations.size();
+    if (expectations.empty()) {
+        row.note = "no Expect records: nothing to check";
+        return row;
+    }
+    try {
+        World world(std::move(*scene));
+        const double h = double(world.settings().timeStep);
+        const double steps = std::round(double(world.settings().duration) / h);
+        if (steps > double(maxSteps)) {
+            row.note = "needs " + std::to_string(static_cast<unsigned long long>(steps)) + " steps, more than --max-steps " +
+                       std::to_string(maxSteps) + " (check its TimeStep and Duration)";
+            return row;
+        }
+        ExpectationMonitor monitor(world, expectations);
+        monitor.observe(world);
+        std::string failure;
+        try {
+            for (std::uint64_t i = 0; i < static_cast<std::uint64_t>(steps); ++i) {
+                world.step();
+                monitor.observe(world);
+            }
+        } catch (const SimulationError& error) {
+            failure = std::string("simulation failed: ") + error.what();
+        }
+        const std::vector<ExpectationResult> results = monitor.results(world);
+        for (std::size_t i = 0; i < results.size(); ++i) {
+            if (results[i].passed) {
+                ++row.passed;
+            } else if (row.note.empty()) {
+                row.note = describe(expectations[i]) + " -> " + describeMeasurement(expectations[i], results[i]);
+            }
+        }
+        if (!failure.empty()) row.note = failure;
+        row.outcome = row.passed == row.total && failure.empty() ? Outcome::Pass : Outcome::Fail;
+    } catch (const std::invalid_argument& error) {
+        row.note = std::string("the scene cannot be simulated: ") + error.what();
+    }
+    return row;
+}
+
+}  // namespace
+
+bool printExpectationTable(const std::vector<Expectation>& expectations, const std::vector<ExpectationResult>& results) {
+    std::size_t passed = 0;
+    std::size_t width = std::string("expectation").size();
+    std::vector<std::string> described;
+    for (std::size_t i = 0; i < expectations.size(); ++i) {
+        described.push_back(cut(describe(expectations[i])));
+        width = std::max(width, described.back().size());
+        if (results[i].passed) ++passed;
+    }
+    std::printf("\nExpectations: %zu of %zu passed\n", passed, expectations.size());
+    std::printf("  %-6s %-5s %-*s  %s\n", "result", "line", static_cast<int>(width), "expectation", "measured");
+    for (std::size_t i = 0; i < expectations.size(); ++i) {
+        std::printf("  %-6s %-5d %-*s  %s\n", results[i].passed ? "PASS" : "FAIL", expectations[i].line,
+                    static_cast<int>(width), described[i].c_str(),
+                    describeMeasurement(expectations[i], results[i]).c_str());
+    }
+    return passed == expectations.size();
+}
+
+GradeOptions parseGradeOptions(const std::vector<std::string>& args) {
+    GradeOptions options;
+    bool folderGiven = false;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        const std::string& arg = args[i];
+        auto value = [&]() -> const std::string& {
+            if (i + 1 >= args.size()) throw UsageError(arg + " needs a value");
+            return args[++i];
+        };
+        if (arg == "--scene-glob") {
+            options.glob = value();
+        } else if (arg == "--expect") {
+            options.expectPath = value();
+        } else if (arg == "--max-steps") {
+            const std::string& text = value();
+            const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), options.maxSteps);
+            if (text.empty() || error != std::errc() || end != text.data() + text.size() || options.maxSteps == 0) {
+                throw UsageError("--max-steps expects a whole number > 0, found '" + text + "'");
+            }
+        } else if (arg.size() > 1 && arg[0] == '-') {
+            throw UsageError("unknown option '" + arg + "' for 'grade'");
+        } else if (folderGiven) {
+            throw UsageError("'grade' takes one folder, got '" + options.folder + "' and '" + arg + "'");
+        } else {
+            options.folder = arg;
+            folderGiven = true;
+        }
+    }
+    if (!folderGiven) throw UsageError("'grade' needs a folder of scene files, e.g. stepwise grade submissions/");
+    return options;
+}
+
+int gradeCommand(const GradeOptions& options) {
+    std::error_code status;
+    if (!fs::is_directory(options.folder, status)) {
+        std::fprintf(stderr, "stepwise: error: '%s' is not a folder\n", options.folder.c_str());
+        return kExitUsageError;
+    }
+    std::vector<Expectation> instructor;
+    if (options.expectPath) {
+        try {
+            instructor = loadSceneFile(*options.expectPath).expectations;
+        } catch (const ConfigError& error) {
+            for (const ConfigDiagnostic& d : error.diagnostics()) std::fprintf(stderr, "%s\n", d.message().c_str());
+            std::fprintf(stderr, "stepwise: the --expect file does not load; nothing was graded.\n");
+            return kExitUsageError;
+        }
+        if (instructor.empty()) {
+            std::fprintf(stderr, "stepwise: error: %s has no Expect records\n", options.expectPath->c_str());
+            return kExitUsageError;
+        }
+    }
+    const std::vector<fs::path> files = sceneFiles(options.folder, options.glob);
+    if (files.empty()) {
+        std::fprintf(stderr, "stepwise: error: no files matching '%s' in %s\n", options.glob.c_str(),
+                     options.folder.c_str());
+        return kExitUsageError;
+    }
+
+    std::printf("Grading %zu file(s) in %s against %s\n", files.size(), options.folder.c_str(),
+                options.expectPath ? ("the Expect records of " + *options.expectPath).c_str()
+                                   : "each file's own Expect records");
+    std::vector<GradeRow> rows;
+    std::size_t fileWidth = std::string("file").size();
+    for (const fs::path& file : files) {
+        rows.push_back(gradeFile(file, options.folder, options.expectPath ? &instructor : nullptr, options.maxSteps));
+        fileWidth = std::max(fileWidth, rows.back().file.size());
+    }
+    std::printf("  %-*s  %-6s %-7s %s\n", static_cast<int>(fileWidth), "file", "result", "passed", "first failure");
+    std::size_t counts[3] = {0, 0, 0};
+    for (const GradeRow& row : rows) {
+        ++counts[static_cast<int>(row.outcome)];
+        const std::string passed =
+            row.total > 0 && row.outcome != Outcome::Error ? std::to_string(row.passed) + "/" + std::to_string(row.total)
+                                                           : "-";
+        std::printf("  %-*s  %-6s %-7s %s\n", static_cast<int>(fileWidth), row.file.c_str(), outcomeText(row.outcome),
+                    passed.c_str(), cut(row.note).c_str());
+    }
+    std::printf("%zu file(s): %zu passed, %zu failed, %zu could not be run\n", rows.size(), counts[0], counts[1],
+                counts[2]);
+    return counts[0] == rows.size() ? kExitOk : kExitExpectationFailed;
+}
+
+}  // namespace stepwise::cli
