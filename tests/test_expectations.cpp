@@ -227,7 +227,7 @@ TEST_CASE("EnergyChange under explicit Euler grows as g h t / (2 y0) in free fal
     // m·g·(½·g·h·t); from rest at height y0, E0 = m·g·y0, so ΔE/E0 = g·h·t / (2·y0).
     const Real y0 = 10, h = Real(1) / 60, t = 1;
     const Real expected = kStandardGravity * h * t / (2 * y0);
-    const std::string scene = "World, Integrator=Euler, TimeStep=1/60, Duration=1\n"
+    const std::string scene = "World, Integrator=Euler, TimeStep=1/60, Duration=1, Solver=Impulse\n"
                               "DynamicObject, Name=ball, Position=(0, 10, 0), Mass=3\n";
     const Single one = runSingle(scene + "Expect, Object=ball, Time=1, EnergyChange=" + std::to_string(expected) +
                                  ", Tolerance=1e-6\n");
