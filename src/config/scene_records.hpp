@@ -45,8 +45,11 @@ struct FieldSpec {
     std::string_view hint{};  ///< Advice shown when a value is out of range ("" if none).
 };
 
-/// @brief The four kinds of line a scene file may contain.
-enum class RecordKind : std::uint8_t { DynamicObject, KinematicsObject, CollisionPlane, World };
+/// @brief The kinds of line a scene file may contain.
+enum class RecordKind : std::uint8_t { DynamicObject, KinematicsObject, CollisionPlane, World, Spring, Attractor };
+
+/// @brief Number of RecordKind values.
+inline constexpr std::size_t kRecordKindCount = 6;
 
 /// @brief One record type: its name and its field table.
 struct RecordSpec {

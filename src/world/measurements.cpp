@@ -12,7 +12,11 @@ Energy energyOf(const World& world) {
         // ½·ω·L = ½·ωᵀ·I_world·ω: ω and L are kept consistent by updateAngularVelocity().
         energy.rotational += Real(0.5) * glm::dot(body.angularVelocity, body.angularMomentum);
         energy.potential -= body.mass * glm::dot(gravity + body.constantAcceleration, body.position);
+        for (const Attractor& attractor : world.attractors()) {
+            energy.potential += attractorPotentialEnergy(attractor, body.mass, body.position);
+        }
     }
+    for (const Spring& spring : world.springs()) energy.potential += springPotentialEnergy(spring, world.dynamics());
     energy.kinetic = energy.translational + energy.rotational;
     return energy;
 }
