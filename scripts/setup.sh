@@ -17,7 +17,9 @@ set -euo pipefail
 #   doxygen                   the API reference (`docs` target)
 #   xvfb, xauth               a virtual X display (xvfb-run) for the viewer's screenshot tests
 #                             and for `stepwise view --screenshot` on a machine without a screen
-packages=(cmake ninja-build g++ libglm-dev freeglut3-dev catch2 doxygen xvfb xauth)
+#   gnuplot-nox               the plots of docs/benchmarks.md (scripts/bench.sh draws them from
+#                             stepwise-bench's CSV); -nox: PNG and SVG output without X11
+packages=(cmake ninja-build g++ libglm-dev freeglut3-dev catch2 doxygen xvfb xauth gnuplot-nox)
 
 if ! command -v dpkg-query >/dev/null 2>&1; then
     echo "setup: dpkg-query not found: this script installs packages on Debian/Ubuntu only." >&2
