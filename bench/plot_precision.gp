@@ -19,12 +19,13 @@ if (!exists("csv")) csv = 'precision.csv'
 if (!exists("outdir")) outdir = 'docs/images'
 
 set datafile separator ','
-set terminal pngcairo size 1100,440 enhanced font 'DejaVu Sans,11' linewidth 1.5
+set terminal pngcairo size 1100,500 enhanced font 'DejaVu Sans,11' linewidth 1.5
 set logscale xy
 set format x '10^{%L}'
 set format y '10^{%L}'
 set grid xtics ytics mxtics mytics lc rgb '#dddddd'
-set key top left box opaque font ',10'
+# The key goes under each panel, so it never hides a line.
+set key outside below center horizontal maxrows 2 font ',10'
 
 integrators = 'Euler SymplecticEuler Verlet'
 colour(i) = word('#d62728 #1f77b4 #2ca02c', i)
@@ -63,7 +64,7 @@ do for [k = 1:words(problems)] {
 }
 
 # Energy: the four problems that conserve it.
-set terminal pngcairo size 1100,820 enhanced font 'DejaVu Sans,11' linewidth 1.5
+set terminal pngcairo size 1100,900 enhanced font 'DejaVu Sans,11' linewidth 1.5
 set output sprintf('%s/precision-energy.png', outdir)
 energyProblems = 'spring kepler-circular kepler-eccentric free-box'
 energyMetric(k) = word('amplitude_error energy_error_max energy_error_max energy_error_max', k)
