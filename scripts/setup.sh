@@ -19,7 +19,9 @@ set -euo pipefail
 #                             and for `stepwise view --screenshot` on a machine without a screen
 #   xdotool                   moves the mouse and presses keys in that display, so the viewer's
 #                             picking test drives the real window (tests/test_viewer.cpp)
-packages=(cmake ninja-build g++ libglm-dev freeglut3-dev catch2 doxygen xvfb xauth xdotool)
+#   gnuplot-nox               the plots of docs/benchmarks.md (scripts/bench.sh draws them from
+#                             stepwise-bench's CSV); -nox: PNG and SVG output without X11
+packages=(cmake ninja-build g++ libglm-dev freeglut3-dev catch2 doxygen xvfb xauth xdotool gnuplot-nox)
 
 if ! command -v dpkg-query >/dev/null 2>&1; then
     echo "setup: dpkg-query not found: this script installs packages on Debian/Ubuntu only." >&2

@@ -127,3 +127,14 @@ TEST_CASE("Every shipped scene runs for one simulated second", "[cli]") {
         CHECK(runStepwise("run '" + entry.path().string() + "' --duration 1").exitCode == 0);
     }
 }
+
+TEST_CASE("stepwise check warns about a spring past its stability limit, and still loads it", "[cli][spring]") {
+    // stress_spring_past.scene: h·ω = 126.5/60 = 2.11 > 2; stress_spring_edge.scene: 1.90, inside.
+    const Result past = runStepwise("check '" + kSourceDir + "/config/stress_spring_past.scene'");
+    CHECK(past.exitCode == 0);
+    CHECK_THAT(past.output, Contains("warning: Spring 'stiff'") && Contains("h*w = ") && Contains("> 2") &&
+                                Contains("use TimeStep < 0.01581 s"));
+    const Result edge = runStepwise("check '" + kSourceDir + "/config/stress_spring_edge.scene'");
+    CHECK(edge.exitCode == 0);
+    CHECK_THAT(edge.output, !Contains("warning"));
+}

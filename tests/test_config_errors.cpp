@@ -235,7 +235,7 @@ TEST_CASE("An unknown record is reported with a did-you-mean", "[config]") {
     const ConfigDiagnostic kinematic = theProblemIn("KinematicObject\n");
     CHECK(kinematic.hint == "did you mean 'KinematicsObject'?");
 
-    const ConfigDiagnostic unknown = theProblemIn("Spring, 1, 2\n");
+    const ConfigDiagnostic unknown = theProblemIn("Teapot, 1, 2\n");  // no record is close to it
     CHECK(unknown.hint.empty());
     CHECK_THAT(unknown.expected, Contains("DynamicObject, KinematicsObject, CollisionPlane, World"));
 }

@@ -242,6 +242,17 @@ int checkCommand(const std::string& scenePath) {
                     vec(p.normal).c_str());
     }
     for (const Expectation& e : scene->expectations) std::printf("  Expect (line %d)  %s\n", e.line, describe(e).c_str());
+    for (const Spring& s : scene->springs) {
+        const std::string other = s.bodyB == kFixedInWorld ? "the world point " + vec(s.anchorB) + " m"
+                                                           : scene->dynamics[s.bodyB].name;
+        std::printf("  Spring           %-16s %s to %s, k %.6g N/m, c %.6g N*s/m, rest length %.6g m\n",
+                    s.name.c_str(), scene->dynamics[s.bodyA].name.c_str(), other.c_str(), double(s.stiffness),
+                    double(s.damping), double(s.restLength));
+    }
+    for (const Attractor& a : scene->attractors) {
+        std::printf("  Attractor        %-16s at %s m, mu %.6g m^3/s^2\n", a.name.c_str(), vec(a.position).c_str(),
+                    double(a.mu));
+    }
     std::printf("OK: %s is a valid scene.\n", scenePath.c_str());
     return kExitOk;
 }

@@ -11,13 +11,16 @@
 /// constant below and is listed in docs/config-format.md) and the rules that
 /// involve more than one field or record: a sphere's default radius comes
 /// from its scale, a plane's normal must not be zero, names are unique, there
-/// is at most one World record. Every problem is collected; only a file with
-/// none becomes a Scene.
+/// is at most one World record, a Spring's bodies exist (they may come later
+/// in the file, so springs are resolved at the end). Every problem is
+/// collected; only a file with none becomes a Scene. Last, springs too stiff
+/// for the time step are *warned* about (Scene::warnings).
 #include "config/scene_loader.hpp"
 
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -28,6 +31,8 @@
 #include "config/scene_records.hpp"
 #include "config/scene_tokenizer.hpp"
 #include "config/spelling.hpp"
+#include "dynamics/inertia.hpp"
+#include "forces/spring_stability.hpp"
 
 namespace stepwise {
 
@@ -86,6 +91,16 @@ constexpr ExpectQuantityField kExpectQuantityFields[] = {
 };
 const std::string kExpectQuantityList =
     "Position[XYZ], Velocity[XYZ], Speed, AngularSpeed, TiltDeg, EnergyChange, AtRest, Asleep, NotThroughPlane";
+/// A spring without Damping= has none: it oscillates for ever (with a symplectic integrator).
+constexpr Real kDefaultDamping = 0;
+/// An unstable spring is warned about once its swing would grow by more than
+/// this factor over the scene's Duration. Symplectic Euler and Verlet past
+/// h·ω = 2 grow far beyond it within a few steps; explicit Euler, whose
+/// amplitude grows by √(1 + h²ω²) every step at any h, is only warned
+/// about when that adds up to a visible change.
+constexpr Real kTolerableGrowth = 2;
+/// ρ above 1 by more than this is growth (symplectic methods have ρ = 1 exactly, up to rounding).
+constexpr Real kGrowthTolerance = Real(1e-12);
 
 const Vec3 kAxisX{1, 0, 0};
 const Vec3 kAxisY{0, 1, 0};
@@ -167,13 +182,19 @@ public:
             case RecordKind::CollisionPlane: addPlane(values, line, index); break;
             case RecordKind::World: setWorld(values, line); break;
             case RecordKind::Expect: addExpect(values, line); break;
+            case RecordKind::Spring: addSpring(values, line, index); break;
+            case RecordKind::Attractor: addAttractor(values, line, index); break;
         }
     }
 
     /// The finished Scene, or ConfigError with every problem found.
     Scene finish() {
         resolveExpectNames();
-        if (sink_.diagnostics().empty()) return std::move(scene_);
+        resolveSprings();
+        if (sink_.diagnostics().empty()) {
+            warnAboutUnstableSprings();
+            return std::move(scene_);
+        }
         std::vector<ConfigDiagnostic> diagnostics = sink_.diagnostics();
         sortByPosition(diagnostics);
         throw ConfigError(std::move(diagnostics));
@@ -483,6 +504,151 @@ private:
         }
     }
 
+    void addSpring(const RecordValues& values, const SceneLine& line, int index) {
+        const Token& recordName = line.tokens.front();
+        PendingSpring pending;
+        pending.spring.name = claimName(values, line, index);
+        pending.line = line.number;
+        pending.bodyA = values.text("BodyA");
+        pending.bodyAColumn = values.valueColumn("BodyA");
+        pending.bodyB = values.text("BodyB");
+        pending.bodyBColumn = values.valueColumn("BodyB");
+        pending.spring.anchorA = values.triple("AnchorA", kZero);
+        pending.spring.anchorB = values.triple("AnchorB", kZero);
+        pending.spring.stiffness = values.number("Stiffness", 0);
+        pending.spring.damping = values.number("Damping", kDefaultDamping);
+        pending.restLengthGiven = values.valueColumn("RestLength") != 0;
+        pending.spring.restLength = values.number("RestLength", 0);
+        if (pending.bodyAColumn == 0) {
+            sink_.report(line.number, recordName.column, "Spring", "a BodyA field (every spring needs one)",
+                         std::string(recordName.text), "name the DynamicObject it pulls, e.g. BodyA=Ball");
+        }
+        if (values.valueColumn("Stiffness") == 0) {
+            sink_.report(line.number, recordName.column, "Spring", "a Stiffness field (every spring needs one)",
+                         std::string(recordName.text), "give the spring constant k in N/m, e.g. Stiffness=100");
+        }
+        pendingSprings_.push_back(std::move(pending));
+    }
+
+    void addAttractor(const RecordValues& values, const SceneLine& line, int index) {
+        const Token& recordName = line.tokens.front();
+        Attractor attractor;
+        attractor.name = claimName(values, line, index);
+        attractor.position = values.triple("Position", kZero);
+        attractor.mu = values.number("Mu", 0);
+        if (values.valueColumn("Mu") == 0) {
+            sink_.report(line.number, recordName.column, "Attractor", "a Mu field (every attractor needs one)",
+                         std::string(recordName.text),
+                         "give its gravitational parameter G*M in m^3/s^2, e.g. Mu=3.986e14 for the Earth");
+        }
+        scene_.attractors.push_back(std::move(attractor));
+    }
+
+    /// Looks up each spring's bodies by name, now that every DynamicObject is
+    /// known, and sets a missing RestLength to the anchors' starting distance.
+    void resolveSprings() {
+        std::map<std::string, std::size_t> dynamicIndex;  // lower-cased name → index in scene_.dynamics
+        std::vector<std::string> dynamicNames;
+        for (std::size_t i = 0; i < scene_.dynamics.size(); ++i) {
+            dynamicIndex.emplace(toLower(scene_.dynamics[i].name), i);
+            dynamicNames.push_back(scene_.dynamics[i].name);
+        }
+        for (PendingSpring& pending : pendingSprings_) {
+            const auto find = [&](const std::optional<std::string>& name, int column,
+                                  const char* field) -> std::optional<std::size_t> {
+                if (!name) return std::nullopt;  // not given, or not a valid name: reported already
+                const auto found = dynamicIndex.find(toLower(*name));
+                if (found != dynamicIndex.end()) return found->second;
+                reportMissingBody(pending.line, column, field, *name, dynamicNames);
+                return std::nullopt;
+            };
+            const std::optional<std::size_t> a = find(pending.bodyA, pending.bodyAColumn, "BodyA");
+            const std::optional<std::size_t> b =
+                pending.bodyBColumn == 0 ? std::optional<std::size_t>(kFixedInWorld)
+                                         : find(pending.bodyB, pending.bodyBColumn, "BodyB");
+            if (!a || !b) continue;
+            if (*a == *b) {
+                sink_.report(pending.line, pending.bodyBColumn, "BodyB", "a body other than BodyA", *pending.bodyB,
+                             "a spring joins two different bodies; leave BodyB out to fix this end in the world "
+                             "at AnchorB");
+                continue;
+            }
+            Spring& spring = pending.spring;
+            spring.bodyA = *a;
+            spring.bodyB = *b;
+            if (!pending.restLengthGiven) {
+                const SpringEnds ends = springEnds(spring, scene_.dynamics);
+                spring.restLength = glm::length(ends.b - ends.a);  // it starts relaxed
+            }
+            scene_.springs.push_back(spring);
+            springLines_.push_back(pending.line);
+        }
+    }
+
+    void reportMissingBody(int line, int column, const char* field, const std::string& name,
+                           const std::vector<std::string>& dynamicNames) {
+        std::string hint;
+        const auto other = names_.find(toLower(name));
+        if (other != names_.end()) {
+            hint = quoted(other->second.name) + " is a " + std::string(other->second.record) +
+                   "; a spring pulls on DynamicObjects only";
+            if (std::string_view(field) == "BodyB") hint += " (leave BodyB out to fix this end in the world at AnchorB)";
+        } else if (const auto suggestion = closestMatch(name, dynamicNames)) {
+            hint = "did you mean '" + *suggestion + "'?";
+        } else {
+            hint = "no DynamicObject in this file is called " + quoted(name);
+        }
+        sink_.report(line, column, field, "the Name of a DynamicObject", name, std::move(hint));
+    }
+
+    /// Adds a warning for every spring whose swing this integrator and time
+    /// step would blow up (spring_stability.hpp has the analysis). The
+    /// warning says how far past the limit the step is and which step is safe.
+    void warnAboutUnstableSprings() {
+        if (scene_.springs.empty()) return;
+        // The effective mass of an off-centre spring needs the bodies' inertia, which the World sets up later.
+        std::vector<DynamicObject> bodies = scene_.dynamics;
+        for (DynamicObject& body : bodies) initialiseMassProperties(body);
+        const WorldSettings& settings = scene_.settings;
+        const Real h = integrationStep(settings);  // the step the integrator takes: a substep under SequentialImpulse
+        const Real steps = std::round(settings.duration / h);
+        for (std::size_t i = 0; i < scene_.springs.size(); ++i) {
+            const Spring& spring = scene_.springs[i];
+            const SpringStability s = analyseSpring(spring, bodies, settings.integrator, h);
+            if (s.growthPerStep <= 1 + kGrowthTolerance) continue;
+            const Real growthOverRun = std::pow(s.growthPerStep, steps);
+            const bool explicitEuler = settings.integrator == IntegratorKind::ExplicitEuler;
+            if (explicitEuler && growthOverRun <= kTolerableGrowth) continue;
+            scene_.warnings.push_back(scene_.sourcePath + ":" + std::to_string(springLines_[i]) +
+                                      ": warning: Spring " + quoted(spring.name) + ": " +
+                                      describeInstability(s, settings, growthOverRun));
+        }
+    }
+
+    static std::string describeInstability(const SpringStability& s, const WorldSettings& settings,
+                                           Real growthOverRun) {
+        const Real h = integrationStep(settings);
+        char text[512];
+        if (settings.integrator == IntegratorKind::ExplicitEuler) {
+            std::snprintf(text, sizeof text,
+                          "explicit Euler feeds energy into its swing: the amplitude grows x%.6g per step "
+                          "(h*w = %.3g, w = sqrt(k/m_eff) = %.4g rad/s), x%.3g over the Duration of %.4g s; "
+                          "use SymplecticEuler or Verlet (stable up to h*w = 2)%s",
+                          double(s.growthPerStep), double(h * s.omega), double(s.omega), double(growthOverRun),
+                          double(settings.duration), s.largestStableStep > 0 ? ", or a smaller TimeStep" : "");
+            return text;
+        }
+        const double limit = double(s.largestStableStep * s.omega);
+        std::snprintf(text, sizeof text,
+                      "the time step is past its stability limit for %s: h*w = %.4g s * %.4g rad/s = %.3g > %.3g "
+                      "(w = sqrt(k/m_eff), m_eff = %.4g kg%s); its swing grows x%.3g every step; "
+                      "use TimeStep < %.4g s",
+                      toString(settings.integrator), double(h), double(s.omega), double(h * s.omega), limit,
+                      double(s.effectiveMass), s.dampingRatio > 0 ? ", the limit is below 2 because of Damping" : "",
+                      double(s.growthPerStep), double(s.largestStableStep * settings.timeStep / h));
+        return text;
+    }
+
     /// The object's name: its Name field, or the record type plus its index
     /// within that type ("DynamicObject0"). Names are unique ignoring case, so
     /// "Ball" and "ball" cannot both exist; the second one is reported.
@@ -560,11 +726,24 @@ private:
         std::size_t expectation = 0;  ///< Index into Scene::expectations.
     };
 
+    /// A Spring as read from its line, before its bodies are looked up by name.
+    struct PendingSpring {
+        Spring spring;                      ///< Everything but the body indices (and maybe the rest length).
+        int line = 0;                       ///< Line of the record.
+        std::optional<std::string> bodyA;   ///< BodyA as written (nullopt when missing or malformed).
+        std::optional<std::string> bodyB;   ///< BodyB as written.
+        int bodyAColumn = 0;                ///< Column of BodyA's value; 0 when not given.
+        int bodyBColumn = 0;                ///< Column of BodyB's value; 0 when not given (a world end).
+        bool restLengthGiven = false;       ///< False: the rest length is the starting distance.
+    };
+
     Scene scene_;
     DiagnosticSink sink_;
     std::vector<PendingName> pendingNames_;  ///< Names used by Expect records.
     std::map<std::string, NameUse> names_;  ///< Lower-cased name → first use.
-    std::array<int, 5> counts_{};           ///< Records seen so far, per RecordKind (for default names).
+    std::array<int, kRecordKindCount> counts_{};  ///< Records seen so far, per RecordKind (for default names).
+    std::vector<PendingSpring> pendingSprings_;   ///< Springs in file order, resolved by finish().
+    std::vector<int> springLines_;                ///< Line of each resolved spring in scene_.springs.
     int worldLine_ = 0;                     ///< Line of the World record; 0 before one is seen.
 };
 

@@ -19,6 +19,7 @@
 #include "config/scene_records.hpp"
 
 #include <algorithm>
+#include <iterator>
 #include <stdexcept>
 
 #include "config/spelling.hpp"
@@ -38,6 +39,11 @@ constexpr std::string_view kTimeHint = "times are in seconds and must be positiv
 constexpr std::string_view kMomentHint = "moments are in seconds from the start of the run, 0 or later";
 constexpr std::string_view kToleranceHint = "a tolerance is the allowed difference, in the quantity's unit, 0 or more";
 constexpr std::string_view kApexHint = "apexes are counted from 1: Apex=3 is the third time the body stops rising";
+constexpr std::string_view kStiffnessHint = "the spring constant k is in N/m; 0 leaves only the damper";
+constexpr std::string_view kDampingHint = "the damper constant c is in N*s/m; 0 means no damping";
+constexpr std::string_view kRestLengthHint = "the rest length is in metres; leave it out to use the starting distance";
+constexpr std::string_view kMuHint =
+    "Mu = G*M is the gravitational parameter in m^3/s^2, e.g. 3.986e14 for the Earth; it must be positive";
 
 // clang-format off
 /// DynamicObject: the classic 19 positional values, then named-only extras.
@@ -130,14 +136,36 @@ constexpr FieldSpec kExpectFields[] = {
     {"Compare",         FieldKind::Compare,    kNamedOnly, Range::Any},
 };
 
+/// Spring: Hooke spring plus damper between two anchors (src/forces/spring.hpp), named fields only.
+constexpr FieldSpec kSpringFields[] = {
+    {"Name",            FieldKind::Name,       kNamedOnly, Range::Any},
+    {"BodyA",           FieldKind::Name,       kNamedOnly, Range::Any},              // a DynamicObject's Name
+    {"BodyB",           FieldKind::Name,       kNamedOnly, Range::Any},              // optional; without it AnchorB is a world point
+    {"AnchorA",         FieldKind::Vector,     kNamedOnly, Range::Any},              // m, in body A's frame
+    {"AnchorB",         FieldKind::Vector,     kNamedOnly, Range::Any},              // m, in body B's frame, or in the world
+    {"Stiffness",       FieldKind::Number,     kNamedOnly, Range::NonNegative, kStiffnessHint},  // N/m, required
+    {"Damping",         FieldKind::Number,     kNamedOnly, Range::NonNegative, kDampingHint},    // N·s/m
+    {"RestLength",      FieldKind::Number,     kNamedOnly, Range::NonNegative, kRestLengthHint}, // m
+};
+
+/// Attractor: a fixed point pulling by the inverse-square law (src/forces/attractor.hpp), named fields only.
+constexpr FieldSpec kAttractorFields[] = {
+    {"Name",            FieldKind::Name,       kNamedOnly, Range::Any},
+    {"Position",        FieldKind::Vector,     kNamedOnly, Range::Any},              // m
+    {"Mu",              FieldKind::Number,     kNamedOnly, Range::Positive, kMuHint},  // m³/s², required
+};
+
 constexpr RecordSpec kRecords[] = {
     {RecordKind::DynamicObject,    "DynamicObject",    kDynamicFields},
     {RecordKind::KinematicsObject, "KinematicsObject", kKinematicFields},
     {RecordKind::CollisionPlane,   "CollisionPlane",   kPlaneFields},
     {RecordKind::World,            "World",            kWorldFields},
     {RecordKind::Expect,           "Expect",           kExpectFields},
+    {RecordKind::Spring,           "Spring",           kSpringFields},
+    {RecordKind::Attractor,        "Attractor",        kAttractorFields},
 };
 // clang-format on
+static_assert(std::size(kRecords) == kRecordKindCount, "one record table per RecordKind");
 
 /// Component letters of the two three-number kinds.
 constexpr std::string_view kVectorAxes = "XYZ";

@@ -49,7 +49,10 @@ struct FieldSpec {
 };
 
 /// @brief The kinds of line a scene file may contain.
-enum class RecordKind : std::uint8_t { DynamicObject, KinematicsObject, CollisionPlane, World, Expect };
+enum class RecordKind : std::uint8_t { DynamicObject, KinematicsObject, CollisionPlane, World, Expect, Spring, Attractor };
+
+/// @brief Number of RecordKind values.
+inline constexpr std::size_t kRecordKindCount = 7;
 
 /// @brief One record type: its name and its field table.
 struct RecordSpec {

@@ -5,6 +5,8 @@
 #include <functional>
 #include <span>
 
+#include "forces/attractor.hpp"
+#include "forces/spring.hpp"
 #include "objects/game_object.hpp"
 
 namespace stepwise {
@@ -27,14 +29,30 @@ using AccelerationFunction = std::function<void(std::span<DynamicObject>)>;
 /// in a uniform field the mass cancels, which is why a feather and a hammer
 /// fall together on the Moon. A uniform field acts at the centre of mass, so
 /// its torque about the centre is zero: τ = Σ rᵢ × mᵢ·g = (Σ mᵢ·rᵢ) × g = 0,
-/// because Σ mᵢ·rᵢ = 0 about the centre of mass. No other torque source
-/// exists yet (mouse picking and motors will add them here), but the torque
-/// is still reset every step: it is a real output of this stage.
+/// because Σ mᵢ·rᵢ = 0 about the centre of mass. The torque is reset here
+/// every step, and the forces applied after it (springs hooked off the
+/// centre, see SceneForces) add theirs.
 /// @param bodies  the dynamic bodies (acceleration is written)
 /// @param gravity the World's gravitational acceleration, m/s²
 void applyUniformForces(std::span<DynamicObject> bodies, const Vec3& gravity);
 
 /// @brief The AccelerationFunction of a World whose only forces are uniform fields.
 AccelerationFunction uniformForces(const Vec3& gravity);
+
+/// @brief Stage 1 as World::step() runs it: the uniform fields, then every spring, then every attractor.
+///
+/// A function object, so that it can be an AccelerationFunction and velocity
+/// Verlet evaluates exactly the same forces at the new positions. The World
+/// wraps it by reference (`std::cref`), so building the callback every step
+/// allocates nothing. The order matters only in that applyUniformForces()
+/// *sets* the accelerations and torques, and the others add to them.
+struct SceneForces {
+    Vec3 gravity{0, 0, 0};                   ///< The World's uniform gravity, m/s².
+    std::span<const Spring> springs;         ///< The World's springs (src/forces/spring.hpp).
+    std::span<const Attractor> attractors;   ///< The World's attractors (src/forces/attractor.hpp).
+
+    /// @brief Writes every body's acceleration (m/s²) and torque (N·m) from the bodies' current state.
+    void operator()(std::span<DynamicObject> bodies) const;
+};
 
 }  // namespace stepwise

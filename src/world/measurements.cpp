@@ -21,7 +21,11 @@ Energy energyOf(const World& world) {
         energy.translational += own.translational;
         energy.rotational += own.rotational;
         energy.potential += own.potential;
+        for (const Attractor& attractor : world.attractors()) {
+            energy.potential += attractorPotentialEnergy(attractor, body.mass, body.position);
+        }
     }
+    for (const Spring& spring : world.springs()) energy.potential += springPotentialEnergy(spring, world.dynamics());
     energy.kinetic = energy.translational + energy.rotational;
     return energy;
 }

@@ -11,18 +11,21 @@ struct Energy {
     Real translational = 0;  ///< Σ ½·m·|v|²: motion of the centres of mass.
     Real rotational = 0;     ///< Σ ½·ω·L: spin about the centres of mass.
     Real kinetic = 0;        ///< translational + rotational (energyOf() fills all three).
-    Real potential = 0;      ///< Σ −m·(g + a_obj)·x: potential of the uniform fields, zero at the origin.
+    /// Potential energy: Σ −m·(g + a_obj)·x of the uniform fields (zero at the origin),
+    /// plus ½·k·(l − L₀)² per spring and −μ·m/r per body and attractor (zero far away).
+    Real potential = 0;
     /// @brief Kinetic plus potential, J.
     Real total() const { return kinetic + potential; }
 };
 
-/// @brief Kinetic energy, split into translational and rotational, and the potential energy of the uniform fields.
+/// @brief Kinetic energy, split into translational and rotational, and the potential energy of every force.
 ///
 /// By König's theorem the kinetic energy of a rigid body is that of its
 /// centre of mass plus that of its spin about it:
 /// \f[ T = \tfrac12 m\,|v|^2 + \tfrac12\,\omega\cdot L, \qquad L = I_\text{world}\,\omega . \f]
 /// A uniform acceleration g has potential U = −m·g·x per body (for g = (0,−9.81,0)
-/// that is m·9.81·y, the familiar m·g·h).
+/// that is m·9.81·y, the familiar m·g·h); a spring stores ½·k·(l − L₀)²
+/// (springPotentialEnergy()), an attractor gives −μ·m/r (attractorPotentialEnergy()).
 Energy energyOf(const World& world);
 
 /// @brief The same energies for one body in a uniform field @p gravity (energyOf(world) sums these).

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "forces/attractor.hpp"
+#include "forces/spring.hpp"
 #include "objects/game_object.hpp"
 #include "world/expectations.hpp"
 #include "world/world_settings.hpp"
@@ -21,6 +23,8 @@ struct Scene {
     std::vector<DynamicObject> dynamics;     ///< Simulated bodies.
     std::vector<KinematicsObject> kinematics;///< Prescribed-motion bodies.
     std::vector<CollisionPlane> planes;      ///< Infinite planes.
+    std::vector<Spring> springs;             ///< Springs between dynamic bodies (indices into `dynamics`).
+    std::vector<Attractor> attractors;       ///< Fixed points pulling by the inverse-square law.
     std::vector<std::string> warnings;       ///< Things that load but may surprise (e.g. features not yet simulated).
     std::vector<Expectation> expectations;   ///< `Expect` records: what `stepwise run` checks (World ignores them).
 };

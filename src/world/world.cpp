@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <stdexcept>
 
 #include "collision/narrowphase.hpp"
@@ -29,7 +30,9 @@ World::World(Scene scene)
     : settings_(scene.settings),
       dynamics_(std::move(scene.dynamics)),
       kinematics_(std::move(scene.kinematics)),
-      planes_(std::move(scene.planes)) {
+      planes_(std::move(scene.planes)),
+      springs_(std::move(scene.springs)),
+      attractors_(std::move(scene.attractors)) {
     require(isFinite(settings_.timeStep) && settings_.timeStep > 0, "World", "time step must be > 0 s");
     require(stepwise::isFinite(settings_.gravity), "World", "gravity must be finite");
     require(settings_.impulseIterations >= 1, "World", "impulse iterations must be at least 1");
@@ -48,6 +51,22 @@ World::World(Scene scene)
         const Real length = glm::length(plane.normal);
         require(isFinite(length) && length > 0, plane.name, "plane normal must not be zero");
         plane.normal /= length;
+    }
+    for (const Spring& spring : springs_) {
+        const auto joins = [&](std::size_t index) { return index < dynamics_.size(); };
+        require(joins(spring.bodyA), spring.name, "BodyA must be one of the dynamic bodies");
+        require(spring.bodyB == kFixedInWorld || joins(spring.bodyB), spring.name,
+                "BodyB must be one of the dynamic bodies, or kFixedInWorld");
+        require(spring.bodyA != spring.bodyB, spring.name, "a spring must join two different bodies");
+        require(isFinite(spring.stiffness) && spring.stiffness >= 0 && isFinite(spring.damping) &&
+                    spring.damping >= 0 && isFinite(spring.restLength) && spring.restLength >= 0,
+                spring.name, "stiffness, damping and rest length must be >= 0");
+        require(stepwise::isFinite(spring.anchorA) && stepwise::isFinite(spring.anchorB), spring.name,
+                "anchors must be finite");
+    }
+    for (const Attractor& attractor : attractors_) {
+        require(isFinite(attractor.mu) && attractor.mu > 0, attractor.name, "Mu must be > 0 m^3/s^2");
+        require(stepwise::isFinite(attractor.position), attractor.name, "position must be finite");
     }
 }
 
@@ -85,7 +104,8 @@ void World::integrate(Real h, const AccelerationFunction& forces) {
 /// collisions the move made. Each line is one stage, in its own file.
 void World::stepWithImpulses() {
     const Real h = settings_.timeStep;
-    const AccelerationFunction forces = uniformForces(settings_.gravity);
+    const SceneForces sceneForces{settings_.gravity, springs_, attractors_};  // gravity, springs, attractors
+    const AccelerationFunction forces = std::cref(sceneForces);  // by reference: no allocation per step
 
     // 1. Forces → accelerations (src/forces/apply_forces.cpp)
     runStage(Stage::ApplyForces, [&] { forces(dynamics_); });
@@ -132,7 +152,8 @@ void World::measureSweeps(Real h) {
 void World::stepWithSequentialImpulses() {
     const Real h = settings_.timeStep;
     const Real hs = h / Real(settings_.substeps);
-    const AccelerationFunction forces = uniformForces(settings_.gravity);
+    const SceneForces sceneForces{settings_.gravity, springs_, attractors_};  // gravity, springs, attractors
+    const AccelerationFunction forces = std::cref(sceneForces);  // by reference: no allocation per step
     ContactSolverSettings contactSettings;
     contactSettings.substep = hs;
     contactSettings.accumulate = settings_.accumulateImpulses;

@@ -29,7 +29,8 @@ class World {
 public:
     /// @brief Takes the objects and settings of @p scene.
     /// @throws std::invalid_argument naming the object when a value is impossible
-    ///         (mass ≤ 0, radius ≤ 0, non-finite numbers, zero plane normal, time step ≤ 0).
+    ///         (mass ≤ 0, radius ≤ 0, non-finite numbers, zero plane normal, time step ≤ 0,
+    ///         a spring joining a missing body or a body to itself, negative stiffness, μ ≤ 0).
     explicit World(Scene scene);
 
     /// @brief Advances the simulation by one time step (see world.cpp for the stages).
@@ -45,6 +46,8 @@ public:
     std::vector<KinematicsObject>& kinematics() { return kinematics_; }       ///< Prescribed-motion bodies.
     const std::vector<KinematicsObject>& kinematics() const { return kinematics_; }  ///< Prescribed-motion bodies.
     const std::vector<CollisionPlane>& planes() const { return planes_; }     ///< Infinite planes.
+    const std::vector<Spring>& springs() const { return springs_; }           ///< Springs (src/forces/spring.hpp).
+    const std::vector<Attractor>& attractors() const { return attractors_; }  ///< Central forces (src/forces/attractor.hpp).
 
     /// @brief The dynamic body called @p name, or nullptr.
     const DynamicObject* findDynamic(std::string_view name) const;
@@ -69,6 +72,8 @@ private:
     std::vector<DynamicObject> dynamics_;
     std::vector<KinematicsObject> kinematics_;
     std::vector<CollisionPlane> planes_;
+    std::vector<Spring> springs_;
+    std::vector<Attractor> attractors_;
 
     std::vector<Aabb> boundingBoxes_;
     std::vector<CandidatePair> pairs_;

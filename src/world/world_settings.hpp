@@ -93,6 +93,14 @@ struct WorldSettings {
     Real timeToSleep = kDefaultTimeToSleep;            ///< Still for this long → asleep, s.
 };
 
+/// @brief The step the integrator takes, s: TimeStep, or TimeStep/Substeps under
+/// SequentialImpulse (which integrates every substep). Stability limits such as
+/// a spring's h·ω < 2 apply to this step.
+inline Real integrationStep(const WorldSettings& settings) {
+    return settings.solver == SolverKind::SequentialImpulse ? settings.timeStep / Real(settings.substeps)
+                                                            : settings.timeStep;
+}
+
 /// @brief The contact frequency the sequential-impulse solver really uses, Hz:
 /// ContactHertz, capped at a quarter of the substep rate substeps/h.
 inline Real contactHertzInUse(const WorldSettings& settings) {

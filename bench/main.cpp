@@ -1,0 +1,95 @@
+/// @file main.cpp
+/// @brief `stepwise-bench`: the benchmark programs behind docs/benchmarks.md.
+///
+///     stepwise-bench precision [--quick] [--repeats N] [--csv PATH] [--markdown PATH]
+///                              [--config DIR] [--problems a,b,...]
+///
+/// Subcommands to come: `stress` (stiff springs, deep stacks), `bullet`
+/// (fast bodies and thin walls).
+#include <cstdio>
+#include <cstdlib>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "precision.hpp"
+
+namespace {
+
+constexpr int kExitOk = 0;
+constexpr int kExitUsage = 2;
+
+const char* const kUsage =
+    "usage: stepwise-bench precision [options]\n"
+    "\n"
+    "  Runs every reference problem (config/reference_*.scene) with every integrator\n"
+    "  at time steps 1/30 ... 1/1920 s and prints each run's errors against the exact\n"
+    "  solution and its cost in nanoseconds per step (median of the repetitions).\n"
+    "\n"
+    "  --quick           two time steps, one repetition: a smoke test\n"
+    "  --repeats N       timed repetitions per point (default 5)\n"
+    "  --csv PATH        write every measurement as CSV (one row per metric)\n"
+    "  --markdown PATH   write the tables as Markdown (for docs/benchmarks.md)\n"
+    "  --config DIR      where the scene files are (default: the source tree's config/)\n"
+    "  --problems LIST   comma-separated problem names, e.g. spring,bounce\n"
+    "\n"
+    "  scripts/bench.sh runs it and draws the plots into docs/images/.\n";
+
+int usageError(const std::string& message) {
+    std::fprintf(stderr, "stepwise-bench: error: %s\n\n%s", message.c_str(), kUsage);
+    return kExitUsage;
+}
+
+std::vector<std::string> splitCommas(const std::string& text) {
+    std::vector<std::string> parts;
+    std::istringstream in(text);
+    std::string part;
+    while (std::getline(in, part, ',')) {
+        if (!part.empty()) parts.push_back(part);
+    }
+    return parts;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const std::vector<std::string> args(argv + 1, argv + argc);
+    if (args.empty() || args[0] == "--help" || args[0] == "-h") {
+        std::fputs(kUsage, args.empty() ? stderr : stdout);
+        return args.empty() ? kExitUsage : kExitOk;
+    }
+    if (args[0] != "precision") return usageError("unknown subcommand '" + args[0] + "' (only 'precision' so far)");
+
+    stepwise::bench::PrecisionOptions options;
+    options.configDir = STEPWISE_CONFIG_DIR;
+    for (std::size_t i = 1; i < args.size(); ++i) {
+        const std::string& arg = args[i];
+        const auto value = [&]() -> const std::string* { return i + 1 < args.size() ? &args[++i] : nullptr; };
+        if (arg == "--quick") {
+            options.quick = true;
+        } else if (arg == "--repeats" || arg == "--csv" || arg == "--markdown" || arg == "--config" ||
+                   arg == "--problems") {
+            const std::string* v = value();
+            if (!v) return usageError(arg + " needs a value");
+            if (arg == "--repeats") {
+                char* end = nullptr;
+                const long n = std::strtol(v->c_str(), &end, 10);
+                if (end == v->c_str() || *end != '\0' || n < 1 || n > 1000) {
+                    return usageError("--repeats expects a whole number from 1 to 1000, found '" + *v + "'");
+                }
+                options.repeats = static_cast<int>(n);
+            } else if (arg == "--csv") {
+                options.csvPath = *v;
+            } else if (arg == "--markdown") {
+                options.markdownPath = *v;
+            } else if (arg == "--config") {
+                options.configDir = *v;
+            } else {
+                options.only = splitCommas(*v);
+            }
+        } else {
+            return usageError("unknown option '" + arg + "'");
+        }
+    }
+    return stepwise::bench::runPrecision(options);
+}

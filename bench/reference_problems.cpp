@@ -1,0 +1,343 @@
+/// @file reference_problems.cpp
+/// @brief Each reference problem: what its scene must hold, its exact solution, and its error measures.
+#include "reference_problems.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "core/errors.hpp"
+#include "exact_solutions.hpp"
+#include "world/world.hpp"
+
+namespace stepwise::bench {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kPi = 3.14159265358979323846;
+
+/// The spring is judged after this many periods, the orbits after this many revolutions (issue #7).
+constexpr double kPeriodsMeasured = 10;
+/// The bounce is judged on this many apexes: by the fifth the ball is 0.1 m
+/// high and the contact starts to count as resting.
+constexpr int kApexesMeasured = 4;
+/// Runge–Kutta step of the free box's reference, s: 1/10 000 of the finest
+/// step swept; RK4's error ∝ dt⁴ puts its flip times within 10⁻⁹ s (checked
+/// against dt·2 when the reference is built).
+constexpr double kReferenceStep = 1e-5;
+/// Two positions or velocities closer than this (relative) count as equal when checking a scene's shape.
+constexpr double kShapeTolerance = 1e-9;
+
+DVec3 d(const Vec3& v) { return DVec3(v); }
+
+void require(bool condition, const std::string& scene, const std::string& what) {
+    if (!condition) throw std::runtime_error(scene + ": " + what);
+}
+
+/// Steps from t = 0 to the whole number of steps nearest @p duration.
+std::uint64_t stepsFor(double duration, double h) { return static_cast<std::uint64_t>(std::llround(duration / h)); }
+
+/// Runs @p steps steps, calling observe(world) after each; stops at a SimulationError and says where.
+template <class Observer>
+Measurement run(World& world, std::uint64_t steps, Observer&& observe) {
+    Measurement m;
+    try {
+        for (std::uint64_t i = 0; i < steps; ++i) {
+            world.step();
+            observe(world);
+        }
+    } catch (const SimulationError& error) {
+        m.note = "blew up at step " + std::to_string(world.stepCount()) + " (" + error.what() + ")";
+    }
+    m.steps = world.stepCount();
+    return m;
+}
+
+/// True when the run did not reach its planned end: its end-of-run errors are then NaN.
+bool cutShort(const Measurement& m, std::uint64_t planned) { return m.steps < planned; }
+
+double wrapAngle(double a) { return std::remainder(a, 2 * kPi); }  // into [−π, π]
+
+// ------------------------------------------------------------------ projectile
+
+ProblemRunner prepareProjectile(const Scene& scene) {
+    const std::string& file = scene.sourcePath;
+    require(scene.dynamics.size() == 1 && scene.planes.empty() && scene.kinematics.empty() &&
+                scene.springs.empty() && scene.attractors.empty(),
+            file, "the projectile problem needs exactly one DynamicObject and nothing else (no floor to hit)");
+    const DynamicObject& body = scene.dynamics[0];
+    const PointState start{d(body.position), d(body.velocity)};
+    const DVec3 g = d(scene.settings.gravity + body.constantAcceleration);
+    const double duration = double(scene.settings.duration);
+    return [=](IntegratorKind integrator, double h) {
+        World world(withStep(scene, integrator, h));
+        const std::uint64_t steps = stepsFor(duration, h);
+        Measurement m = run(world, steps, [](const World&) {});
+        const PointState exact = projectileAt(start, g, double(m.steps) * h);
+        const DynamicObject& b = world.dynamics()[0];
+        const bool whole = !cutShort(m, steps);
+        m.metrics = {{"position_error", "m", whole ? glm::length(d(b.position) - exact.position) : kNaN},
+                     {"velocity_error", "m/s", whole ? glm::length(d(b.velocity) - exact.velocity) : kNaN}};
+        return m;
+    };
+}
+
+// ------------------------------------------------------------------ spring
+
+/// A body on a spring to a fixed point, moving along the spring's line: u¨ = −(k/m)·u with
+/// u = l − L₀ the stretch. The exact solution is the cosine of oscillatorAt().
+ProblemRunner prepareSpring(const Scene& scene) {
+    const std::string& file = scene.sourcePath;
+    require(scene.dynamics.size() == 1 && scene.springs.size() == 1 && scene.attractors.empty() &&
+                scene.planes.empty() && scene.kinematics.empty(),
+            file, "the spring problem needs one DynamicObject, one Spring and nothing else");
+    const Spring& spring = scene.springs[0];
+    const DynamicObject& body = scene.dynamics[0];
+    require(spring.bodyB == kFixedInWorld && glm::length(spring.anchorA) == 0, file,
+            "the spring must hold the body's centre (AnchorA=(0, 0, 0)) to a fixed point (no BodyB)");
+    require(spring.damping == 0 && glm::length(scene.settings.gravity + body.constantAcceleration) == 0, file,
+            "the spring problem has an exact cosine only without damping and without gravity");
+    const DVec3 anchor = d(spring.anchorB);
+    const DVec3 offset = d(body.position) - anchor;
+    const DVec3 axis = glm::normalize(offset);
+    require(glm::length(glm::cross(axis, d(body.velocity))) <= kShapeTolerance * (1 + glm::length(d(body.velocity))),
+            file, "the body must start moving along the spring (or at rest), so it stays on the line");
+    const double omega = std::sqrt(double(spring.stiffness) / double(body.mass));
+    const double u0 = glm::length(offset) - double(spring.restLength);
+    const double rate0 = glm::dot(axis, d(body.velocity));
+    const double stiffness = double(spring.stiffness), mass = double(body.mass);
+    const auto energy = [=](double u, double rate) { return 0.5 * mass * rate * rate + 0.5 * stiffness * u * u; };
+    const double e0 = energy(u0, rate0);
+    const double restLength = double(spring.restLength);
+    const double duration = kPeriodsMeasured * 2 * kPi / omega;
+
+    return [=](IntegratorKind integrator, double h) {
+        World world(withStep(scene, integrator, h));
+        const std::uint64_t steps = stepsFor(duration, h);
+        double worstEnergy = 0;
+        const auto stretch = [&](const DynamicObject& b) {
+            const DVec3 r = d(b.position) - anchor;
+            return std::pair{glm::length(r) - restLength, glm::dot(glm::normalize(r), d(b.velocity))};
+        };
+        Measurement m = run(world, steps, [&](const World& w) {
+            const auto [u, rate] = stretch(w.dynamics()[0]);
+            worstEnergy = std::max(worstEnergy, std::abs(energy(u, rate) - e0) / e0);
+        });
+        if (cutShort(m, steps)) {
+            m.metrics = {{"phase_error", "rad", kNaN}, {"amplitude_error", "1", kNaN}, {"energy_error_max", "1", kNaN}};
+            return m;
+        }
+        const auto [u, rate] = stretch(world.dynamics()[0]);
+        const auto [uExact, rateExact] = oscillatorAt(u0, rate0, omega, double(m.steps) * h);
+        // u = A·cos θ, u̇ = −A·ω·sin θ: the phase θ and the amplitude A of the swing.
+        const double phase = std::atan2(-rate / omega, u), phaseExact = std::atan2(-rateExact / omega, uExact);
+        const double amplitude = std::hypot(u, rate / omega), amplitudeExact = std::hypot(uExact, rateExact / omega);
+        m.metrics = {{"phase_error", "rad", std::abs(wrapAngle(phase - phaseExact))},
+                     {"amplitude_error", "1", amplitude / amplitudeExact - 1},
+                     {"energy_error_max", "1", worstEnergy}};
+        return m;
+    };
+}
+
+// ------------------------------------------------------------------ Kepler orbits
+
+/// One body about one Attractor, no gravity: Kepler's problem, solved exactly by KeplerOrbit.
+ProblemRunner prepareKepler(const Scene& scene) {
+    const std::string& file = scene.sourcePath;
+    require(scene.dynamics.size() == 1 && scene.attractors.size() == 1 && scene.springs.empty() &&
+                scene.planes.empty() && scene.kinematics.empty(),
+            file, "an orbit problem needs one DynamicObject, one Attractor and nothing else");
+    const DynamicObject& body = scene.dynamics[0];
+    require(glm::length(scene.settings.gravity + body.constantAcceleration) == 0, file,
+            "an orbit problem has no uniform gravity: set World, Gravity=(0, 0, 0)");
+    const Attractor& centre = scene.attractors[0];
+    const double mu = double(centre.mu);
+    const DVec3 origin = d(centre.position);
+    const PointState start{d(body.position) - origin, d(body.velocity)};
+    const KeplerOrbit orbit(start, mu);  // throws if the orbit is not bound
+    const double e0 = orbit.specificEnergy();
+    const double duration = kPeriodsMeasured * orbit.period();
+    const auto energy = [=](const DynamicObject& b) {
+        return 0.5 * glm::dot(d(b.velocity), d(b.velocity)) - mu / glm::length(d(b.position) - origin);
+    };
+
+    return [=](IntegratorKind integrator, double h) {
+        World world(withStep(scene, integrator, h));
+        const std::uint64_t steps = stepsFor(duration, h);
+        double worstEnergy = 0;
+        Measurement m = run(world, steps, [&](const World& w) {
+            worstEnergy = std::max(worstEnergy, std::abs(energy(w.dynamics()[0]) - e0) / std::abs(e0));
+        });
+        if (cutShort(m, steps)) {
+            m.metrics = {{"position_error", "m", kNaN}, {"energy_drift", "1", kNaN}, {"energy_error_max", "1", kNaN}};
+            return m;
+        }
+        const DynamicObject& b = world.dynamics()[0];
+        const PointState exact = orbit.at(double(m.steps) * h);
+        m.metrics = {{"position_error", "m", glm::length(d(b.position) - origin - exact.position)},
+                     {"energy_drift", "1", (energy(b) - e0) / std::abs(e0)},
+                     {"energy_error_max", "1", worstEnergy}};
+        return m;
+    };
+}
+
+// ------------------------------------------------------------------ torque-free box
+
+/// A box spun near its intermediate axis with no force and no torque: the
+/// Dzhanibekov flip. Its flip times come from Euler's equations by RK4
+/// (exact_solutions.hpp); |L| and the kinetic energy are conserved exactly.
+ProblemRunner prepareFreeBox(const Scene& scene) {
+    const std::string& file = scene.sourcePath;
+    require(scene.dynamics.size() == 1 && scene.springs.empty() && scene.attractors.empty() && scene.planes.empty() &&
+                scene.kinematics.empty(),
+            file, "the free-box problem needs one DynamicObject and nothing else");
+    require(glm::length(scene.settings.gravity + scene.dynamics[0].constantAcceleration) == 0, file,
+            "the free-box problem has no gravity (it would not turn the box, but it would carry it away)");
+    // The World fills in the inertia; build one to read it.
+    const World initial(scene);
+    const DynamicObject& body = initial.dynamics()[0];
+    const DVec3 moments = d(body.inertiaBody);
+    // The intermediate axis: neither the largest nor the smallest moment.
+    std::array<int, 3> order{0, 1, 2};
+    std::sort(order.begin(), order.end(), [&](int i, int j) { return moments[i] < moments[j]; });
+    const int axis = order[1];
+    const DVec3 omegaBody = glm::conjugate(glm::dquat(body.orientation)) * d(body.angularVelocity);
+    const double duration = double(scene.settings.duration);
+    const std::vector<double> reference = flipTimes(moments, omegaBody, axis, duration, kReferenceStep);
+    const std::vector<double> coarser = flipTimes(moments, omegaBody, axis, duration, 2 * kReferenceStep);
+    require(!reference.empty(), file, "the box never flips within Duration: spin it near its intermediate axis");
+    require(coarser.size() == reference.size(), file, "the flip reference does not converge");
+    const double l0 = glm::length(d(body.angularMomentum));
+    const double e0 = 0.5 * glm::dot(d(body.angularVelocity), d(body.angularMomentum));
+
+    return [=](IntegratorKind integrator, double h) {
+        World world(withStep(scene, integrator, h));
+        const std::uint64_t steps = stepsFor(duration, h);
+        const auto side = [axis](const DynamicObject& b) {
+            return (glm::conjugate(glm::dquat(b.orientation)) * d(b.angularMomentum))[axis];
+        };
+        std::vector<double> flips;
+        double previous = side(world.dynamics()[0]);
+        double worstMomentum = 0, worstEnergy = 0;
+        Measurement m = run(world, steps, [&](const World& w) {
+            const DynamicObject& b = w.dynamics()[0];
+            const double now = side(b);
+            const double t = double(w.time());
+            if ((now < 0) != (previous < 0)) flips.push_back(t - h + h * previous / (previous - now));
+            previous = now;
+            worstMomentum = std::max(worstMomentum, std::abs(glm::length(d(b.angularMomentum)) - l0) / l0);
+            const double e = 0.5 * glm::dot(d(b.angularVelocity), d(b.angularMomentum));
+            worstEnergy = std::max(worstEnergy, std::abs(e - e0) / e0);
+        });
+        double worstFlip = 0;
+        for (std::size_t i = 0; i < reference.size(); ++i) {
+            worstFlip = i < flips.size() ? std::max(worstFlip, std::abs(flips[i] - reference[i])) : kNaN;
+        }
+        if (flips.size() != reference.size()) {
+            m.note = std::to_string(flips.size()) + " flips instead of " + std::to_string(reference.size());
+        }
+        const bool whole = !cutShort(m, steps);
+        m.metrics = {{"flip_time_error", "s", whole ? worstFlip : kNaN},
+                     {"energy_error_max", "1", whole ? worstEnergy : kNaN},
+                     {"momentum_error_max", "1", whole ? worstMomentum : kNaN}};
+        return m;
+    };
+}
+
+// ------------------------------------------------------------------ bouncing ball
+
+/// A ball dropped on a plane: with restitution e (ball's times plane's) each
+/// bounce keeps e² of the energy, so apex n is at e^(2n)·h₀ above the floor.
+ProblemRunner prepareBounce(const Scene& scene) {
+    const std::string& file = scene.sourcePath;
+    require(scene.dynamics.size() == 1 && scene.planes.size() == 1 && scene.springs.empty() &&
+                scene.attractors.empty() && scene.kinematics.empty() && scene.dynamics[0].shape == Shape::Sphere,
+            file, "the bounce problem needs one sphere above one CollisionPlane and nothing else");
+    const DynamicObject& ball = scene.dynamics[0];
+    const CollisionPlane& floor = scene.planes[0];
+    const DVec3 normal = glm::normalize(d(floor.normal));
+    const DVec3 g = d(scene.settings.gravity + ball.constantAcceleration);
+    const double gravity = -glm::dot(g, normal);
+    require(gravity > 0 && glm::length(glm::cross(g, normal)) <= kShapeTolerance * glm::length(g), file,
+            "gravity must point straight into the floor");
+    require(glm::length(d(ball.velocity)) == 0, file, "the ball must start at rest");
+    const double radius = double(ball.radius);
+    const double dropHeight = glm::dot(d(ball.position) - d(floor.position), normal) - radius;
+    const double restitution = double(ball.elasticity) * double(floor.elasticity);
+    const double duration = double(scene.settings.duration);
+
+    return [=](IntegratorKind integrator, double h) {
+        World world(withStep(scene, integrator, h));
+        const std::uint64_t steps = stepsFor(duration, h);
+        std::vector<double> apexes;
+        double previousRate = 0;
+        Measurement m = run(world, steps, [&](const World& w) {
+            if (static_cast<int>(apexes.size()) >= kApexesMeasured) return;
+            const DynamicObject& b = w.dynamics()[0];
+            const double rate = glm::dot(d(b.velocity), normal);
+            if (previousRate > 0 && rate <= 0) {
+                // Past the top: the ballistic apex of this state, height + v²/(2g), is where it turned.
+                const double height = glm::dot(d(b.position) - d(floor.position), normal) - radius;
+                apexes.push_back(height + rate * rate / (2 * gravity));
+            }
+            previousRate = rate;
+        });
+        double worst = 0;
+        double first = kNaN;
+        double expected = dropHeight;
+        for (int n = 0; n < kApexesMeasured; ++n) {
+            expected *= restitution * restitution;
+            const double error = n < static_cast<int>(apexes.size()) ? std::abs(apexes[n] / expected - 1) : kNaN;
+            worst = std::max(worst, error);  // NaN propagates: a missing apex is no measurement
+            if (n == 0) first = error;
+            if (std::isnan(error)) worst = kNaN;
+        }
+        if (static_cast<int>(apexes.size()) < kApexesMeasured) {
+            m.note = std::to_string(apexes.size()) + " apexes instead of " + std::to_string(kApexesMeasured);
+        }
+        m.metrics = {{"apex_error_max", "1", worst}, {"first_apex_error", "1", first}};
+        return m;
+    };
+}
+
+// ------------------------------------------------------------------ the list
+
+const std::vector<ReferenceProblem>& problems() {
+    static const std::vector<ReferenceProblem> list = {
+        {"projectile", "reference_projectile.scene", "A ball thrown under uniform gravity, position at t = 2 s",
+         prepareProjectile, ""},
+        {"spring", "reference_spring.scene", "A mass on a Spring (k = 100 N/m, m = 1 kg), phase after 10 periods",
+         prepareSpring, ""},
+        {"kepler-circular", "reference_kepler_circular.scene", "A circular orbit about an Attractor, after 10 orbits",
+         prepareKepler, ""},
+        {"kepler-eccentric", "reference_kepler_eccentric.scene", "An e = 0.5 orbit about an Attractor, after 10 orbits",
+         prepareKepler, ""},
+        {"free-box", "reference_free_box.scene", "A 1x2x3 box spun near its middle axis, Dzhanibekov flip times",
+         prepareFreeBox, ""},
+        {"bounce", "reference_bounce.scene", "A ball dropped 1 m with e = 0.8, apexes against e^(2n) * 1 m",
+         prepareBounce, ""},
+        // SLOT(pendulum): a bob on a DistanceJoint, its period against the exact
+        // 4·√(L/g)·K(sin(θ₀/2)) (complete elliptic integral K). Waiting for the
+        // DistanceJoint record (issue #4), which is being written; then add
+        // config/reference_pendulum.scene and a preparePendulum() here.
+        {"pendulum", "", "A pendulum's period against 4 sqrt(L/g) K(sin(theta0/2))", nullptr,
+         "needs the DistanceJoint record (issue #4), not merged yet"},
+    };
+    return list;
+}
+
+}  // namespace
+
+std::span<const ReferenceProblem> referenceProblems() { return problems(); }
+
+Scene withStep(const Scene& scene, IntegratorKind integrator, double h) {
+    Scene copy = scene;
+    copy.settings.integrator = integrator;
+    copy.settings.timeStep = Real(h);
+    return copy;
+}
+
+}  // namespace stepwise::bench

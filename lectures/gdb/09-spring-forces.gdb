@@ -1,0 +1,26 @@
+# Lecture 9: one spring force, evaluated twice per step by velocity Verlet.
+# Line numbers are those of the commit named in the lecture; check them if the file has changed.
+#   interactive:  gdb -x lectures/gdb/09-spring-forces.gdb --args build/debug/stepwise run config/reference_spring.scene --steps 2
+#   (the lecture's run uses a copy of the scene with Integrator=Verlet)
+#   all at once:  gdb -q -batch -x lectures/gdb/09-spring-forces.gdb --args build/debug/stepwise run SCENE --steps 2
+break spring.cpp:64
+run
+p length
+p spring.restLength
+p stretchRate
+p forceOnA
+frame function stepwise::World::step
+frame 0
+continue
+p length
+p stretchRate
+p forceOnA
+frame function stepwise::integrateVerlet
+p bodies._M_ptr[0].velocity
+frame 0
+finish
+p bodies._M_ptr[0].position
+p bodies._M_ptr[0].velocity
+continue
+p length
+p forceOnA
