@@ -317,10 +317,17 @@ TEST_CASE("A moment the run never reaches fails as not reached", "[expect]") {
     CHECK_THAT(window.result.reason, Contains("not reached"));
 }
 
-TEST_CASE("Asleep loads but is not measurable yet; unknown names fail at the monitor", "[expect]") {
-    const Single asleep = runSingle("DynamicObject, Name=ball\nExpect, Object=ball, Asleep=true\n");
-    CHECK_FALSE(asleep.result.passed);
-    CHECK_THAT(asleep.result.reason, Contains("not measurable yet"));
+TEST_CASE("Asleep reads the body's sleep; unknown names fail at the monitor", "[expect][sleep]") {
+    // A ball resting on the floor is still from the start: asleep after the
+    // time to sleep (0.5 s), never in the air.
+    const std::string resting = "World, Duration=2\nCollisionPlane, 0, 0, 0, 0, 1, 0\n"
+                                "DynamicObject, Name=ball, Position=(0, 0.5, 0), Radius=0.5\n";
+    CHECK(runSingle(resting + "Expect, Object=ball, Time=2, Asleep=true\n").result.passed);
+    CHECK_FALSE(runSingle(resting + "Expect, Object=ball, Time=0.2, Asleep=true\n").result.passed);
+    const Single off = runSingle("World, Sleep=false\n" + resting.substr(resting.find('\n') + 1) +
+                                 "Expect, Object=ball, Time=1, Asleep=true\n");
+    CHECK_FALSE(off.result.passed);
+    CHECK_THAT(off.result.reason, Contains("Sleep=false"));
 
     // Expectations from another file (stepwise grade --expect) may name a body this scene lacks.
     Scene scene = test::emptyScene();

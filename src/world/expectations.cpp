@@ -74,8 +74,10 @@ Verdict judge(const Expectation& e, Real value) {
             return {value > e.tolerance, -value};
         case ExpectQuantity::NotThroughPlane:
             return {value >= -e.tolerance, -value};
-        case ExpectQuantity::Asleep:
-            return {false, 0};
+        case ExpectQuantity::Asleep: {  // value 1 asleep, 0 awake
+            const bool asleep = value > Real(0.5);
+            return {asleep == e.flag, asleep == e.flag ? Real(0) : Real(1)};
+        }
         default:
             break;
     }
@@ -221,10 +223,8 @@ ExpectationMonitor::ExpectationMonitor(const World& world, std::vector<Expectati
             }
             track.plane = static_cast<int>(found - planes.begin());
         }
-        if (e.quantity == ExpectQuantity::Asleep) {
-            // Bodies never sleep yet: there is no state to read. Failing (rather
-            // than passing) keeps an assignment that relies on sleep honest.
-            track.problem = "not measurable yet: bodies do not sleep in this version of the engine";
+        if (e.quantity == ExpectQuantity::Asleep && !world.settings().sleeping) {
+            track.problem = "not measurable: the scene's World has Sleep=false, so no body ever sleeps";
             continue;
         }
         if (e.quantity == ExpectQuantity::EnergyChange) {
@@ -261,6 +261,7 @@ Real ExpectationMonitor::measure(const World& world, const Expectation& e, const
             return glm::length(body.velocity) + glm::length(body.angularVelocity) * farthestPointDistance(body);
         case ExpectQuantity::NotThroughPlane:
             return world.planes()[track.plane].signedDistance(body.position);
+        case ExpectQuantity::Asleep: return body.asleep ? Real(1) : Real(0);
         default: return 0;
     }
 }
