@@ -7,40 +7,11 @@
 
 #include "dynamics/contact_body.hpp"
 #include "dynamics/inertia.hpp"
+#include "dynamics/point_impulse.hpp"
 
 namespace stepwise {
 
 namespace {
-
-/// K = J·M⁻¹·Jᵀ along direction d: m_A⁻¹ + m_B⁻¹ + (r_A×d)·I_A⁻¹(r_A×d) + (r_B×d)·I_B⁻¹(r_B×d).
-Real inverseEffectiveMass(const SolverContact& c, const Vec3& d) {
-    const Vec3 turnA = glm::cross(c.rA, d);
-    const Vec3 turnB = glm::cross(c.rB, d);
-    return c.inverseMassA + c.inverseMassB + glm::dot(turnA, c.inverseInertiaA * turnA) +
-           glm::dot(turnB, c.inverseInertiaB * turnB);
-}
-
-/// J·v without the direction: the velocity of B's surface minus A's at the point.
-Vec3 relativeVelocity(const SolverContact& c) {
-    const Vec3 va = c.a->velocity + glm::cross(c.a->angularVelocity, c.rA);
-    const Vec3 vb = c.b ? c.b->velocity + glm::cross(c.b->angularVelocity, c.rB) : c.staticVelocity;
-    return vb - va;
-}
-
-/// Impulse P on B at the point and −P on A: Δv = ±P/m, ΔL = ±r×P, Δω = I⁻¹·ΔL.
-/// L is the bodies' state and ω follows it; both change together here.
-void applyImpulse(SolverContact& c, const Vec3& P) {
-    const Vec3 angularA = glm::cross(c.rA, P);
-    c.a->velocity -= P * c.inverseMassA;
-    c.a->angularMomentum -= angularA;
-    c.a->angularVelocity -= c.inverseInertiaA * angularA;
-    if (c.b) {
-        const Vec3 angularB = glm::cross(c.rB, P);
-        c.b->velocity += P * c.inverseMassB;
-        c.b->angularMomentum += angularB;
-        c.b->angularVelocity += c.inverseInertiaB * angularB;
-    }
-}
 
 Vec3 totalImpulse(const SolverContact& c) {
     return c.normalImpulse * c.normal + c.tangentImpulse[0] * c.tangent[0] + c.tangentImpulse[1] * c.tangent[1];

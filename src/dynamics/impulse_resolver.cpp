@@ -8,6 +8,7 @@
 
 #include "dynamics/contact_body.hpp"
 #include "dynamics/inertia.hpp"
+#include "dynamics/point_impulse.hpp"
 #include "integrators/integrators.hpp"
 
 namespace stepwise {
@@ -38,37 +39,6 @@ const CachedImpulse* findCachedImpulse(const std::vector<CachedImpulse>& cache, 
 
 namespace {
 
-/// 1/m_eff along direction d: m_A⁻¹ + m_B⁻¹ + (r_A×d)·I_A⁻¹(r_A×d) + (r_B×d)·I_B⁻¹(r_B×d).
-Real inverseEffectiveMass(const ContactConstraint& c, const Vec3& d) {
-    const Vec3 turnA = glm::cross(c.rA, d);
-    const Vec3 turnB = glm::cross(c.rB, d);
-    return c.a->inverseMass + c.inverseMassB + glm::dot(turnA, c.inverseInertiaA * turnA) +
-           glm::dot(turnB, c.inverseInertiaB * turnB);
-}
-
-/// Velocity of B's surface minus A's at the contact point.
-Vec3 relativeVelocity(const ContactConstraint& c) {
-    const Vec3 va = c.a->velocity + glm::cross(c.a->angularVelocity, c.rA);
-    const Vec3 vb = c.b ? c.b->velocity + glm::cross(c.b->angularVelocity, c.rB) : c.staticVelocity;
-    return vb - va;
-}
-
-/// Impulse P on B at the contact, −P on A: Δv = ±P/m, ΔL = ±r×P, Δω = I⁻¹ΔL.
-/// (The world inverse inertia is fixed during the passes: nothing turns the
-/// bodies until the next integration.)
-void applyImpulse(ContactConstraint& c, const Vec3& P) {
-    const Vec3 angularA = glm::cross(c.rA, P);
-    c.a->velocity -= P * c.a->inverseMass;
-    c.a->angularMomentum -= angularA;
-    c.a->angularVelocity -= c.inverseInertiaA * angularA;
-    if (c.b) {
-        const Vec3 angularB = glm::cross(c.rB, P);
-        c.b->velocity += P * c.inverseMassB;
-        c.b->angularMomentum += angularB;
-        c.b->angularVelocity += c.inverseInertiaB * angularB;
-    }
-}
-
 /// Sets up one contact: lever arms, effective masses, and the bounce it aims for.
 ContactConstraint prepare(const BodySet& bodies, const Contact& contact, Real h, ImpulseReport& report) {
     ContactConstraint c;
@@ -77,6 +47,7 @@ ContactConstraint prepare(const BodySet& bodies, const Contact& contact, Real h,
     c.a = &a;
     c.b = other.dynamic;
     c.staticVelocity = other.velocity;
+    c.inverseMassA = a.inverseMass;
     c.inverseInertiaA = worldInverseInertia(a.orientation, a.inverseInertiaBody);
     c.rA = contact.point - a.position;
     if (c.b) {

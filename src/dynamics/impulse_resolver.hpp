@@ -54,6 +54,7 @@ struct ContactConstraint {
     Vec3 staticVelocity{0, 0, 0};  ///< Velocity of B's surface at the contact when B is kinematic or a plane, m/s.
     Mat3 inverseInertiaA{1};       ///< A's world inverse inertia (fixed during the passes), 1/(kg·m²).
     Mat3 inverseInertiaB{0};       ///< B's, or zero.
+    Real inverseMassA = 0;         ///< A's 1/m, 1/kg.
     Real inverseMassB = 0;         ///< B's 1/m, or zero.
     Vec3 rA{0, 0, 0};              ///< From A's centre to the contact point, m.
     Vec3 rB{0, 0, 0};              ///< From B's centre to the contact point, m (zero for static B).
