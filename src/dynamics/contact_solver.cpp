@@ -116,7 +116,17 @@ void recordPoses(const BodySet& bodies, SolverWorkspace& workspace) {
     }
 }
 
-void warmStartContacts(SolverWorkspace& workspace) {
+void warmStartContacts(SolverWorkspace& workspace, bool accumulate) {
+    if (!accumulate) {
+        // Without accumulation each substep's impulses stand alone (Box2D-Lite
+        // does not warm start in this mode either): the running sum only grows,
+        // and re-applying it every substep would push harder and harder.
+        for (SolverContact& c : workspace.contacts) {
+            c.normalImpulse = 0;
+            c.tangentImpulse[0] = c.tangentImpulse[1] = 0;
+        }
+        return;
+    }
     for (SolverContact& c : workspace.contacts) applyImpulse(c, totalImpulse(c));
 }
 

@@ -141,7 +141,8 @@ void prepareContacts(const BodySet& bodies, std::span<const Contact> contacts, R
 void recordPoses(const BodySet& bodies, SolverWorkspace& workspace);
 
 /// @brief Applies every contact's accumulated impulses (the warm start), at the start of a substep.
-void warmStartContacts(SolverWorkspace& workspace);
+/// With @p accumulate off, instead starts each contact's impulses from zero.
+void warmStartContacts(SolverWorkspace& workspace, bool accumulate);
 
 /// @brief One Gauss–Seidel pass over all contacts.
 /// @param useBias true for the solve (soft push-out), false for the relax pass.

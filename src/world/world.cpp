@@ -197,7 +197,7 @@ void World::stepWithSequentialImpulses() {
         //    (src/dynamics/contact_solver.cpp, src/integrators/velocity_change_drift.cpp)
         runStage(Stage::SolveConstraints, [&] {
             recordVelocities(dynamics_, solverWorkspace_.velocityBefore, solverWorkspace_.angularVelocityBefore);
-            warmStartContacts(solverWorkspace_);
+            warmStartContacts(solverWorkspace_, settings_.accumulateImpulses);
             for (int pass = 0; pass < settings_.velocityIterations; ++pass) {
                 solveContacts(solverWorkspace_, contactSettings, true);
             }
