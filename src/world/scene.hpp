@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "dynamics/joints/joint_def.hpp"
 #include "objects/game_object.hpp"
 #include "world/world_settings.hpp"
 
@@ -20,6 +21,7 @@ struct Scene {
     std::vector<DynamicObject> dynamics;     ///< Simulated bodies.
     std::vector<KinematicsObject> kinematics;///< Prescribed-motion bodies.
     std::vector<CollisionPlane> planes;      ///< Infinite planes.
+    std::vector<JointDef> joints;            ///< Joints between dynamic bodies (or to the world), in world space.
     std::vector<std::string> warnings;       ///< Things that load but may surprise (e.g. features not yet simulated).
 };
 
