@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "command_runner.hpp"
 #include "config/scene_loader.hpp"
 #include "dynamics/inertia.hpp"
 #include "test_support.hpp"
@@ -51,8 +52,6 @@ JointDef hingeAtCentre(const DynamicObject& body, Vec3 axis) {
     return def;
 }
 
-/// Orientation that turns body +X onto the world direction (cos a, sin a, 0).
-Quat turnAboutZ(Real angle) { return glm::angleAxis(angle, Vec3(0, 0, 1)); }
 
 }  // namespace
 
@@ -372,75 +371,272 @@ TEST_CASE("A joint breaks when its force exceeds MaxForce, and holds below it", 
     }
 }
 
+TEST_CASE("A weak rod breaks where its tension first exceeds MaxForce", "[joints]") {
+    // A bob released from horizontal on a rod of length L: at angle theta from
+    // the bottom its speed is v^2 = 2 g L cos(theta), and the rod's tension
+    // m g cos(theta) + m v^2 / L = 3 m g cos(theta). With MaxForce = 2 m g it breaks
+    // when cos(theta) = 2/3, 48.2 degrees before the bottom, within one step's swing.
+    const Real mass = 1;
+    const Real L = 1;
+    const Vec3 pivot(0, 3, 0);
+    Scene scene = solverScene();
+    scene.dynamics.push_back(test::sphere("bob", pivot + Vec3(L, 0, 0), Vec3(0), Real(0.05), mass));
+    JointDef rod = makeDef(JointKind::Distance, "rod", "bob", "", pivot + Vec3(L, 0, 0), pivot);
+    rod.maxForce = 2 * mass * g;
+    scene.joints.push_back(rod);
+    World world(scene);
+    const Joint& joint = world.joints()[0];
+    const DynamicObject& bob = world.dynamics()[0];
+    Real angleAtBreak = 0;
+    Real swingPerStep = 0;
+    while (!joint.broken && world.time() < 1) {
+        world.step();
+        const Vec3 arm = bob.position - pivot;
+        angleAtBreak = std::atan2(arm.x, -arm.y);
+        swingPerStep = glm::length(bob.velocity) / L * world.settings().timeStep;
+    }
+    REQUIRE(joint.broken);
+    INFO("broke at " << angleAtBreak * 180 / kPi << " degrees from the bottom, force " << joint.brokenForce << " N");
+    CHECK(angleAtBreak == Approx(std::acos(Real(2) / 3)).margin(swingPerStep));
+    CHECK(joint.brokenForce > 2 * mass * g);
+    CHECK(joint.brokenAtTime == Approx(world.time()));
+}
+
 // ------------------------------------------------------------------ rope bridge
 
-TEST_CASE("A rope bridge of 20 planks carries a 10 kg box stretching less than 2 %", "[joints]") {
-    // 20 planks, 1 m from joint to joint (0.9 m boards with 0.1 m gaps), each
-    // joined to the next by two ball joints, one at each edge, like the two
-    // ropes of a real bridge (one rope would let the planks roll over). The
-    // ends hang from the world 18 m apart, so the 20 m chain must sag; it
-    // starts as a trough (9 planks down, 2 flat, 9 up) with the box on the
-    // flat middle. The stretch is the length of the rope line through every
-    // anchor, minus 20 m.
-    constexpr int kPlanks = 20;
-    const Real span = 18;
-    const Real plankMass = 2;
-    const Real halfWidth = Real(0.15);
-    const Real slopeRun = (span - 2) / Real(kPlanks - 2);  // horizontal extent of a sloping plank
-    const Real slopeDrop = std::sqrt(1 - slopeRun * slopeRun);
-    std::vector<Vec3> points;  // joint points along the rope line, z = 0
-    points.push_back(Vec3(-span / 2, 5, 0));
-    for (int i = 0; i < kPlanks; ++i) {
-        const bool flat = i == kPlanks / 2 - 1 || i == kPlanks / 2;
-        const Vec3 step = flat ? Vec3(1, 0, 0) : Vec3(slopeRun, i < kPlanks / 2 ? -slopeDrop : slopeDrop, 0);
-        points.push_back(points.back() + step);
-    }
-    REQUIRE(points.back().x == Approx(span / 2));
-    REQUIRE(points.back().y == Approx(5));
+namespace {
 
-    Scene scene = solverScene();
-    for (int i = 0; i < kPlanks; ++i) {
-        const Vec3 along = points[i + 1] - points[i];
-        DynamicObject plank = test::dynamicBox("plank" + std::to_string(i), (points[i] + points[i + 1]) / Real(2),
-                                               Vec3(0.9, 0.05, 2 * halfWidth), plankMass, 0.8);
-        plank.orientation = turnAboutZ(std::atan2(along.y, along.x));
-        scene.dynamics.push_back(plank);
+/// Length of one rope of a bridge: the polyline from the world anchor at one
+/// end, through both anchors of every joint of that rope in order, to the
+/// world anchor at the other end. Each plank's two anchors are a rigid 1 m
+/// apart, so what exceeds 1 m per plank is the joints' stretch.
+Real ropeLength(const World& world, const std::vector<std::size_t>& rope) {
+    std::vector<Vec3> points;
+    for (std::size_t k = 0; k < rope.size(); ++k) {
+        const JointAnchors anchors = jointAnchors(world.joints()[rope[k]], world.dynamics());
+        const bool last = k + 1 == rope.size();  // there A is the last plank and B the world
+        points.push_back(last ? anchors.onA : anchors.onB);
+        points.push_back(last ? anchors.onB : anchors.onA);
     }
-    const Real bottom = points[kPlanks / 2].y + Real(0.025);
-    scene.dynamics.push_back(test::dynamicBox("load", Vec3(0, bottom + Real(0.2) + Real(0.001), 0), Vec3(0.4, 0.4, 0.4),
-                                              10, 0.8));
-    for (int i = 0; i <= kPlanks; ++i) {
-        for (const Real z : {-halfWidth, halfWidth}) {
-            // Joint i joins plank i (A; the right end uses plank 19) to plank i-1 (B; the world at the ends).
-            const std::string a = "plank" + std::to_string(i < kPlanks ? i : kPlanks - 1);
-            const std::string b = i == 0 || i == kPlanks ? "" : "plank" + std::to_string(i - 1);
-            scene.joints.push_back(makeDef(JointKind::Ball, "rope" + std::to_string(i) + (z < 0 ? "near" : "far"), a,
-                                           b, points[i] + Vec3(0, 0, z)));
-        }
+    Real length = 0;
+    for (std::size_t k = 1; k < points.size(); ++k) length += glm::length(points[k] - points[k - 1]);
+    return length;
+}
+
+}  // namespace
+
+TEST_CASE("A rope bridge of 20 planks carries a 10 kg crate stretching less than 2 %", "[joints]") {
+    // config/lesson08_bridge.scene: 20 planks 1 m from joint point to joint
+    // point, each joined to the next by two ball joints (one per edge, the
+    // two ropes), the ends hanging from the world 18 m apart, a 10 kg crate
+    // on the middle. Rest length of each rope: 20 m.
+    World world(loadSceneFile(STEPWISE_SOURCE_DIR "/config/lesson08_bridge.scene"));
+    constexpr int kPlanks = 20;
+    const Real restLength = kPlanks;
+    std::vector<std::size_t> near, far;  // joint indices of each rope, left to right
+    for (std::size_t i = 0; i < world.joints().size(); ++i) {
+        REQUIRE(world.joints()[i].kind == JointKind::Ball);
+        (jointAnchors(world.joints()[i], world.dynamics()).onA.z < 0 ? near : far).push_back(i);
     }
-    World world(scene);
-    const Real restLength = kPlanks;  // 1 m from joint point to joint point on each plank
+    REQUIRE(near.size() == kPlanks + 1);
+    REQUIRE(far.size() == kPlanks + 1);
+    REQUIRE(ropeLength(world, near) == Approx(restLength).margin(0.01));  // the scene starts unstretched
+
+    const DynamicObject* crate = world.findDynamic("crate");
+    REQUIRE(crate != nullptr);
+    const Real startHeight = crate->position.y;
     Real worstStretch = 0;
-    while (world.time() < 6) {
+    while (world.time() < 10) {
         world.step();
-        for (const Real z : {-halfWidth, halfWidth}) {
-            // The rope line along one edge: from anchor to anchor through every joint.
-            Real length = 0;
-            Vec3 previous = points.front() + Vec3(0, 0, z);
-            for (const Joint& joint : world.joints()) {
-                if ((joint.localAnchorA.z < 0) != (z < 0)) continue;
-                const JointAnchors anchors = jointAnchors(joint, world.dynamics());
-                length += glm::length(anchors.onA - previous) + glm::length(anchors.onB - anchors.onA);
-                previous = anchors.onA;
-            }
-            worstStretch = std::max(worstStretch, (length - restLength) / restLength);
+        for (const auto* rope : {&near, &far}) {
+            worstStretch = std::max(worstStretch, (ropeLength(world, *rope) - restLength) / restLength);
         }
     }
-    const DynamicObject* load = world.findDynamic("load");
-    INFO("largest stretch " << worstStretch * 100 << " %, load at " << load->position.x << ", " << load->position.y << ", speed " << glm::length(load->velocity));
+    INFO("largest stretch " << worstStretch * 100 << " %; crate at " << crate->position.x << ", "
+                            << crate->position.y << ", " << crate->position.z);
     CHECK(worstStretch < 0.02);
-    // Still on the two middle planks, above the lowest point the bridge started at.
-    CHECK(std::abs(load->position.x) < 1);
-    CHECK(std::abs(load->position.z) < halfWidth);
-    CHECK(load->position.y > bottom);
+    // The crate is still on the two middle planks, held above the riverbed (y = -2).
+    CHECK(std::abs(crate->position.x) < 1);
+    CHECK(std::abs(crate->position.z) < Real(0.3));
+    CHECK(crate->position.y > startHeight - 1);
+    for (const Joint& joint : world.joints()) CHECK_FALSE(joint.broken);
+}
+
+// ------------------------------------------------------------------ Newton's cradle
+
+TEST_CASE("Newton's cradle: the last ball leaves with the first ball's speed, the others stay", "[joints][solver]") {
+    // config/lesson08_cradle.scene: five equal balls with e = 1 on 1 m strings,
+    // 4 cm apart; ball 1 released at 30 degrees. Equal masses in an elastic
+    // collision swap velocities, so the momentum runs down the line and ball 5
+    // leaves at ball 1's speed v = sqrt(2 g L (1 - cos 30 deg)), the rest at rest.
+    World world(loadSceneFile(STEPWISE_SOURCE_DIR "/config/lesson08_cradle.scene"));
+    std::vector<const DynamicObject*> balls;
+    for (int i = 1; i <= 5; ++i) {
+        balls.push_back(world.findDynamic("ball" + std::to_string(i)));
+        REQUIRE(balls.back() != nullptr);
+    }
+    auto speed = [&](int i) { return glm::length(balls[static_cast<std::size_t>(i)]->velocity); };
+    Real incoming = 0;
+    while (world.contacts().empty() && world.time() < 2) {
+        incoming = std::max(incoming, speed(0));
+        world.step();
+    }
+    REQUIRE_FALSE(world.contacts().empty());
+    CHECK(incoming == Approx(std::sqrt(2 * g * (1 - std::cos(kPi / 6)))).epsilon(0.01));
+
+    // Ball 5 is fastest the moment it leaves; gravity slows it from then on.
+    Real peak = 0;
+    Real othersAtPeak = 0;
+    while (world.time() < 2) {
+        world.step();
+        if (speed(4) < peak) break;
+        peak = speed(4);
+        othersAtPeak = std::max({speed(0), speed(1), speed(2), speed(3)});
+    }
+    INFO("incoming " << incoming << " m/s, ball 5 leaves at " << peak << " m/s, the others at most " << othersAtPeak
+                     << " m/s");
+    CHECK(peak >= 0.95 * incoming);
+    CHECK(othersAtPeak < 0.05 * incoming);
+}
+
+// ------------------------------------------------------------------ scene records
+
+namespace {
+
+Scene parse(const std::string& text) { return parseScene(text, "joints.scene"); }
+
+std::string firstError(const std::string& text) {
+    try {
+        (void)parse(text);
+    } catch (const ConfigError& error) {
+        return error.diagnostics().front().message();
+    }
+    return "";
+}
+
+}  // namespace
+
+TEST_CASE("Joint records load into JointDefs: bodies by name, points in world space, angles in degrees",
+          "[joints][config]") {
+    const Scene scene = parse(
+        "DynamicObject, Name=bob, Position=(1, 0, 0)\n"
+        "DynamicObject, Name=arm, Position=(0, 1, 0)\n"
+        "DistanceJoint, Name=rod, BodyA=bob, BodyB=arm, AnchorA=(1, 0.5, 0), AnchorB=(0, 2, 0), Length=2, MaxForce=50\n"
+        "Rope, BodyA=bob, AnchorB=(0, 5, 0)\n"
+        "BallJoint, Name=socket, BodyA=arm, Anchor=(0, 3, 0), CollideConnected=yes\n"
+        "HingeJoint, Name=axle, BodyA=bob, BodyB=arm, Axis=(0, 2, 0), LowerAngle=-45, UpperAngle=90, MotorSpeed=3, "
+        "MaxMotorTorque=4\n"
+        "AngularMotor, Name=spin, BodyA=arm, Axis=(1, 0, 0), MotorSpeed=-2, MaxMotorTorque=0.5\n");
+    REQUIRE(scene.joints.size() == 5);
+    const JointDef& rod = scene.joints[0];
+    CHECK(rod.kind == JointKind::Distance);
+    CHECK(rod.bodyA == "bob");
+    CHECK(rod.bodyB == "arm");
+    CHECK(rod.anchorA == Vec3(1, 0.5, 0));
+    CHECK(rod.anchorB == Vec3(0, 2, 0));
+    CHECK(rod.length == Real(2));
+    CHECK(rod.maxForce == 50);
+    CHECK_FALSE(rod.collideConnected);
+
+    const JointDef& rope = scene.joints[1];
+    CHECK(rope.kind == JointKind::Rope);
+    CHECK(rope.name == "Rope0");           // default names count per record type
+    CHECK(rope.bodyB.empty());             // fixed to the world
+    CHECK(rope.anchorA == Vec3(1, 0, 0));  // default: BodyA's centre
+    CHECK_FALSE(rope.length.has_value());  // default: the distance at the start
+    CHECK(rope.maxForce == kUnbreakable);
+
+    const JointDef& socket = scene.joints[2];
+    CHECK(socket.kind == JointKind::Ball);
+    CHECK(socket.anchorA == Vec3(0, 3, 0));
+    CHECK(socket.collideConnected);
+
+    const JointDef& axle = scene.joints[3];
+    CHECK(axle.kind == JointKind::Hinge);
+    CHECK(axle.anchorA == Vec3(1, 0, 0));  // default: BodyA's centre
+    CHECK(axle.axis == Vec3(0, 1, 0));     // normalised
+    CHECK(*axle.lowerAngle == Approx(-kPi / 4));
+    CHECK(*axle.upperAngle == Approx(kPi / 2));
+    CHECK(axle.motor);
+    CHECK(axle.motorSpeed == 3);
+    CHECK(axle.maxMotorTorque == 4);
+
+    const JointDef& spin = scene.joints[4];
+    CHECK(spin.kind == JointKind::AngularMotor);
+    CHECK(spin.axis == Vec3(1, 0, 0));
+    CHECK(spin.motorSpeed == -2);
+    CHECK(spin.maxMotorTorque == Real(0.5));
+
+    // The World turns them into body frames; the rope's length is the distance at the start.
+    const World world(scene);
+    REQUIRE(world.joints().size() == 5);
+    CHECK(world.joints()[1].length == Approx(std::sqrt(Real(26))));
+    CHECK(world.joints()[1].bodyB == kWorldAnchor);
+    CHECK(world.joints()[0].localAnchorA == Vec3(0, 0.5, 0));
+    CHECK(world.joints()[0].localAnchorB == Vec3(0, 1, 0));
+}
+
+TEST_CASE("A joint may name a body defined later in the file, ignoring case", "[joints][config]") {
+    const Scene scene = parse("BallJoint, BodyA=LATER, Anchor=(0, 1, 0)\nDynamicObject, Name=later\n");
+    REQUIRE(scene.joints.size() == 1);
+    CHECK(scene.joints[0].bodyA == "later");
+}
+
+TEST_CASE("A joint naming a missing body is an error at the name, with a did-you-mean", "[joints][config]") {
+    CHECK(firstError("DynamicObject, Name=pendulum\nDistanceJoint, BodyA=pendulm, AnchorB=(0, 2, 0)\n") ==
+          "joints.scene:2:22: error: BodyA: expected the name of a DynamicObject, found 'pendulm'; did you mean "
+          "'pendulum'?");
+    CHECK_THAT(firstError("DynamicObject, Name=a\nBallJoint, BodyA=a, BodyB=zzz\n"),
+               Contains("2:27: error: BodyB") && Contains("no DynamicObject has that name"));
+    CHECK_THAT(firstError("DynamicObject, Name=a\nCollisionPlane, Name=floor\nBallJoint, BodyA=a, BodyB=floor\n"),
+               Contains("'floor' is the CollisionPlane on line 2") && Contains("leave BodyB out"));
+    CHECK_THAT(firstError("DynamicObject, Name=a\nHingeJoint, Anchor=(0, 1, 0)\n"),
+               Contains("2:1: error: BodyA: expected the name of a DynamicObject, found ''"));
+    CHECK_THAT(firstError("DynamicObject, Name=a\nBallJoint, BodyA=a, BodyB=a\n"),
+               Contains("BodyB: expected a body other than BodyA"));
+}
+
+TEST_CASE("Joint records check what spans their fields", "[joints][config]") {
+    CHECK_THAT(firstError("DynamicObject, Name=a\nRope, BodyA=a\n"),
+               Contains("AnchorB: expected a point (x, y, z)") && Contains("fixed to the world"));
+    CHECK_THAT(firstError("DynamicObject, Name=a\nDistanceJoint, BodyA=a, AnchorB=(0, 0, 0)\n"),
+               Contains("Length: expected a length > 0") && Contains("anchors coincide"));
+    CHECK_THAT(firstError("DynamicObject, Name=a\nHingeJoint, BodyA=a, Axis=(0, 0, 0)\n"),
+               Contains("Axis: expected a non-zero vector"));
+    CHECK_THAT(firstError("DynamicObject, Name=a\nHingeJoint, BodyA=a, LowerAngle=30, UpperAngle=10\n"),
+               Contains("UpperAngle: expected an angle >= LowerAngle (30), found '10'"));
+    CHECK_THAT(firstError("DynamicObject, Name=a\nHingeJoint, BodyA=a, UpperAngle=270\n"),
+               Contains("UpperAngle: expected an angle from -180 to 180 degrees, found '270'"));
+    CHECK_THAT(firstError("DynamicObject, Name=a\nBallJoint, BodyA=a, MaxForce=0\n"),
+               Contains("MaxForce: expected a number > 0"));
+    CHECK_THAT(firstError("DynamicObject, Name=a\nAngularMotor, BodyA=a, MaxForce=10\n"),
+               Contains("AngularMotor: expected one of its fields"));
+}
+
+TEST_CASE("Joints need the sequential-impulse solver, in a file and in code", "[joints][config]") {
+    CHECK(firstError("World, Solver=Impulse\nDynamicObject, Name=a\nBallJoint, BodyA=a\n") ==
+          "joints.scene:3:1: error: BallJoint: expected a World with Solver=SequentialImpulse, found 'Solver=Impulse'; "
+          "joints are solved only by the sequential-impulse solver; remove Solver=Impulse from the World record on "
+          "line 1");
+    Scene scene = solverScene();
+    scene.settings.solver = SolverKind::Impulse;
+    scene.dynamics.push_back(test::sphere("a", Vec3(0)));
+    scene.joints.push_back(makeDef(JointKind::Ball, "socket", "a", "", Vec3(0, 1, 0)));
+    CHECK_THROWS_WITH(World(scene), Contains("socket") && Contains("SequentialImpulse"));
+    scene.settings.solver = SolverKind::SequentialImpulse;
+    scene.joints[0].bodyA = "ghost";
+    CHECK_THROWS_WITH(World(scene), Contains("socket") && Contains("no dynamic body called 'ghost'"));
+}
+
+TEST_CASE("stepwise run lists the joints, their errors, and when a joint broke", "[joints][cli]") {
+    // lesson08_pendulum.scene's "weakRod" (MaxForce = 2 m g, released horizontal)
+    // breaks on its first swing, about 0.4 s in (the bob reaches 48 degrees
+    // from the bottom after about a fifth of a period).
+    const test::CommandResult r = test::shell(std::string("'") + STEPWISE_CLI_PATH + "' run '" STEPWISE_SOURCE_DIR
+                                              "/config/lesson08_pendulum.scene' --duration 1");
+    CHECK(r.exitCode == 0);
+    CHECK_THAT(r.output, Contains("4 joint(s) at 60 Hz") && Contains("Joints") &&
+                             Contains("smallRod         DistanceJoint  small - world") &&
+                             Contains("ropeLine         Rope") && Contains("intact") &&
+                             Contains("weakRod") && Contains("broken at t = 0.") && Contains("> MaxForce 19.62 N"));
 }
