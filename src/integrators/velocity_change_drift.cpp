@@ -18,7 +18,7 @@
 /// velocity, s = 0; Verlet with the mean, s = ½). A constraint force acts
 /// *implicitly*, on the end-of-substep velocity, whatever the integrator, so
 /// a constrained body ends at x_n + h_s·v_{n+1}:
-/// [ x \leftarrow x + h_s\,\Delta v + (1 - s)\,h_s^2\,a. ]
+/// \f[ x \leftarrow x + h_s\,\Delta v + (1 - s)\,h_s^2\,a. \f]
 /// A body the constraints did not touch (Δv = 0, Δω = 0) keeps its
 /// integrator's free flight exactly. Check: a resting ball (v_n = 0) ends
 /// where it started with every integrator, because Δv = −h_s·a.

@@ -40,12 +40,15 @@ Joint makeJoint(const JointDef& def, std::span<const DynamicObject> bodies) {
     const DynamicObject& a = bodies[joint.bodyA];
     const DynamicObject* b = joint.bodyB == kWorldAnchor ? nullptr : &bodies[joint.bodyB];
     const Quat orientationB = b ? b->orientation : Quat(1, 0, 0, 0);
-    // Ball and hinge joints have one point, shared by both bodies.
+    // Ball and hinge joints have one point, shared by both bodies; a motor has
+    // none, and keeps the bodies' centres as anchors (for drawing and the island links only).
     const bool onePoint = def.kind == JointKind::Ball || def.kind == JointKind::Hinge;
-    const Vec3 anchorB = onePoint ? def.anchorA : def.anchorB;
+    const bool noPoint = def.kind == JointKind::AngularMotor;
+    const Vec3 anchorA = noPoint ? a.position : def.anchorA;
+    const Vec3 anchorB = noPoint ? (b ? b->position : a.position) : onePoint ? def.anchorA : def.anchorB;
 
     // World → body frames: a point p of body (x, q) is q⁻¹·(p − x); a direction is q⁻¹·d.
-    joint.localAnchorA = glm::conjugate(a.orientation) * (def.anchorA - a.position);
+    joint.localAnchorA = glm::conjugate(a.orientation) * (anchorA - a.position);
     joint.localAnchorB = b ? glm::conjugate(orientationB) * (anchorB - b->position) : anchorB;
     if (def.kind == JointKind::Hinge || def.kind == JointKind::AngularMotor) {
         const Real axisLength = glm::length(def.axis);
@@ -58,7 +61,7 @@ Joint makeJoint(const JointDef& def, std::span<const DynamicObject> bodies) {
     joint.referenceRotation = glm::conjugate(orientationB) * a.orientation;
 
     if (def.kind == JointKind::Distance || def.kind == JointKind::Rope) {
-        joint.length = def.length.value_or(glm::length(anchorB - def.anchorA));
+        joint.length = def.length.value_or(glm::length(anchorB - anchorA));
         require(std::isfinite(joint.length) && joint.length > kDegenerateJointLength, def,
                 "the length must be > 0 m (the anchors coincide: give a Length, or use a BallJoint)");
     }

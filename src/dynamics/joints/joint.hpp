@@ -45,6 +45,12 @@
 /// **Motors are not soft**: they are velocity constraints with a bounded
 /// impulse, |λ_acc| ≤ τ_max·h_s, solved in both passes.
 ///
+/// **The World's switches** act on joints as on contacts: `Iterations` and
+/// `RelaxIterations` set the passes, `WarmStarting=false` restarts every
+/// impulse from 0 each step, `PositionCorrection=false` drops the bias (the
+/// joints then hold velocities only, and drift apart). One-sided rows always
+/// clamp the accumulated impulse (`AccumulateImpulses` switches the contacts only).
+///
 /// References: Witkin, "Constrained Dynamics" and Baraff, "Physically Based
 /// Modeling: Constrained Dynamics" (SIGGRAPH course notes, 1997–2001) for C,
 /// J and K; Catto, "Modeling and Solving Constraints" (GDC 2009) for the

@@ -1,7 +1,7 @@
 /// @file joint_def.hpp
 /// @brief A joint as a scene describes it: which bodies, and where, in world space at the start.
 ///
-/// A scene file (docs/config-format.md#joints) or a test says where a joint
+/// A scene file (docs/config-format.md, "Joints") or a test says where a joint
 /// is in the *world*, because that is how one thinks of a pendulum: the bob
 /// is here, the pivot there. When the World is built (makeJoints(),
 /// joint.hpp) every point and axis is turned into each body's own frame,
@@ -38,7 +38,8 @@ inline constexpr Real kUnlimitedTorque = std::numeric_limits<Real>::infinity();
 ///
 /// Which fields a type reads: Distance and Rope read anchorA, anchorB and
 /// length; Ball reads anchorA (the one shared point); Hinge reads anchorA,
-/// axis, the limits and the motor; AngularMotor reads axis and the motor.
+/// axis, the limits and the motor; AngularMotor reads axis and the motor
+/// (its anchors are the bodies' centres).
 /// "A relative to B": angles and angular speeds are those of A as seen
 /// from B (from the world when B is the world), so a motor with positive
 /// speed turns A counter-clockwise about the axis (right-hand rule).
