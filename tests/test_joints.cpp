@@ -342,6 +342,43 @@ TEST_CASE("A hinge motor reaches its target speed when its torque allows, and ac
     }
 }
 
+TEST_CASE("A hinge motor between two free bodies turns them apart, keeping the angular momentum at zero",
+          "[joints]") {
+    // In zero gravity a wheel (1 x 1 x 0.2 m, 1 kg: I_w = 1/6 kg m^2 about Z)
+    // is hinged on the face of a block (1 m cube, 4 kg: I_b = 2/3 kg m^2),
+    // axis Z through both centres. The motor's torque acts on both, equal and
+    // opposite: the relative speed grows at tau (1/I_w + 1/I_b) = 3.75 rad/s^2
+    // to the target 5 rad/s, and the two spin in opposite senses with
+    // I_w w_w = -I_b w_b, so the angular momentum stays zero.
+    Scene scene = solverScene(Vec3(0));
+    scene.dynamics.push_back(test::dynamicBox("wheel", Vec3(0, 0, 0.6), Vec3(1, 1, 0.2), 1, 0.5));
+    scene.dynamics.push_back(test::dynamicBox("block", Vec3(0), Vec3(1), 4, 0.5));
+    JointDef hinge = makeDef(JointKind::Hinge, "axle", "wheel", "block", Vec3(0, 0, 0.6));
+    hinge.axis = Vec3(0, 0, 1);
+    hinge.motor = true;
+    hinge.motorSpeed = 5;
+    hinge.maxMotorTorque = Real(0.5);
+    scene.joints.push_back(hinge);
+    World world(scene);
+    const DynamicObject& wheel = world.dynamics()[0];
+    const DynamicObject& block = world.dynamics()[1];
+    const Real wheelInertia = Real(1) / 6;
+    const Real blockInertia = Real(2) / 3;
+
+    runFor(world, Real(0.5));  // 0.5 s x 3.75 rad/s^2 = 1.875 rad/s, still accelerating
+    const Real expected = Real(0.5) * world.time() * (1 / wheelInertia + 1 / blockInertia);
+    CHECK(wheel.angularVelocity.z - block.angularVelocity.z == Approx(expected).epsilon(0.01));
+    runFor(world, 2);
+    const Real relative = wheel.angularVelocity.z - block.angularVelocity.z;
+    const Real total = wheelInertia * wheel.angularVelocity.z + blockInertia * block.angularVelocity.z;
+    INFO("relative spin " << relative << " rad/s, wheel " << wheel.angularVelocity.z << ", block "
+                          << block.angularVelocity.z << ", I w summed " << total);
+    CHECK(relative == Approx(5).epsilon(0.01));
+    CHECK(wheel.angularVelocity.z == Approx(-4 * block.angularVelocity.z).epsilon(0.01));
+    CHECK(std::abs(total) < 1e-6);
+    CHECK(measureJoint(world.joints()[0], world.dynamics()).distance < 0.001);
+}
+
 // ------------------------------------------------------------------ angular motor
 
 TEST_CASE("An AngularMotor spins a free body up at tau/I and holds the target speed", "[joints]") {
