@@ -61,8 +61,10 @@ void printSceneHeader(const std::string& path, const Scene& scene) {
     } else {
         std::printf("  solver Impulse: %d passes, warm starting %s\n", s.impulseIterations, s.warmStarting ? "on" : "off");
     }
-    std::printf("  %zu dynamic, %zu kinematic, %zu plane(s)\n", scene.dynamics.size(), scene.kinematics.size(),
+    std::printf("  %zu dynamic, %zu kinematic, %zu plane(s)", scene.dynamics.size(), scene.kinematics.size(),
                 scene.planes.size());
+    if (!scene.joints.empty()) std::printf(", %zu joint(s) at %.3g Hz", scene.joints.size(), double(jointHertzInUse(s)));
+    std::printf("\n");
 }
 
 class Progress {
@@ -142,6 +144,57 @@ void printConservation(const Energy& before, const Energy& after, const Vec3& p0
                 vec(l1).c_str());
 }
 
+/// "bob - world": the two bodies of a joint.
+std::string jointBodies(const World& world, const Joint& joint) {
+    const std::string& a = world.dynamics()[joint.bodyA].name;
+    return a + " - " + (joint.bodyB == kWorldAnchor ? std::string("world") : world.dynamics()[joint.bodyB].name);
+}
+
+/// How far a joint is from its constraint, in the units a reader checks it in: mm, degrees, rad/s.
+std::string jointErrorText(const World& world, const Joint& joint) {
+    constexpr double kMillimetres = 1000.0;
+    constexpr double kDegrees = 180.0 / 3.14159265358979323846;
+    const JointError e = measureJoint(joint, world.dynamics());
+    char text[96];
+    switch (joint.kind) {
+        case JointKind::Distance:
+        case JointKind::Rope:
+        case JointKind::Ball: std::snprintf(text, sizeof text, "%.3f mm", kMillimetres * double(e.distance)); break;
+        case JointKind::Hinge:
+            std::snprintf(text, sizeof text, "%.3f mm, %.3f deg", kMillimetres * double(e.distance),
+                          kDegrees * double(e.angle));
+            break;
+        case JointKind::AngularMotor:
+            std::snprintf(text, sizeof text, "%.4g of %.4g rad/s", double(e.speed), double(joint.motorSpeed));
+            break;
+    }
+    return text;
+}
+
+/// Each joint: kind, bodies, its error at the end, and whether (and when) it broke.
+void printJoints(const World& world) {
+    if (world.joints().empty()) return;
+    std::printf("\nJoints (error: how far each is from its constraint at the end)\n");
+    std::printf("  %-16s %-14s %-28s %-24s %s\n", "name", "kind", "bodies", "error", "state");
+    std::size_t listed = 0;
+    for (const Joint& joint : world.joints()) {
+        if (listed++ >= kMaxListedObjects) {
+            std::printf("  ... and %zu more\n", world.joints().size() - kMaxListedObjects);
+            break;
+        }
+        const std::string error = joint.broken ? "-" : jointErrorText(world, joint);
+        std::printf("  %-16s %-14s %-28s %-24s ", joint.name.c_str(), toString(joint.kind),
+                    jointBodies(world, joint).c_str(), error.c_str());
+        if (joint.broken) {
+            std::printf("broken at t = %.6g s (step %llu: %.4g N > MaxForce %.4g N)\n", double(joint.brokenAtTime),
+                        static_cast<unsigned long long>(joint.brokenAtStep), double(joint.brokenForce),
+                        double(joint.maxForce));
+        } else {
+            std::printf("intact\n");
+        }
+    }
+}
+
 void printStageTimes(const World& world, double wallSeconds) {
     std::printf("\nTime per stage (a substep stage runs several times a step; skipped stages show 0 runs)\n");
     std::printf("  %-20s %8s %12s %12s\n", "stage", "runs", "us/step", "total ms");
@@ -209,6 +262,7 @@ int runCommand(const RunOptions& options) {
     std::printf("Simulated %.6g s in %llu steps\n", double(world.time()),
                 static_cast<unsigned long long>(world.stepCount()));
     printFinalState(world);
+    printJoints(world);
     printConservation(energyBefore, energyOf(world), momentumBefore, linearMomentumOf(world), angularMomentumBefore,
                       angularMomentumOf(world));
     printStageTimes(world, wall);
@@ -252,6 +306,10 @@ int checkCommand(const std::string& scenePath) {
     for (const Attractor& a : scene->attractors) {
         std::printf("  Attractor        %-16s at %s m, mu %.6g m^3/s^2\n", a.name.c_str(), vec(a.position).c_str(),
                     double(a.mu));
+    }
+    for (const JointDef& j : scene->joints) {
+        std::printf("  %-16s %-16s %s - %s\n", toString(j.kind), j.name.c_str(), j.bodyA.c_str(),
+                    j.bodyB.empty() ? "world" : j.bodyB.c_str());
     }
     std::printf("OK: %s is a valid scene.\n", scenePath.c_str());
     return kExitOk;

@@ -11,10 +11,10 @@
 /// constant below and is listed in docs/config-format.md) and the rules that
 /// involve more than one field or record: a sphere's default radius comes
 /// from its scale, a plane's normal must not be zero, names are unique, there
-/// is at most one World record, a Spring's bodies exist (they may come later
-/// in the file, so springs are resolved at the end). Every problem is
-/// collected; only a file with none becomes a Scene. Last, springs too stiff
-/// for the time step are *warned* about (Scene::warnings).
+/// is at most one World record, a Spring's or a joint's bodies exist (they
+/// may come later in the file, so springs and joints are resolved at the
+/// end). Every problem is collected; only a file with none becomes a Scene.
+/// Last, springs too stiff for the time step are *warned* about (Scene::warnings).
 #include "config/scene_loader.hpp"
 
 #include <algorithm>
@@ -101,6 +101,12 @@ constexpr Real kDefaultDamping = 0;
 constexpr Real kTolerableGrowth = 2;
 /// ρ above 1 by more than this is growth (symplectic methods have ρ = 1 exactly, up to rounding).
 constexpr Real kGrowthTolerance = Real(1e-12);
+/// A hinge or motor turns about Z unless told otherwise: a wheel facing the default camera.
+const Vec3 kDefaultJointAxis{0, 0, 1};
+/// Hinge limits are angles of a turn, in degrees: at most half a turn either way.
+constexpr Real kMaxLimitDegrees = 180;
+/// Joints let their bodies pass through each other unless asked (Box2D's default).
+constexpr bool kDefaultCollideConnected = false;
 
 const Vec3 kAxisX{1, 0, 0};
 const Vec3 kAxisY{0, 1, 0};
@@ -184,6 +190,11 @@ public:
             case RecordKind::Expect: addExpect(values, line); break;
             case RecordKind::Spring: addSpring(values, line, index); break;
             case RecordKind::Attractor: addAttractor(values, line, index); break;
+            case RecordKind::DistanceJoint: addJoint(values, line, index, JointKind::Distance); break;
+            case RecordKind::Rope: addJoint(values, line, index, JointKind::Rope); break;
+            case RecordKind::BallJoint: addJoint(values, line, index, JointKind::Ball); break;
+            case RecordKind::HingeJoint: addJoint(values, line, index, JointKind::Hinge); break;
+            case RecordKind::AngularMotor: addJoint(values, line, index, JointKind::AngularMotor); break;
         }
     }
 
@@ -191,6 +202,7 @@ public:
     Scene finish() {
         resolveExpectNames();
         resolveSprings();
+        resolveJoints();
         if (sink_.diagnostics().empty()) {
             warnAboutUnstableSprings();
             return std::move(scene_);
@@ -201,6 +213,13 @@ public:
     }
 
 private:
+    /// A joint record waiting for finish(), when every body is known.
+    struct PendingJoint {
+        RecordValues values;  ///< What the record said.
+        int line = 0;         ///< Its line.
+        int column = 0;       ///< Column of its record name.
+    };
+
     void addDynamic(const RecordValues& values, const SceneLine& line, int index) {
         DynamicObject body;
         body.name = claimName(values, line, index);
@@ -649,6 +668,150 @@ private:
         return text;
     }
 
+    /// A joint is read now but built in finish(): its bodies may come later in the file.
+    void addJoint(const RecordValues& values, const SceneLine& line, int index, JointKind kind) {
+        JointDef joint;
+        joint.name = claimName(values, line, index);
+        joint.kind = kind;
+        pendingJoints_.push_back({values, line.number, line.tokens.front().column});
+        scene_.joints.push_back(std::move(joint));
+    }
+
+    /// Fills every joint from its record, now that every body is known.
+    void resolveJoints() {
+        for (std::size_t i = 0; i < pendingJoints_.size(); ++i) {
+            buildJoint(pendingJoints_[i], scene_.joints[i]);
+        }
+        if (!pendingJoints_.empty() && scene_.settings.solver == SolverKind::Impulse) {
+            const PendingJoint& first = pendingJoints_.front();
+            sink_.report(first.line, first.column, std::string(first.values.spec().name),
+                         "a World with Solver=SequentialImpulse", "Solver=Impulse",
+                         "joints are solved only by the sequential-impulse solver; remove Solver=Impulse from the "
+                         "World record on line " + std::to_string(worldLine_));
+        }
+    }
+
+    void buildJoint(const PendingJoint& pending, JointDef& joint) {
+        const RecordValues& values = pending.values;
+        const std::optional<const DynamicObject*> a = jointBody(pending, "BodyA", true);
+        const std::optional<const DynamicObject*> b = jointBody(pending, "BodyB", false);
+        if (!a || !b) return;  // reported; nothing below can be checked without the bodies
+        const DynamicObject& bodyA = **a;
+        const DynamicObject* bodyB = *b;
+        joint.bodyA = bodyA.name;
+        joint.bodyB = bodyB ? bodyB->name : "";
+        if (bodyB == &bodyA) {
+            sink_.report(pending.line, values.valueColumn("BodyB"), "BodyB", "a body other than BodyA", bodyA.name,
+                         "a joint holds two different bodies; leave BodyB out to fix BodyA to the world");
+            return;
+        }
+        switch (joint.kind) {
+            case JointKind::Distance:
+            case JointKind::Rope: readTwoAnchors(pending, bodyA, bodyB, joint); break;
+            case JointKind::Ball: joint.anchorA = values.triple("Anchor", bodyA.position); break;
+            case JointKind::Hinge:
+                joint.anchorA = values.triple("Anchor", bodyA.position);
+                joint.axis = jointAxis(pending);
+                joint.lowerAngle = limitAngle(pending, "LowerAngle");
+                joint.upperAngle = limitAngle(pending, "UpperAngle");
+                if (joint.lowerAngle && joint.upperAngle && *joint.lowerAngle > *joint.upperAngle) {
+                    sink_.report(pending.line, values.valueColumn("UpperAngle"), "UpperAngle",
+                                 "an angle >= LowerAngle (" + formatNumber(glm::degrees(*joint.lowerAngle)) + ")",
+                                 formatNumber(glm::degrees(*joint.upperAngle)),
+                                 "the hinge turns between LowerAngle and UpperAngle (degrees)");
+                }
+                readMotor(values, joint);
+                break;
+            case JointKind::AngularMotor:
+                joint.axis = jointAxis(pending);
+                readMotor(values, joint);
+                break;
+        }
+        if (joint.kind != JointKind::AngularMotor) joint.maxForce = values.number("MaxForce", kUnbreakable);
+        joint.collideConnected = values.choice<bool>("CollideConnected", kBooleanChoices, kDefaultCollideConnected);
+    }
+
+    /// The DynamicObject a joint's @p field names: nullopt after reporting a problem,
+    /// nullptr for an omitted optional body (the world).
+    std::optional<const DynamicObject*> jointBody(const PendingJoint& pending, std::string_view field, bool required) {
+        const std::optional<std::string> name = pending.values.text(field);
+        if (!name) {
+            if (!required) return nullptr;
+            sink_.report(pending.line, pending.column, std::string(field), "the name of a DynamicObject", "",
+                         "every joint needs " + std::string(field) + "=..., the body it holds");
+            return std::nullopt;
+        }
+        std::vector<std::string> candidates;
+        for (const DynamicObject& body : scene_.dynamics) {
+            if (equalsIgnoreCase(body.name, *name)) return &body;
+            candidates.push_back(body.name);
+        }
+        std::string hint;
+        if (const auto other = names_.find(toLower(*name)); other != names_.end()) {
+            hint = quoted(other->second.name) + " is the " + std::string(other->second.record) + " on line " +
+                   std::to_string(other->second.line) + "; joints hold DynamicObjects";
+            if (!required) hint += " (leave BodyB out to fix the joint to the world)";
+        } else if (const auto suggestion = closestMatch(*name, candidates)) {
+            hint = "did you mean '" + *suggestion + "'?";
+        } else {
+            hint = "no DynamicObject has that name";
+        }
+        sink_.report(pending.line, pending.values.valueColumn(field), std::string(field), "the name of a DynamicObject",
+                     *name, std::move(hint));
+        return std::nullopt;
+    }
+
+    void readTwoAnchors(const PendingJoint& pending, const DynamicObject& bodyA, const DynamicObject* bodyB,
+                        JointDef& joint) {
+        const RecordValues& values = pending.values;
+        joint.anchorA = values.triple("AnchorA", bodyA.position);
+        if (!bodyB && values.valueColumn("AnchorB") == 0) {
+            sink_.report(pending.line, pending.column, "AnchorB", "a point (x, y, z)", "",
+                         "a " + std::string(values.spec().name) + " fixed to the world needs AnchorB=(x, y, z), "
+                         "the fixed point it hangs from");
+            return;
+        }
+        joint.anchorB = values.triple("AnchorB", bodyB ? bodyB->position : kZero);
+        if (values.valueColumn("Length") != 0) {
+            joint.length = values.number("Length", 0);
+        } else if (glm::length(joint.anchorB - joint.anchorA) < kMinNormalLength) {
+            sink_.report(pending.line, pending.column, "Length", "a length > 0", "",
+                         "the anchors coincide, so the distance at the start is 0: give Length=..., or use a BallJoint");
+        }
+    }
+
+    Vec3 jointAxis(const PendingJoint& pending) {
+        const Vec3 axis = pending.values.triple("Axis", kDefaultJointAxis);
+        const Real length = glm::length(axis);
+        if (length < kMinNormalLength) {
+            const std::string& written = pending.values.asWritten("Axis");
+            sink_.report(pending.line, pending.values.valueColumn("Axis"), "Axis", "a non-zero vector",
+                         written.empty() ? formatVector(axis) : written,
+                         "the axis is the direction the joint turns about, e.g. (0, 0, 1)");
+            return kDefaultJointAxis;
+        }
+        return axis / length;
+    }
+
+    /// A hinge limit in degrees → radians; empty when not given.
+    std::optional<Real> limitAngle(const PendingJoint& pending, std::string_view field) {
+        const int column = pending.values.valueColumn(field);
+        if (column == 0) return std::nullopt;
+        const Real degrees = pending.values.number(field, 0);
+        if (std::abs(degrees) > kMaxLimitDegrees) {
+            sink_.report(pending.line, column, std::string(field), "an angle from -180 to 180 degrees",
+                         formatNumber(degrees), "the hinge angle is measured from the start, within half a turn");
+            return std::nullopt;
+        }
+        return glm::radians(degrees);
+    }
+
+    static void readMotor(const RecordValues& values, JointDef& joint) {
+        joint.motor = values.valueColumn("MotorSpeed") != 0 || values.valueColumn("MaxMotorTorque") != 0;
+        joint.motorSpeed = values.number("MotorSpeed", 0);
+        joint.maxMotorTorque = values.number("MaxMotorTorque", kUnlimitedTorque);
+    }
+
     /// The object's name: its Name field, or the record type plus its index
     /// within that type ("DynamicObject0"). Names are unique ignoring case, so
     /// "Ball" and "ball" cannot both exist; the second one is reported.
@@ -744,6 +907,7 @@ private:
     std::array<int, kRecordKindCount> counts_{};  ///< Records seen so far, per RecordKind (for default names).
     std::vector<PendingSpring> pendingSprings_;   ///< Springs in file order, resolved by finish().
     std::vector<int> springLines_;                ///< Line of each resolved spring in scene_.springs.
+    std::vector<PendingJoint> pendingJoints_;    ///< Parallel to scene_.joints.
     int worldLine_ = 0;                     ///< Line of the World record; 0 before one is seen.
 };
 

@@ -44,6 +44,9 @@ constexpr std::string_view kDampingHint = "the damper constant c is in N*s/m; 0 
 constexpr std::string_view kRestLengthHint = "the rest length is in metres; leave it out to use the starting distance";
 constexpr std::string_view kMuHint =
     "Mu = G*M is the gravitational parameter in m^3/s^2, e.g. 3.986e14 for the Earth; it must be positive";
+constexpr std::string_view kForceHint = "a force in newtons; leave MaxForce out for a joint that never breaks";
+constexpr std::string_view kLengthHint = "a length in metres; leave Length out to use the distance at the start";
+constexpr std::string_view kTorqueHint = "a torque in newton metres; leave MaxMotorTorque out for an unlimited motor";
 
 // clang-format off
 /// DynamicObject: the classic 19 positional values, then named-only extras.
@@ -155,6 +158,58 @@ constexpr FieldSpec kAttractorFields[] = {
     {"Mu",              FieldKind::Number,     kNamedOnly, Range::Positive, kMuHint},  // m³/s², required
 };
 
+// Joints (docs/config-format.md#joints): named fields only. Bodies are
+// DynamicObject names; points and axes are in WORLD space at the start
+// (the World turns them into each body's frame).
+
+/// DistanceJoint and Rope: two anchors; Length is the rod's length or the rope's maximum.
+constexpr FieldSpec kTwoAnchorJointFields[] = {
+    {"Name",             FieldKind::Name,    kNamedOnly, Range::Any},
+    {"BodyA",            FieldKind::Name,    kNamedOnly, Range::Any},              // a DynamicObject
+    {"BodyB",            FieldKind::Name,    kNamedOnly, Range::Any},              // a DynamicObject; omitted: the world
+    {"AnchorA",          FieldKind::Vector,  kNamedOnly, Range::Any},              // m, world point on A
+    {"AnchorB",          FieldKind::Vector,  kNamedOnly, Range::Any},              // m, world point on B (or fixed)
+    {"Length",           FieldKind::Number,  kNamedOnly, Range::Positive, kLengthHint}, // m
+    {"MaxForce",         FieldKind::Number,  kNamedOnly, Range::Positive, kForceHint},  // N
+    {"CollideConnected", FieldKind::Boolean, kNamedOnly, Range::Any},
+};
+
+/// BallJoint: one shared point.
+constexpr FieldSpec kBallJointFields[] = {
+    {"Name",             FieldKind::Name,    kNamedOnly, Range::Any},
+    {"BodyA",            FieldKind::Name,    kNamedOnly, Range::Any},
+    {"BodyB",            FieldKind::Name,    kNamedOnly, Range::Any},
+    {"Anchor",           FieldKind::Vector,  kNamedOnly, Range::Any},              // m, world point
+    {"MaxForce",         FieldKind::Number,  kNamedOnly, Range::Positive, kForceHint},
+    {"CollideConnected", FieldKind::Boolean, kNamedOnly, Range::Any},
+};
+
+/// HingeJoint: a shared point and axis, optional limits (degrees) and motor.
+constexpr FieldSpec kHingeJointFields[] = {
+    {"Name",             FieldKind::Name,    kNamedOnly, Range::Any},
+    {"BodyA",            FieldKind::Name,    kNamedOnly, Range::Any},
+    {"BodyB",            FieldKind::Name,    kNamedOnly, Range::Any},
+    {"Anchor",           FieldKind::Vector,  kNamedOnly, Range::Any},              // m, world point
+    {"Axis",             FieldKind::Vector,  kNamedOnly, Range::Any},              // world direction, normalised
+    {"LowerAngle",       FieldKind::Number,  kNamedOnly, Range::Any},              // degrees, -180..180
+    {"UpperAngle",       FieldKind::Number,  kNamedOnly, Range::Any},              // degrees, -180..180
+    {"MotorSpeed",       FieldKind::Number,  kNamedOnly, Range::Any},              // rad/s, A relative to B
+    {"MaxMotorTorque",   FieldKind::Number,  kNamedOnly, Range::NonNegative, kTorqueHint}, // N m
+    {"MaxForce",         FieldKind::Number,  kNamedOnly, Range::Positive, kForceHint},
+    {"CollideConnected", FieldKind::Boolean, kNamedOnly, Range::Any},
+};
+
+/// AngularMotor: a spin about one axis, no position constraint.
+constexpr FieldSpec kAngularMotorFields[] = {
+    {"Name",             FieldKind::Name,    kNamedOnly, Range::Any},
+    {"BodyA",            FieldKind::Name,    kNamedOnly, Range::Any},
+    {"BodyB",            FieldKind::Name,    kNamedOnly, Range::Any},
+    {"Axis",             FieldKind::Vector,  kNamedOnly, Range::Any},              // world direction (fixed in B)
+    {"MotorSpeed",       FieldKind::Number,  kNamedOnly, Range::Any},              // rad/s
+    {"MaxMotorTorque",   FieldKind::Number,  kNamedOnly, Range::NonNegative, kTorqueHint}, // N m
+    {"CollideConnected", FieldKind::Boolean, kNamedOnly, Range::Any},
+};
+
 constexpr RecordSpec kRecords[] = {
     {RecordKind::DynamicObject,    "DynamicObject",    kDynamicFields},
     {RecordKind::KinematicsObject, "KinematicsObject", kKinematicFields},
@@ -163,6 +218,11 @@ constexpr RecordSpec kRecords[] = {
     {RecordKind::Expect,           "Expect",           kExpectFields},
     {RecordKind::Spring,           "Spring",           kSpringFields},
     {RecordKind::Attractor,        "Attractor",        kAttractorFields},
+    {RecordKind::DistanceJoint,    "DistanceJoint",    kTwoAnchorJointFields},
+    {RecordKind::Rope,             "Rope",             kTwoAnchorJointFields},
+    {RecordKind::BallJoint,        "BallJoint",        kBallJointFields},
+    {RecordKind::HingeJoint,       "HingeJoint",       kHingeJointFields},
+    {RecordKind::AngularMotor,     "AngularMotor",     kAngularMotorFields},
 };
 // clang-format on
 static_assert(std::size(kRecords) == kRecordKindCount, "one record table per RecordKind");

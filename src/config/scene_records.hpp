@@ -48,11 +48,24 @@ struct FieldSpec {
     std::string_view hint{};  ///< Advice shown when a value is out of range ("" if none).
 };
 
-/// @brief The kinds of line a scene file may contain.
-enum class RecordKind : std::uint8_t { DynamicObject, KinematicsObject, CollisionPlane, World, Expect, Spring, Attractor };
+/// @brief The kinds of line a scene file may contain: objects, the World, checks, forces, joints.
+enum class RecordKind : std::uint8_t {
+    DynamicObject,     ///< A simulated body.
+    KinematicsObject,  ///< A body with prescribed motion.
+    CollisionPlane,    ///< An infinite plane.
+    World,             ///< The simulation settings.
+    Expect,            ///< An outcome the run must reach (src/world/expectations.hpp).
+    Spring,            ///< A Hooke spring and damper between two anchors (src/forces/spring.hpp).
+    Attractor,         ///< A fixed inverse-square pull (src/forces/attractor.hpp).
+    DistanceJoint,     ///< A rigid rod between two bodies, or a body and the world.
+    Rope,              ///< A rope: a maximum distance.
+    BallJoint,         ///< A shared point.
+    HingeJoint,        ///< A shared point and axis; limits, motor.
+    AngularMotor,      ///< A torque-limited spin about one axis.
+};
 
 /// @brief Number of RecordKind values.
-inline constexpr std::size_t kRecordKindCount = 7;
+inline constexpr std::size_t kRecordKindCount = 12;
 
 /// @brief One record type: its name and its field table.
 struct RecordSpec {

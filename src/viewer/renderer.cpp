@@ -19,6 +19,8 @@ constexpr Real kSpinMetresPerRadian = Real(0.1);
 constexpr Real kNormalLength = Real(0.3);
 /// Grid spacing on planes, m.
 constexpr Real kGridSpacing = Real(1);
+/// Half length of a drawn hinge or motor axis, m.
+constexpr Real kJointAxisHalfLength = Real(0.3);
 
 void color(const Color& c, float scale = 1.0f) { glColor3f(c.r * scale, c.g * scale, c.b * scale); }
 
@@ -245,6 +247,51 @@ void drawVelocities(const World& world) {
     glLineWidth(1.0f);
 }
 
+/// Joints, always shown: the rod from each body's centre to its anchor and
+/// between the anchors (light tan), the anchors as points, hinge and motor
+/// axes (green). A broken joint is not drawn.
+void drawJoints(const World& world) {
+    glLineWidth(2.0f);
+    glBegin(GL_LINES);
+    for (const Joint& joint : world.joints()) {
+        if (joint.broken) continue;
+        const JointAnchors anchors = jointAnchors(joint, world.dynamics());
+        const DynamicObject& a = world.dynamics()[joint.bodyA];
+        if (joint.kind != JointKind::AngularMotor) {  // a motor holds no point: only its axis is drawn
+            glColor3f(0.95f, 0.85f, 0.6f);
+            vertex(a.position);
+            vertex(anchors.onA);
+            vertex(anchors.onA);
+            vertex(anchors.onB);
+            if (joint.bodyB != kWorldAnchor) {
+                vertex(anchors.onB);
+                vertex(world.dynamics()[joint.bodyB].position);
+            }
+        }
+        if (joint.kind == JointKind::Hinge || joint.kind == JointKind::AngularMotor) {
+            const Quat orientationB =
+                joint.bodyB == kWorldAnchor ? Quat(1, 0, 0, 0) : world.dynamics()[joint.bodyB].orientation;
+            const Vec3 axis = orientationB * joint.localAxisB;
+            const Vec3 centre = joint.kind == JointKind::Hinge ? anchors.onA : a.position;
+            glColor3f(0.4f, 0.95f, 0.4f);
+            vertex(centre - kJointAxisHalfLength * axis);
+            vertex(centre + kJointAxisHalfLength * axis);
+        }
+    }
+    glEnd();
+    glPointSize(6.0f);
+    glColor3f(0.95f, 0.85f, 0.6f);
+    glBegin(GL_POINTS);
+    for (const Joint& joint : world.joints()) {
+        if (joint.broken || joint.kind == JointKind::AngularMotor) continue;
+        const JointAnchors anchors = jointAnchors(joint, world.dynamics());
+        vertex(anchors.onA);
+        vertex(anchors.onB);
+    }
+    glEnd();
+    glLineWidth(1.0f);
+}
+
 void setUpLight() {
     // A directional light from above and in front (w = 0: a direction, in world
     // coordinates because the view matrix is already loaded).
@@ -294,6 +341,7 @@ void drawScene(const Simulation& simulation, const OrbitCamera& camera, int widt
     }
 
     glDisable(GL_LIGHTING);
+    drawJoints(world);
     if (options.hovered && options.hovered->kind != BodyKind::Plane) {
         glColor3f(1.0f, 0.95f, 0.2f);
         glLineWidth(3.0f);

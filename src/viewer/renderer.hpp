@@ -28,7 +28,9 @@ inline constexpr float kBackground[3] = {0.16f, 0.18f, 0.22f};
 /// Loads the camera's matrices, clears colour and depth, then draws the
 /// planes (finite quads with a 1 m grid), every body lit in its scene colour
 /// (dynamic spheres with darker meridians so rolling shows, boxes with dark
-/// edges, kinematic bodies with diagonal stripes), and the overlays
+/// edges, kinematic bodies with diagonal stripes), the joints (lines from
+/// each body's centre to its anchor and between the anchors; hinge and motor
+/// axes in green; broken joints are gone), and the overlays
 /// @p options asks for. While the stage walk-through runs, the overlays of
 /// the stage being shown are drawn whatever the keys say (bounding boxes at
 /// the broadphase, contacts at the narrowphase, impulses at the impulse

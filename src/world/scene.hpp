@@ -7,6 +7,7 @@
 
 #include "forces/attractor.hpp"
 #include "forces/spring.hpp"
+#include "dynamics/joints/joint_def.hpp"
 #include "objects/game_object.hpp"
 #include "world/expectations.hpp"
 #include "world/world_settings.hpp"
@@ -25,6 +26,7 @@ struct Scene {
     std::vector<CollisionPlane> planes;      ///< Infinite planes.
     std::vector<Spring> springs;             ///< Springs between dynamic bodies (indices into `dynamics`).
     std::vector<Attractor> attractors;       ///< Fixed points pulling by the inverse-square law.
+    std::vector<JointDef> joints;            ///< Joints between dynamic bodies (or to the world), in world space.
     std::vector<std::string> warnings;       ///< Things that load but may surprise (e.g. features not yet simulated).
     std::vector<Expectation> expectations;   ///< `Expect` records: what `stepwise run` checks (World ignores them).
 };

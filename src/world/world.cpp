@@ -68,6 +68,8 @@ World::World(Scene scene)
         require(isFinite(attractor.mu) && attractor.mu > 0, attractor.name, "Mu must be > 0 m^3/s^2");
         require(stepwise::isFinite(attractor.position), attractor.name, "position must be finite");
     }
+    joints_ = makeJoints(scene.joints, dynamics_, settings_.solver);  // src/dynamics/joints/joint.cpp
+    jointLinks(joints_, links_);
 }
 
 const DynamicObject* World::findDynamic(std::string_view name) const {
@@ -160,6 +162,7 @@ void World::stepWithSequentialImpulses() {
     contactSettings.positionCorrection = settings_.positionCorrection;
     contactSettings.softness = makeSoftness(contactHertzInUse(settings_),
                                             settings_.contactDampingRatio, hs);
+    const JointSolverSettings jointSettings = jointSolverSettings(settings_, hs);
 
     // 1. Forces → accelerations (src/forces/apply_forces.cpp); again at every substep.
     //    How far each body can move this step sets how far ahead contacts are looked for.
@@ -168,20 +171,23 @@ void World::stepWithSequentialImpulses() {
         measureSweeps(h);
     });
 
-    // 2. Which pairs might touch? Sleepers against static objects cannot. (src/collision/broadphase_brute_force.cpp)
+    // 2. Which pairs might touch? Sleepers against static objects cannot, jointed bodies do not.
+    //    (src/collision/broadphase_brute_force.cpp, src/dynamics/islands.cpp, src/dynamics/joints/joint.cpp)
     runStage(Stage::Broadphase, [&] {
         findPairsBruteForce(bodies(), boundingBoxes_, pairs_);
         dropSleepingPairs(bodies(), pairs_);
+        dropJointedPairs(joints_, jointWorkspace_, pairs_);  // what a joint holds does not collide (joint.hpp)
     });
 
     // 3. Which of them touch, or are about to (src/collision/narrowphase.cpp → *_*.cpp)
     runStage(Stage::Narrowphase, [&] { findContacts(bodies(), pairs_, contacts_); });
 
     // 4. Contacts and joints → constraints; an awake body wakes the islands it touches
-    //    (src/dynamics/contact_solver.cpp, src/dynamics/islands.cpp)
+    //    (src/dynamics/contact_solver.cpp, src/dynamics/joints/joint.cpp, src/dynamics/islands.cpp)
     runStage(Stage::PrepareConstraints, [&] {
         wakeTouchedIslands(bodies(), contacts_, links_);
         prepareContacts(bodies(), contacts_, h, settings_.warmStarting, solverWorkspace_);
+        prepareJoints(bodies(), joints_, settings_.warmStarting, jointWorkspace_);
     });
 
     for (int substep = 0; substep < settings_.substeps; ++substep) {
@@ -193,12 +199,14 @@ void World::stepWithSequentialImpulses() {
         });
         runStage(Stage::MoveKinematics, [&] { moveKinematics(kinematics_, hs); });
 
-        // 6. Warm start, soft solve, and move by what the solve changed
-        //    (src/dynamics/contact_solver.cpp, src/integrators/velocity_change_drift.cpp)
+        // 6. Warm start, soft solve (joints first, then contacts), and move by what the solve changed
+        //    (src/dynamics/joints/*.cpp, src/dynamics/contact_solver.cpp, src/integrators/velocity_change_drift.cpp)
         runStage(Stage::SolveConstraints, [&] {
             recordVelocities(dynamics_, solverWorkspace_.velocityBefore, solverWorkspace_.angularVelocityBefore);
+            warmStartJoints(jointWorkspace_, solverWorkspace_.dynamicPoses);
             warmStartContacts(solverWorkspace_, settings_.accumulateImpulses);
             for (int pass = 0; pass < settings_.velocityIterations; ++pass) {
+                solveJoints(jointWorkspace_, solverWorkspace_.dynamicPoses, jointSettings, true);
                 solveContacts(solverWorkspace_, contactSettings, true);
             }
             driftByVelocityChange(dynamics_, solverWorkspace_.velocityBefore, solverWorkspace_.angularVelocityBefore, hs,
@@ -209,16 +217,19 @@ void World::stepWithSequentialImpulses() {
         runStage(Stage::RelaxConstraints, [&] {
             recordPoses(bodies(), solverWorkspace_);  // where the drift left them
             for (int pass = 0; pass < settings_.relaxIterations; ++pass) {
+                solveJoints(jointWorkspace_, solverWorkspace_.dynamicPoses, jointSettings, false);
                 solveContacts(solverWorkspace_, contactSettings, false);
             }
         });
     }
 
-    // 8. Bounces, once per step, from the approach speed at touch (src/dynamics/contact_solver.cpp)
+    // 8. Bounces, once per step, from the approach speed at touch (src/dynamics/contact_solver.cpp);
+    //    joints that pulled harder than their MaxForce break (src/dynamics/joints/joint.cpp)
     runStage(Stage::Restitution, [&] {
         applyRestitution(solverWorkspace_);
         impulses_.resize(contacts_.size());
         storeContactImpulses(contacts_, solverWorkspace_, impulses_);
+        finishJoints(jointWorkspace_, joints_, hs, stepCount_ + 1, time_ + h, links_);
     });
 
     // 9. Islands at rest fall asleep (src/dynamics/islands.cpp)

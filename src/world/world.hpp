@@ -11,6 +11,7 @@
 #include "dynamics/contact_solver.hpp"
 #include "dynamics/impulse_resolver.hpp"
 #include "dynamics/islands.hpp"
+#include "dynamics/joints/joint.hpp"
 #include "forces/apply_forces.hpp"
 #include "world/body_set.hpp"
 #include "world/scene.hpp"
@@ -30,7 +31,8 @@ public:
     /// @brief Takes the objects and settings of @p scene.
     /// @throws std::invalid_argument naming the object when a value is impossible
     ///         (mass ≤ 0, radius ≤ 0, non-finite numbers, zero plane normal, time step ≤ 0,
-    ///         a spring joining a missing body or a body to itself, negative stiffness, μ ≤ 0).
+    ///         a spring joining a missing body or a body to itself, negative stiffness, μ ≤ 0),
+    ///         or the joint when it cannot be built (makeJoints()).
     explicit World(Scene scene);
 
     /// @brief Advances the simulation by one time step (see world.cpp for the stages).
@@ -48,6 +50,7 @@ public:
     const std::vector<CollisionPlane>& planes() const { return planes_; }     ///< Infinite planes.
     const std::vector<Spring>& springs() const { return springs_; }           ///< Springs (src/forces/spring.hpp).
     const std::vector<Attractor>& attractors() const { return attractors_; }  ///< Central forces (src/forces/attractor.hpp).
+    const std::vector<Joint>& joints() const { return joints_; }              ///< Joints, broken ones included.
 
     /// @brief The dynamic body called @p name, or nullptr.
     const DynamicObject* findDynamic(std::string_view name) const;
@@ -74,6 +77,7 @@ private:
     std::vector<CollisionPlane> planes_;
     std::vector<Spring> springs_;
     std::vector<Attractor> attractors_;
+    std::vector<Joint> joints_;
 
     std::vector<Aabb> boundingBoxes_;
     std::vector<CandidatePair> pairs_;
@@ -82,6 +86,7 @@ private:
     ContactWorkspace contactWorkspace_;
     SolverWorkspace solverWorkspace_;
     IslandWorkspace islandWorkspace_;
+    JointWorkspace jointWorkspace_;
     std::vector<BodyLink> links_;  ///< Bodies held together by joints (for islands).
 
     StageRecords stageRecords_{};

@@ -1,0 +1,107 @@
+/// @file joint_parts.hpp
+/// @brief What the five joint files share: a joint's geometry at a pose, impulses, effective masses, soft rows.
+///
+/// Internal to src/dynamics/joints/: joint.cpp dispatches on JointKind to the
+/// per-type functions declared at the end, each defined in its own file with
+/// its derivation (distance_joint.cpp, rope.cpp, ball_joint.cpp,
+/// hinge_joint.cpp, angular_motor.cpp). A `switch`, not a virtual call: the
+/// joints are one contiguous array of one struct.
+#pragma once
+
+#include <span>
+
+#include "dynamics/joints/joint.hpp"
+
+namespace stepwise {
+
+/// @brief Shorter than this, m, the direction between two anchors is undefined (a rod or rope of length ~0).
+inline constexpr Real kDegenerateJointLength = Real(1e-9);
+
+/// @brief A joint's geometry with its bodies at given poses (the world counts as a body at rest at the origin).
+struct JointFrame {
+    Quat orientationA{1, 0, 0, 0};  ///< q_A.
+    Quat orientationB{1, 0, 0, 0};  ///< q_B (identity for the world).
+    Vec3 rA{0, 0, 0};               ///< Lever arm of A's anchor, world frame: q_A·(local anchor), m.
+    Vec3 rB{0, 0, 0};               ///< The same for B (zero for the world), m.
+    Vec3 pA{0, 0, 0};               ///< A's anchor, x_A + r_A, m.
+    Vec3 pB{0, 0, 0};               ///< B's anchor, x_B + r_B (the fixed point for the world), m.
+};
+
+/// @brief The frame of @p joint with A at @p poseA and B at @p poseB (ignored when B is the world).
+JointFrame frameAt(const Joint& joint, const Pose& poseA, const Pose& poseB);
+
+/// @brief The frame of a prepared joint at the recorded @p poses.
+JointFrame frameAt(const SolverJoint& j, std::span<const Pose> poses);
+
+/// @brief The unit axis @p n from p_A to p_B and their distance @p length (m); false when they coincide (no axis).
+bool jointAxis(const JointFrame& f, Vec3& n, Real& length);
+
+/// @brief [r]×, the matrix with [r]×·v = r × v.
+Mat3 skew(const Vec3& r);
+
+/// @brief Velocity of B's anchor minus A's anchor: (v_B + ω_B×r_B) − (v_A + ω_A×r_A), m/s.
+Vec3 relativeAnchorVelocity(const SolverJoint& j, const JointFrame& f);
+
+/// @brief Angular velocity of A relative to B: ω_A − ω_B, rad/s.
+Vec3 relativeAngularVelocity(const SolverJoint& j);
+
+/// @brief Linear impulse @p impulse on B at its anchor and −@p impulse on A at its anchor (N·s).
+void applyLinearImpulse(SolverJoint& j, const JointFrame& f, const Vec3& impulse);
+
+/// @brief Angular impulse @p impulse on A and −@p impulse on B (N·m·s).
+void applyAngularImpulse(SolverJoint& j, const Vec3& impulse);
+
+/// @brief K⁻¹ of a row along unit direction @p n through the anchors:
+/// 1 / (m_A⁻¹ + m_B⁻¹ + (r_A×n)·I_A⁻¹(r_A×n) + (r_B×n)·I_B⁻¹(r_B×n)), kg.
+Real axialMass(const SolverJoint& j, const JointFrame& f, const Vec3& n);
+
+/// @brief K⁻¹ of an angular row about unit axis @p a: 1 / (a·(I_A⁻¹ + I_B⁻¹)·a), kg·m².
+Real angularMass(const SolverJoint& j, const Vec3& a);
+
+/// @brief The soft terms of one row in one pass: Ċ is driven to −bias, the
+/// effective mass is scaled by massScale and impulseScale·λ_acc leaks (softness.hpp).
+struct RowSoftness {
+    Real biasRate = 0;      ///< b, 1/s (0: no position feedback).
+    Real massScale = 1;     ///< s_m.
+    Real impulseScale = 0;  ///< s_i.
+};
+
+/// @brief An equality row (C = 0): soft in the biased pass, rigid velocities-only in the relax pass.
+RowSoftness equalityRow(const JointSolverSettings& settings, bool useBias);
+
+/// @brief The bias velocity and scales of a one-sided row that wants C ≥ 0.
+///
+/// Like a contact: while C > 0 (slack) the row is *speculative*, bias C/h_s:
+/// the bodies may close the gap within this substep but not pass it, and no
+/// impulse acts unless they would. At or past the limit (C ≤ 0) it is an
+/// equality row. The accumulated impulse is then clamped to ≥ 0.
+/// @param[out] bias the velocity bias to add to Ċ, m/s or rad/s
+RowSoftness inequalityRow(Real C, const JointSolverSettings& settings, bool useBias, Real& bias);
+
+// The types, one file each. warmStart* applies the joint's accumulated impulses
+// (at the start of a substep); solve* makes one Gauss–Seidel iteration.
+
+/// @brief Distance and rope: the accumulated axial impulse along the current axis (distance_joint.cpp).
+void warmStartAxial(SolverJoint& j, const JointFrame& f);
+/// @brief Rigid rod: C = |p_B − p_A| − L = 0 (distance_joint.cpp).
+void solveDistanceJoint(SolverJoint& j, const JointFrame& f, const JointSolverSettings& settings, bool useBias);
+/// @brief Rope: C = |p_B − p_A| − L ≤ 0, one-sided (rope.cpp).
+void solveRope(SolverJoint& j, const JointFrame& f, const JointSolverSettings& settings, bool useBias);
+/// @brief Ball joint: the accumulated point impulse (ball_joint.cpp).
+void warmStartBallJoint(SolverJoint& j, const JointFrame& f);
+/// @brief Ball joint: C = p_B − p_A = 0, a 3×3 block (ball_joint.cpp). The hinge reuses it for its point.
+void solveBallJoint(SolverJoint& j, const JointFrame& f, const JointSolverSettings& settings, bool useBias);
+/// @brief Hinge: point, alignment, limit and motor impulses (hinge_joint.cpp).
+void warmStartHingeJoint(SolverJoint& j, const JointFrame& f);
+/// @brief Hinge: motor, limits, axis alignment (2 rows), then the point (hinge_joint.cpp).
+void solveHingeJoint(SolverJoint& j, const JointFrame& f, const JointSolverSettings& settings, bool useBias);
+/// @brief Angular motor: the accumulated motor impulse about the axis (angular_motor.cpp).
+void warmStartAngularMotor(SolverJoint& j, const JointFrame& f);
+/// @brief Angular motor: (ω_A − ω_B)·a → target, |λ_acc| ≤ τ_max·h_s (angular_motor.cpp).
+void solveAngularMotor(SolverJoint& j, const JointFrame& f, const JointSolverSettings& settings);
+
+/// @brief One clamped motor row about unit axis @p a (shared by the hinge and the angular motor):
+/// λ = −K⁻¹((ω_A − ω_B)·a − target), accumulated impulse kept within ±maxMotorTorque·h_s.
+void solveMotorRow(SolverJoint& j, const Vec3& a, Real substep);
+
+}  // namespace stepwise
