@@ -45,7 +45,8 @@ int viewCommand(const std::vector<std::string>& args) {
 
 }  // namespace
 
-/// @brief Runs the command named by the first argument (`run`, `check`, `view`, `--help`).
+/// @brief Runs the command named by the first argument (`run`, `check`, `view`, `raycast`, `generate`, `bench`,
+/// `--help`).
 /// @return the exit code: 0 success, 1 simulation failure, 2 bad command line or scene.
 int main(int argc, char** argv) {
     using namespace stepwise::cli;
@@ -64,7 +65,10 @@ int main(int argc, char** argv) {
             return checkCommand(rest[0]);
         }
         if (command == "view") return viewCommand(rest);
-        throw UsageError("unknown command '" + command + "' (commands: run, check, view)");
+        if (command == "raycast") return raycastCommand(rest);
+        if (command == "generate") return generateCommand(rest);
+        if (command == "bench") return benchCommand(rest);
+        throw UsageError("unknown command '" + command + "' (commands: run, check, view, raycast, generate, bench)");
     } catch (const UsageError& error) {
         std::fprintf(stderr, "stepwise: error: %s\nRun 'stepwise --help' for usage.\n", error.what());
         return kExitUsageError;

@@ -195,6 +195,9 @@ private:
             case FieldKind::Integrator:
                 readChoice(field, slot, value, wordsOf(kIntegratorChoices));
                 break;
+            case FieldKind::Broadphase:
+                readChoice(field, slot, value, wordsOf(kBroadphaseChoices));
+                break;
             case FieldKind::Boolean:
                 readChoice(field, slot, value, wordsOf(kBooleanChoices));
                 break;

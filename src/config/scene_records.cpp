@@ -86,6 +86,7 @@ constexpr FieldSpec kWorldFields[] = {
     {"TimeStep",        FieldKind::Number,     kNamedOnly, Range::Positive, kTimeHint}, // s
     {"Integrator",      FieldKind::Integrator, kNamedOnly, Range::Any},
     {"Duration",        FieldKind::Number,     kNamedOnly, Range::Positive, kTimeHint}, // s
+    {"Broadphase",      FieldKind::Broadphase, kNamedOnly, Range::Any},
 };
 
 constexpr RecordSpec kRecords[] = {
@@ -124,6 +125,17 @@ const std::array<Choice<IntegratorKind>, 6> kIntegratorChoices = {{
     {"SemiImplicitEuler", IntegratorKind::SymplecticEuler},
     {"Verlet", IntegratorKind::Verlet},
     {"VelocityVerlet", IntegratorKind::Verlet},
+}};
+
+const std::array<Choice<BroadphaseKind>, 8> kBroadphaseChoices = {{
+    {"Auto", BroadphaseKind::Auto},
+    {"BruteForce", BroadphaseKind::BruteForce},
+    {"SweepAndPrune", BroadphaseKind::SweepAndPrune},
+    {"SAP", BroadphaseKind::SweepAndPrune},
+    {"AabbTree", BroadphaseKind::AabbTree},
+    {"DynamicTree", BroadphaseKind::AabbTree},
+    {"Grid", BroadphaseKind::Grid},
+    {"UniformGrid", BroadphaseKind::Grid},
 }};
 
 const std::array<Choice<bool>, 6> kBooleanChoices = {{

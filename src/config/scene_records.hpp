@@ -28,6 +28,7 @@ enum class FieldKind : std::uint8_t {
     Color,       ///< Three numbers with components R, G, B: `Color=(1, 0, 0)` or `ColorR=1`.
     Shape,       ///< A word from kShapeChoices.
     Integrator,  ///< A word from kIntegratorChoices.
+    Broadphase,  ///< A word from kBroadphaseChoices.
     Boolean,     ///< Yes or no, a word from kBooleanChoices: `Hollow=true`, `Hollow=yes`, `Hollow=1`.
     Name,        ///< An object name (see parseName()).
 };
@@ -69,6 +70,9 @@ extern const std::array<Choice<Shape>, 3> kShapeChoices;
 
 /// @brief Accepted spellings of IntegratorKind (any case), with synonyms.
 extern const std::array<Choice<IntegratorKind>, 6> kIntegratorChoices;
+
+/// @brief Accepted spellings of BroadphaseKind (any case), with synonyms.
+extern const std::array<Choice<BroadphaseKind>, 8> kBroadphaseChoices;
 
 /// @brief Accepted spellings of a Boolean field (any case): true/false, yes/no, 1/0.
 extern const std::array<Choice<bool>, 6> kBooleanChoices;

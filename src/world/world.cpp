@@ -77,8 +77,8 @@ void World::step() {
     // 3. Advance kinematic bodies along their prescribed motion (src/integrators/kinematic_motion.cpp)
     runStage(Stage::MoveKinematics, [&] { moveKinematics(kinematics_, h); });
 
-    // 4. Which pairs might touch? (src/collision/broadphase_brute_force.cpp)
-    runStage(Stage::Broadphase, [&] { findPairsBruteForce(bodies(), boundingBoxes_, pairs_); });
+    // 4. Which pairs might touch? (src/collision/broadphase.cpp → broadphase_*.cpp)
+    runStage(Stage::Broadphase, [&] { broadphase_.findPairs(settings_.broadphase, bodies(), pairs_); });
 
     // 5. Which of them do, where, and how deep? (src/collision/narrowphase.cpp → sphere_*.cpp)
     runStage(Stage::Narrowphase, [&] { findContacts(bodies(), pairs_, contacts_); });

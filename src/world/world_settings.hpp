@@ -16,6 +16,21 @@ enum class IntegratorKind : std::uint8_t {
 /// @brief Scene-file spelling of an integrator ("Euler", "SymplecticEuler", "Verlet").
 const char* toString(IntegratorKind kind);
 
+/// @brief Which broadphase finds the candidate pairs (src/collision/broadphase.hpp).
+///
+/// Every broadphase returns the same pairs in the same order, so the choice
+/// changes how long a step takes, never the trajectory.
+enum class BroadphaseKind : std::uint8_t {
+    Auto,           ///< Chosen from the scene on the first step (chooseBroadphase(), which says why).
+    BruteForce,     ///< Every pair of bodies, O(n²): the reference.
+    SweepAndPrune,  ///< Sort the boxes along the axis of greatest spread and sweep.
+    AabbTree,       ///< Dynamic tree of fattened boxes, inserted by the surface-area heuristic.
+    Grid,           ///< Uniform grid, cells sized from the bodies.
+};
+
+/// @brief Scene-file spelling of a broadphase ("Auto", "BruteForce", "SweepAndPrune", "AabbTree", "Grid").
+const char* toString(BroadphaseKind kind);
+
 /// @brief Default time step, s: 60 steps per second, the usual display rate.
 inline constexpr Real kDefaultTimeStep = Real(1) / Real(60);
 /// @brief Default run length of `stepwise run`, s.
@@ -34,6 +49,7 @@ struct WorldSettings {
     Real duration = kDefaultDuration;                  ///< Default run length, s; > 0.
     int impulseIterations = kDefaultImpulseIterations; ///< Passes over the contacts per step, ≥ 1.
     bool warmStarting = true;                          ///< Start each persisting contact from last step's impulses.
+    BroadphaseKind broadphase = BroadphaseKind::Auto;  ///< Which broadphase finds the candidate pairs.
 };
 
 }  // namespace stepwise
