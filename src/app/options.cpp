@@ -42,7 +42,7 @@ const char* usageText() {
            "  stepwise bench broadphase FILE [--steps N | --duration S] [--check-every K]\n"
            "      Run every broadphase on the scene step by step, check each against brute\n"
            "      force (every K-th step, default every step) and rank them by time per step.\n"
-           "      Exit code 1 when one misses a pair the narrowphase finds touching.\n"
+           "      Exit code 1 when one differs from brute force (each difference is listed).\n"
            "  stepwise --help\n"
            "\n"
            "Exit codes: 0 success, 1 the simulation failed (non-finite state),\n"

@@ -196,28 +196,55 @@ void AabbTree::findOverlaps(const ProxySet& proxies, std::vector<ProxyPair>& pai
         }
     }
 
-    // One query per dynamic body. Kinematic bodies never query, so two of
-    // them are never paired; a dynamic partner with a lower index found this
-    // pair in its own query already.
-    for (std::uint32_t a = 0; a < proxies.dynamicCount; ++a) {
-        const Aabb& box = proxies.boxes[a];
-        stack_.clear();
-        stack_.push_back(root_);
-        while (!stack_.empty()) {
-            const std::int32_t index = stack_.back();
-            stack_.pop_back();
-            const Node& node = nodes_[index];
-            ++counters.structureTests;
-            if (!node.box.overlaps(box)) continue;
-            if (node.isLeaf()) {
-                const std::uint32_t b = node.proxy;
-                if (b <= a) continue;
-                ++counters.pairTests;  // the fat box overlaps; now the body's own box decides
-                if (box.overlaps(proxies.boxes[b])) pairs.push_back({a, b});
-            } else {
-                stack_.push_back(node.child1);
-                stack_.push_back(node.child2);
+    findOverlappingLeaves(proxies, pairs, counters);
+}
+
+/// All overlapping pairs of leaves at once, by descending the tree against
+/// itself (Ericson, RTCD §6.5.1): a pair of nodes whose boxes are apart
+/// cannot hold an overlapping pair of leaves, and is dropped whole. A node
+/// paired with itself stands for the pairs among its own leaves: those of
+/// each child with itself, and the two children against each other. Of two
+/// overlapping nodes, the one with the larger box is split (the smaller is
+/// more likely to be rejected whole against each half). Compared with one
+/// query per body from the root, this walks the top of the tree once rather
+/// than once per body: 2.5 times fewer node tests in the sphere rain.
+void AabbTree::findOverlappingLeaves(const ProxySet& proxies, std::vector<ProxyPair>& pairs,
+                                     BroadphaseCounters& counters) {
+    if (root_ == kNull) return;
+    // Each visit pushes at most 3 pairs and removes one, and a path of visits
+    // descends at most 2·height levels (one of the two nodes each time), so
+    // the stack never holds more than 4·height + 3 pairs. Reserving twice that
+    // when the tree grows taller keeps the running tree from allocating.
+    const auto bound = static_cast<std::size_t>(4 * nodes_[root_].height + 3);
+    if (stack_.capacity() < bound) stack_.reserve(2 * bound);
+    stack_.clear();
+    stack_.push_back({root_, root_});
+    while (!stack_.empty()) {
+        const auto [i, j] = stack_.back();
+        stack_.pop_back();
+        const Node& a = nodes_[i];
+        if (i == j) {
+            if (a.isLeaf()) continue;
+            stack_.push_back({a.child1, a.child1});
+            stack_.push_back({a.child2, a.child2});
+            stack_.push_back({a.child1, a.child2});
+            continue;
+        }
+        const Node& b = nodes_[j];
+        ++counters.structureTests;
+        if (!a.box.overlaps(b.box)) continue;
+        if (a.isLeaf() && b.isLeaf()) {
+            if (proxies.isKinematic(a.proxy) && proxies.isKinematic(b.proxy)) continue;  // neither can be pushed
+            ++counters.pairTests;  // the fat boxes overlap; now the bodies' own boxes decide
+            if (proxies.boxes[a.proxy].overlaps(proxies.boxes[b.proxy])) {
+                pairs.push_back(orderedPair(a.proxy, b.proxy));
             }
+        } else if (b.isLeaf() || (!a.isLeaf() && a.box.surfaceArea() >= b.box.surfaceArea())) {
+            stack_.push_back({a.child1, j});
+            stack_.push_back({a.child2, j});
+        } else {
+            stack_.push_back({i, b.child1});
+            stack_.push_back({i, b.child2});
         }
     }
 }
@@ -249,3 +276,4 @@ bool AabbTree::isConsistent(const ProxySet& proxies) const {
 }
 
 }  // namespace stepwise
+

@@ -2,6 +2,7 @@
 /// @brief Broadphase with a dynamic bounding-volume tree of fattened boxes.
 #pragma once
 
+#include <utility>
 #include <vector>
 
 #include "collision/broadphase_proxies.hpp"
@@ -11,9 +12,10 @@ namespace stepwise {
 /// @brief A dynamic AABB tree (Goldsmith and Salmon 1987; Catto, "Dynamic BVH", GDC 2019; Ericson, RTCD §6.5).
 ///
 /// A binary tree whose leaves are the proxies and whose every internal node
-/// holds a box around its two children. A query descends only into the
-/// nodes whose box overlaps the query box, so finding one body's partners
-/// costs O(log n) node tests plus a few per partner.
+/// holds a box around its two children. Two nodes whose boxes are apart
+/// cannot hold an overlapping pair of leaves, so the pairs are found by
+/// descending the tree against itself, dropping every pair of subtrees that
+/// are apart (findOverlappingLeaves()).
 ///
 /// **Fat boxes.** A leaf stores its proxy's box grown by a margin, a fraction
 /// kTreeMarginFraction of its size. A body that stays inside its fat box is
@@ -40,10 +42,9 @@ namespace stepwise {
 /// child (Kopta et al. 2012, "Fast, effective BVH updates for animated
 /// scenes"): the leaves below A stay the same, only the child that changes
 /// changes its box, and the swap is made when that box's area shrinks. In
-/// the sphere-rain benchmark this halves the node tests of the queries
-/// (docs/broadphase.md), and keeps the tree about as shallow as a balanced
-/// one (height 19 for 16 384 bodies, log₂ n = 14), though unlike an AVL tree
-/// nothing guarantees a bound.
+/// the sphere rain of 16 384 bodies (docs/broadphase.md) they cut the node
+/// tests by a third and the height from 105 to 21 (log₂ n = 14); unlike an
+/// AVL tree's, though, the height has no guaranteed bound.
 ///
 /// **Memory.** All nodes live in one array and refer to each other by index;
 /// removed nodes go on a free list that later insertions take from, so a
@@ -78,6 +79,7 @@ private:
     };
 
     void rebuild(const ProxySet& proxies);
+    void findOverlappingLeaves(const ProxySet& proxies, std::vector<ProxyPair>& pairs, BroadphaseCounters& counters);
     static Aabb fatBox(const Aabb& tight);
     std::int32_t allocateNode();
     void freeNode(std::int32_t node);
@@ -90,7 +92,7 @@ private:
     std::int32_t root_ = kNull;              ///< Root node, kNull when empty.
     std::int32_t freeList_ = kNull;          ///< First free node, kNull when none.
     std::vector<std::int32_t> leafOfProxy_;  ///< The leaf of each proxy.
-    std::vector<std::int32_t> stack_;        ///< Query stack, kept to avoid allocating.
+    std::vector<std::pair<std::int32_t, std::int32_t>> stack_;  ///< Node pairs still to visit, kept to avoid allocating.
     std::uint32_t dynamicCount_ = 0;         ///< dynamicCount of the proxies the tree was built for.
 };
 
