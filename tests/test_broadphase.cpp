@@ -263,8 +263,7 @@ TEST_CASE("Sweep and prune sorts along the axis of greatest spread", "[broadphas
     CHECK(pairs.empty());
 }
 
-TEST_CASE("Auto picks brute force for a few bodies, the grid for similar sizes, the tree for mixed ones",
-          "[broadphase]") {
+TEST_CASE("Auto picks brute force for a few bodies, then by count, sizes and rest", "[broadphase]") {
     Bodies b;
     for (int i = 0; i < 10; ++i) b.dynamics.push_back(test::sphere("s" + std::to_string(i), Vec3(i, 0, 0)));
     BroadphaseChoice choice = chooseBroadphase(b.view());
@@ -273,7 +272,13 @@ TEST_CASE("Auto picks brute force for a few bodies, the grid for similar sizes, 
 
     for (int i = 10; i < 500; ++i) b.dynamics.push_back(test::sphere("s" + std::to_string(i), Vec3(i, 0, 0), Vec3(0), 0.4 + 0.0002 * i));
     choice = chooseBroadphase(b.view());
-    CHECK(choice.kind == BroadphaseKind::Grid);
+    CHECK(choice.kind == BroadphaseKind::SweepAndPrune);
+
+    Bodies many;  // a lattice of 2 197 falling balls, 2 m apart
+    for (int i = 0; i < 13 * 13 * 13; ++i) {
+        many.dynamics.push_back(test::sphere("m" + std::to_string(i), Real(2) * Vec3(i % 13, i / 169, (i / 13) % 13), Vec3(0, -3, 0)));
+    }
+    CHECK(chooseBroadphase(many.view()).kind == BroadphaseKind::Grid);
 
     for (std::size_t i = 0; i <= kAutoGridMaxOversize; ++i) {
         b.kinematics.push_back(test::kinematicBox("rock" + std::to_string(i), Vec3(0, -10, 10 * Real(i)), Vec3(8)));
@@ -281,6 +286,19 @@ TEST_CASE("Auto picks brute force for a few bodies, the grid for similar sizes, 
     choice = chooseBroadphase(b.view());
     CHECK(choice.kind == BroadphaseKind::AabbTree);
     CHECK_THAT(choice.reason, Catch::Matchers::Contains("9 larger"));
+
+    // A wall of boxes standing on a floor, each touching its neighbours: at rest, built.
+    Bodies wall;
+    for (int i = 0; i < 150; ++i) {
+        wall.dynamics.push_back(test::dynamicBox("brick" + std::to_string(i), Vec3(i % 15, 0.5 + i / 15, 0), Vec3(1), 1, 0.5));
+    }
+    wall.planes.push_back(test::ground());
+    const BroadphaseChoice built = chooseBroadphase(wall.view());
+    CHECK(built.kind == BroadphaseKind::AabbTree);
+    CHECK_THAT(built.reason, Catch::Matchers::Contains("150 of 150") && Catch::Matchers::Contains("at rest"));
+    // The same wall thrown apart at 3 m/s is not at rest.
+    for (DynamicObject& brick : wall.dynamics) brick.velocity = Vec3(0, 0, 3);
+    CHECK(chooseBroadphase(wall.view()).kind != BroadphaseKind::AabbTree);
 
     // The World resolves Auto on its first step and keeps the reason.
     Scene scene = test::emptyScene();

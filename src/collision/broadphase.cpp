@@ -43,6 +43,34 @@ BroadphaseChoice chooseBroadphase(const BodySet& bodies) {
                       dynamicCount, kAutoBruteForceBelow);
         return {BroadphaseKind::BruteForce, text};
     }
+    // Already built and at rest? Which bodies touch something is what a
+    // broadphase finds; the grid finds it in O(n) (this runs once per World).
+    std::vector<Aabb> boxes;
+    boxes.reserve(dynamicCount + bodies.kinematics.size());
+    for (const DynamicObject& body : bodies.dynamics) boxes.push_back(broadphaseBounds(body));
+    for (const KinematicsObject& body : bodies.kinematics) boxes.push_back(broadphaseBounds(body));
+    std::vector<ProxyPair> overlaps;
+    BroadphaseCounters ignored;
+    UniformGrid().findOverlaps({boxes, static_cast<std::uint32_t>(dynamicCount)}, overlaps, ignored);
+    std::vector<std::uint8_t> touching(dynamicCount, 0);
+    for (const ProxyPair& pair : overlaps) {
+        touching[pair.a] = 1;
+        if (pair.b < dynamicCount) touching[pair.b] = 1;
+    }
+    std::size_t resting = 0;
+    for (std::size_t i = 0; i < dynamicCount; ++i) {
+        const bool onPlane = std::any_of(bodies.planes.begin(), bodies.planes.end(),
+                                         [&](const CollisionPlane& plane) { return aabbTouchesPlane(boxes[i], plane); });
+        if ((touching[i] || onPlane) && glm::length(bodies.dynamics[i].velocity) <= kAutoRestingSpeed) ++resting;
+    }
+    if (Real(resting) >= kAutoRestingFraction * Real(dynamicCount)) {
+        std::snprintf(text, sizeof text,
+                      "%zu of %zu dynamic bodies start at rest and touching (a structure already built): the AABB "
+                      "tree leaves resting bodies where they are",
+                      resting, dynamicCount);
+        return {BroadphaseKind::AabbTree, text};
+    }
+
     // How different are the sizes? The grid's cells are sized from the median body.
     std::vector<Real> sizes;
     sizes.reserve(dynamicCount + bodies.kinematics.size());
@@ -53,6 +81,13 @@ BroadphaseChoice chooseBroadphase(const BodySet& bodies) {
     const Real median = *middle;
     const auto oversize = static_cast<std::size_t>(
         std::count_if(sizes.begin(), sizes.end(), [&](Real size) { return size > kGridOversizeRatio * median; }));
+    if (oversize <= kAutoGridMaxOversize && dynamicCount < kAutoSweepBelow) {
+        std::snprintf(text, sizeof text,
+                      "%zu bodies of similar size (%zu larger than %.3g x the median %.3g m), fewer than %zu: "
+                      "sorting along one axis and sweeping is the fastest at this count",
+                      sizes.size(), oversize, double(kGridOversizeRatio), double(median), kAutoSweepBelow);
+        return {BroadphaseKind::SweepAndPrune, text};
+    }
     if (oversize <= kAutoGridMaxOversize) {
         std::snprintf(text, sizeof text,
                       "%zu bodies of similar size (%zu larger than %.3g x the median %.3g m): a grid sized from "
