@@ -42,18 +42,18 @@ struct BroadphaseChoice {
     std::string reason;                                ///< One sentence, for the run summary.
 };
 
-/// Below this many dynamic bodies `Auto` uses brute force. At 64 bodies every
-/// broadphase takes 0.02 to 0.08 ms a step, a few per cent of the step
-/// (docs/broadphase.md), so nothing is won; brute force is then the choice
-/// because it is the reference, the easiest to follow in a debugger, and
-/// what the lecture scenes have always run. From 128 on, its n² box tests
-/// cost more than sorting (0.10 ms against 0.06 ms at 128).
+/// Below this many dynamic bodies `Auto` uses brute force. At 64 bodies it
+/// takes 0.04 ms a step, 0.02 ms more than sweep and prune, about 5 % of the
+/// step (docs/broadphase.md): little to win, and brute force is the
+/// reference, the easiest to follow in a debugger, and what the lecture
+/// scenes have always run. Beyond, its n² box tests cost more and more:
+/// 0.11 against 0.08 ms at 128 bodies, 1.0 against 0.54 ms at 512.
 inline constexpr std::size_t kAutoBruteForceBelow = 64;
 /// Below this many bodies `Auto` prefers sweep and prune to the grid for
-/// bodies of similar size. Measured, sweep and prune is the fastest from 256
-/// to 1 024 bodies and the grid from 4 096 on: bodies spread over a floor put
-/// ever more intervals across each sweep interval (sweep and prune's cost per
-/// body grows as √n), while the grid's stays flat.
+/// bodies of similar size. Measured, sweep and prune is the fastest from 64
+/// to 1 024 bodies and the grid from 4 096 on: the wider the floor the bodies
+/// spread over, the more of them each sweep interval crosses (sweep and
+/// prune's cost per body grows as √n), while the grid's stays flat.
 inline constexpr std::size_t kAutoSweepBelow = 2048;
 /// `Auto` picks the grid when at most this many bodies are oversize for it
 /// (larger than kGridOversizeRatio × the median size). Each oversize body is
@@ -75,7 +75,7 @@ inline constexpr Real kAutoRestingSpeed = Real(0.5);
 /// - fewer than kAutoBruteForceBelow dynamic bodies: brute force;
 /// - a structure at rest (kAutoRestingFraction of the bodies slow and
 ///   touching): the AABB tree, whose leaves stay put while the bodies do, so
-///   a step costs only the descent (3 to 4 times faster than the grid on the
+///   a step costs only the descent (2 to 4 times faster than the grid on the
 ///   pyramids benchmark, docs/broadphase.md);
 /// - bodies of similar size (at most kAutoGridMaxOversize larger than
 ///   kGridOversizeRatio × the median): sweep and prune below kAutoSweepBelow
