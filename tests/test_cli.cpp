@@ -138,3 +138,59 @@ TEST_CASE("stepwise check warns about a spring past its stability limit, and sti
     CHECK(edge.exitCode == 0);
     CHECK_THAT(edge.output, !Contains("warning"));
 }
+
+TEST_CASE("run says which broadphase ran, and why when the scene leaves it to Auto", "[cli][broadphase]") {
+    const Result automatic = runStepwise("run --steps 3");
+    CHECK_THAT(automatic.output, Contains("Broadphase BruteForce (Auto:") && Contains("fewer than"));
+    TempFile scene("grid.scene", "World, Broadphase=Grid\nDynamicObject\nCollisionPlane\n");
+    const Result chosen = runStepwise("run " + scene.quoted() + " --steps 3");
+    CHECK(chosen.exitCode == 0);
+    CHECK_THAT(chosen.output, Contains("Broadphase Grid (set by the scene)"));
+}
+
+TEST_CASE("raycast prints the first body along the ray", "[cli][raycast]") {
+    // A ball of radius 0.5 at x = 3 above a floor: along +x at its height the
+    // ray meets it at x = 2.5; straight down from (0, 2, 0) it meets the floor 2 m below.
+    TempFile scene("ray.scene", "DynamicObject, Name=ball, Position=(3, 1, 0), Radius=0.5\n"
+                                "CollisionPlane, Name=floor\nWorld, Gravity=(0, 0, 0)\n");
+    const Result ball = runStepwise("raycast " + scene.quoted() + " --from 0,1,0 --dir 1,0,0");
+    CHECK(ball.exitCode == 0);
+    CHECK_THAT(ball.output, Contains("Hit ball (dynamic) at distance 2.5 m") && Contains("(-1.0000, 0.0000, 0.0000)"));
+    const Result floor = runStepwise("raycast " + scene.quoted() + " --from 0,2,0 --dir 0,-3,0");
+    CHECK_THAT(floor.output, Contains("Hit floor (plane) at distance 2 m"));
+    const Result none = runStepwise("raycast " + scene.quoted() + " --from 0,2,0 --dir 0,-1,0 --max 1.5");
+    CHECK(none.exitCode == 0);
+    CHECK_THAT(none.output, Contains("No hit"));
+    CHECK(runStepwise("raycast " + scene.quoted() + " --from 0,2 --dir 0,-1,0").exitCode == 2);
+    CHECK(runStepwise("raycast " + scene.quoted() + " --from 0,2,0 --dir 0,0,0").exitCode == 2);
+    CHECK(runStepwise("raycast " + scene.quoted() + " --from 0,2,0").exitCode == 2);
+}
+
+TEST_CASE("generate writes a scene that loads with the asked number of bodies", "[cli][broadphase]") {
+    for (const std::string name : {"sphere-rain", "box-pile", "pyramids"}) {
+        INFO(name);
+        TempFile out(name + ".scene");
+        const Result r = runStepwise("generate " + name + " --count 123 --seed 5 --out " + out.quoted());
+        REQUIRE(r.exitCode == 0);
+        const Result check = runStepwise("check " + out.quoted());
+        CHECK(check.exitCode == 0);
+        CHECK_THAT(check.output, Contains("123 dynamic"));
+    }
+    CHECK(runStepwise("generate sphere-rain --count 10").exitCode == 2);             // no --out
+    CHECK(runStepwise("generate marbles --count 10 --out -").exitCode == 2);         // unknown scene
+    CHECK(runStepwise("generate sphere-rain --count 0 --out -").exitCode == 2);      // no bodies
+    // The same options give the same file.
+    CHECK(runStepwise("generate box-pile --count 50 --out -").output ==
+          runStepwise("generate box-pile --count 50 --out -").output);
+}
+
+TEST_CASE("bench broadphase runs every broadphase on a scene and ranks them", "[cli][broadphase]") {
+    TempFile scene("bench.scene");
+    REQUIRE(runStepwise("generate sphere-rain --count 200 --out " + scene.quoted()).exitCode == 0);
+    const Result r = runStepwise("bench broadphase " + scene.quoted() + " --steps 40 --check-every 4");
+    CHECK(r.exitCode == 0);
+    CHECK_THAT(r.output, Contains("BruteForce") && Contains("SweepAndPrune") && Contains("AabbTree") &&
+                             Contains("Grid") && Contains("40 steps, 10 checked") && Contains("Auto would choose"));
+    CHECK(runStepwise("bench broadphase").exitCode == 2);
+    CHECK(runStepwise("bench narrowphase " + scene.quoted()).exitCode == 2);
+}

@@ -359,6 +359,21 @@ TEST_CASE("Every integrator spelling maps to its integrator", "[config]") {
     CHECK(integratorOf("VelocityVerlet") == IntegratorKind::Verlet);
 }
 
+TEST_CASE("The World's Broadphase is Auto by default and takes every broadphase's spelling", "[config][broadphase]") {
+    CHECK(load("DynamicObject\n").settings.broadphase == BroadphaseKind::Auto);
+    const auto broadphaseOf = [](const std::string& word) {
+        return load("World, Broadphase=" + word + "\n").settings.broadphase;
+    };
+    CHECK(broadphaseOf("Auto") == BroadphaseKind::Auto);
+    CHECK(broadphaseOf("BruteForce") == BroadphaseKind::BruteForce);
+    CHECK(broadphaseOf("sweepandprune") == BroadphaseKind::SweepAndPrune);
+    CHECK(broadphaseOf("SAP") == BroadphaseKind::SweepAndPrune);
+    CHECK(broadphaseOf("AabbTree") == BroadphaseKind::AabbTree);
+    CHECK(broadphaseOf("DynamicTree") == BroadphaseKind::AabbTree);
+    CHECK(broadphaseOf("Grid") == BroadphaseKind::Grid);
+    CHECK(broadphaseOf("UniformGrid") == BroadphaseKind::Grid);
+}
+
 // ------------------------------------------------------------------ the pieces
 
 TEST_CASE("The record tables give each record the classic positional layout", "[config]") {

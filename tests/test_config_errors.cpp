@@ -279,6 +279,13 @@ TEST_CASE("An unknown Shape or Integrator lists the choices and suggests one", "
     CHECK(theProblemIn("World, Integrator=Verlett\n").hint == "did you mean 'Verlet'?");
 }
 
+TEST_CASE("An unknown Broadphase lists the choices and suggests one", "[config][broadphase]") {
+    const ConfigDiagnostic problem = theProblemIn("World, Broadphase=Octree\n");
+    checkLocation(problem, 1, 19, "Broadphase");
+    CHECK_THAT(problem.expected, Contains("SweepAndPrune") && Contains("AabbTree") && Contains("Grid"));
+    CHECK(theProblemIn("World, Broadphase=AabbTre\n").hint == "did you mean 'AabbTree'?");
+}
+
 TEST_CASE("Setting a field twice is an error, however it is set", "[config]") {
     SECTION("named twice") {
         const ConfigDiagnostic problem = theProblemIn("DynamicObject, Mass=1, Mass=2\n");

@@ -6,5 +6,5 @@ break world.cpp:84 if stepCount_ == 119
 run
 p pairs_
 p dynamics_[1].position.x - dynamics_[0].position.x
-p boundingBoxes_[0].max.x
-p boundingBoxes_[1].min.x
+p broadphase_.boxes_[0].max.x
+p broadphase_.boxes_[1].min.x

@@ -76,6 +76,19 @@ bool printExpectationTable(const std::vector<Expectation>& expectations, const s
 /// @brief `stepwise check FILE`: validate and describe a scene. Returns the exit code.
 int checkCommand(const std::string& scenePath);
 
+/// @brief `stepwise raycast FILE --from x,y,z --dir x,y,z [--max D] [--at T]`: the first body along a ray.
+/// @param args the arguments after `raycast`. @throws UsageError. Returns the exit code.
+int raycastCommand(const std::vector<std::string>& args);
+
+/// @brief `stepwise generate SCENE --count N --out FILE [--seed S] [--broadphase KIND]`: write a benchmark scene.
+/// @param args the arguments after `generate`. @throws UsageError. Returns the exit code.
+int generateCommand(const std::vector<std::string>& args);
+
+/// @brief `stepwise bench broadphase FILE [--steps N | --duration S] [--check-every K]`: the broadphase tracker.
+/// @param args the arguments after `bench`. @throws UsageError. Returns the exit code (1 when a broadphase
+///        disagrees with brute force).
+int benchCommand(const std::vector<std::string>& args);
+
 /// @brief The usage text printed by `stepwise` and `stepwise --help`.
 const char* usageText();
 

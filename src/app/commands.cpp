@@ -195,6 +195,20 @@ void printJoints(const World& world) {
     }
 }
 
+/// Which broadphase ran, and, when the scene left the choice to Auto, why.
+void printBroadphase(const World& world) {
+    if (world.settings().broadphase != BroadphaseKind::Auto) {
+        std::printf("Broadphase %s (set by the scene)\n", toString(world.settings().broadphase));
+        return;
+    }
+    const BroadphaseChoice& choice = world.broadphase().autoChoice();
+    if (choice.reason.empty()) {
+        std::printf("Broadphase Auto (chosen at the first step; no step ran)\n");
+    } else {
+        std::printf("Broadphase %s (Auto: %s)\n", toString(choice.kind), choice.reason.c_str());
+    }
+}
+
 void printStageTimes(const World& world, double wallSeconds) {
     std::printf("\nTime per stage (a substep stage runs several times a step; skipped stages show 0 runs)\n");
     std::printf("  %-20s %8s %12s %12s\n", "stage", "runs", "us/step", "total ms");
@@ -261,6 +275,7 @@ int runCommand(const RunOptions& options) {
 
     std::printf("Simulated %.6g s in %llu steps\n", double(world.time()),
                 static_cast<unsigned long long>(world.stepCount()));
+    printBroadphase(world);
     printFinalState(world);
     printJoints(world);
     printConservation(energyBefore, energyOf(world), momentumBefore, linearMomentumOf(world), angularMomentumBefore,

@@ -1,33 +1,30 @@
 /// @file broadphase.hpp
-/// @brief Stage 4 of the step: find the pairs worth an exact test.
+/// @brief Stage 4 of the step: find the pairs worth an exact test, with one of four broadphases.
+///
+/// | broadphase      | file                               | per step                  | good for |
+/// |-----------------|------------------------------------|---------------------------|----------|
+/// | `BruteForce`    | broadphase_brute_force.cpp         | O(n²) box tests           | a handful of bodies; the reference |
+/// | `SweepAndPrune` | broadphase_sweep_and_prune.cpp     | O(n + k) after a near-sorted insertion sort | bodies spread out along one axis |
+/// | `AabbTree`      | broadphase_aabb_tree.cpp           | O(n log n) queries, few reinsertions | any mix of sizes, resting bodies |
+/// | `Grid`          | broadphase_grid.cpp                | O(n) rebuild and queries  | many bodies of similar size |
+///
+/// All four return exactly the same pairs, in the same order, so a scene's
+/// trajectory does not depend on which one runs: only the time does.
 #pragma once
 
+#include <string>
 #include <vector>
 
+#include "collision/aabb.hpp"
+#include "collision/broadphase_aabb_tree.hpp"
+#include "collision/broadphase_grid.hpp"
+#include "collision/broadphase_proxies.hpp"
+#include "collision/broadphase_sweep_and_prune.hpp"
 #include "collision/contact.hpp"
 #include "world/body_set.hpp"
+#include "world/world_settings.hpp"
 
 namespace stepwise {
-
-/// @brief Axis-aligned bounding box: the smallest box with faces along x, y, z that holds a shape.
-struct Aabb {
-    Vec3 min{0, 0, 0};  ///< Lowest corner, m.
-    Vec3 max{0, 0, 0};  ///< Highest corner, m.
-
-    /// @brief True when the two boxes overlap or touch on every axis (the
-    /// separating-axis test restricted to x, y and z).
-    bool overlaps(const Aabb& other) const {
-        return min.x <= other.max.x && other.min.x <= max.x &&
-               min.y <= other.max.y && other.min.y <= max.y &&
-               min.z <= other.max.z && other.min.z <= max.z;
-    }
-};
-
-/// @brief Bounding box of a sphere of @p radius at @p centre.
-Aabb sphereAabb(const Vec3& centre, Real radius);
-
-/// @brief Bounding box of an oriented box: centre ± |R|·halfExtents (Ericson, RTCD §4.2.6).
-Aabb boxAabb(const Vec3& centre, const Quat& orientation, const Vec3& halfExtents);
 
 /// @brief The brute-force broadphase: test every dynamic body against every other object.
 ///
@@ -38,5 +35,98 @@ Aabb boxAabb(const Vec3& centre, const Quat& orientation, const Vec3& halfExtent
 /// @param boxes  scratch array of bounding boxes, reused between steps (no allocation once sized)
 /// @param pairs  output, cleared first
 void findPairsBruteForce(const BodySet& bodies, std::vector<Aabb>& boxes, std::vector<CandidatePair>& pairs);
+
+/// @brief Which broadphase `Auto` runs for a scene, and why.
+struct BroadphaseChoice {
+    BroadphaseKind kind = BroadphaseKind::BruteForce;  ///< Never Auto.
+    std::string reason;                                ///< One sentence, for the run summary.
+};
+
+/// Below this many dynamic bodies `Auto` uses brute force. At 64 bodies it
+/// takes 0.04 ms a step, 0.02 ms more than sweep and prune, about 5 % of the
+/// step (docs/broadphase.md): little to win, and brute force is the
+/// reference, the easiest to follow in a debugger, and what the lecture
+/// scenes have always run. Beyond, its n² box tests cost more and more:
+/// 0.11 against 0.08 ms at 128 bodies, 1.0 against 0.54 ms at 512.
+inline constexpr std::size_t kAutoBruteForceBelow = 64;
+/// Below this many bodies `Auto` prefers sweep and prune to the grid for
+/// bodies of similar size. Measured, sweep and prune is the fastest from 64
+/// to 1 024 bodies and the grid from 4 096 on: the wider the floor the bodies
+/// spread over, the more of them each sweep interval crosses (sweep and
+/// prune's cost per body grows as √n), while the grid's stays flat.
+inline constexpr std::size_t kAutoSweepBelow = 2048;
+/// `Auto` picks the grid when at most this many bodies are oversize for it
+/// (larger than kGridOversizeRatio × the median size). Each oversize body is
+/// tested against every other one, n tests each, so a handful of them cost
+/// about what the grid itself costs; more, and the tree is the better choice.
+inline constexpr std::size_t kAutoGridMaxOversize = 8;
+
+/// `Auto` picks the tree for a structure already built and at rest: when at
+/// least this fraction of the dynamic bodies start slower than
+/// kAutoRestingSpeed and touching something (a stack, a pyramid, a wall).
+inline constexpr Real kAutoRestingFraction = Real(0.9);
+/// A body slower than this counts as at rest for `Auto`, m/s. (On the first
+/// step a resting body has the speed gravity gave it in one step, g·h =
+/// 0.16 m/s at 60 steps per second.)
+inline constexpr Real kAutoRestingSpeed = Real(0.5);
+
+/// @brief What `Auto` chooses for these bodies, with the reason in words.
+///
+/// - fewer than kAutoBruteForceBelow dynamic bodies: brute force;
+/// - a structure at rest (kAutoRestingFraction of the bodies slow and
+///   touching): the AABB tree, whose leaves stay put while the bodies do, so
+///   a step costs only the descent (2 to 4 times faster than the grid on the
+///   pyramids benchmark, docs/broadphase.md);
+/// - bodies of similar size (at most kAutoGridMaxOversize larger than
+///   kGridOversizeRatio × the median): sweep and prune below kAutoSweepBelow
+///   bodies, the grid from there on, whose cost per body stays flat;
+/// - otherwise: the AABB tree, which does not care about sizes.
+BroadphaseChoice chooseBroadphase(const BodySet& bodies);
+
+/// @brief The World's broadphase: the structure it keeps between steps, and the dispatcher.
+///
+/// Holds the sweep-and-prune order, the tree and the grid from one step to
+/// the next (only the one in use is kept up to date), and the scratch arrays
+/// of the common part: the bounding boxes, the raw pairs, and the sort that
+/// puts them in the canonical order. A running scene allocates nothing.
+class Broadphase {
+public:
+    /// @brief Finds the candidate pairs with broadphase @p kind (Auto: see chooseBroadphase()).
+    ///
+    /// Whatever the kind, @p pairs ends up exactly as findPairsBruteForce()
+    /// would leave it: sorted by dynamic body A, then kinematic/dynamic/plane
+    /// B in the brute force's order.
+    /// @param pairs output, cleared first
+    void findPairs(BroadphaseKind kind, const BodySet& bodies, std::vector<CandidatePair>& pairs);
+
+    /// @brief The broadphase that ran last (Auto resolved), BruteForce before the first call.
+    BroadphaseKind lastKind() const { return lastKind_; }
+    /// @brief What Auto chose, once it has run; an empty reason before that.
+    const BroadphaseChoice& autoChoice() const { return autoChoice_; }
+    /// @brief The work done by the last call.
+    const BroadphaseCounters& counters() const { return counters_; }
+
+    /// @brief The tree (for tests and the tracker).
+    const AabbTree& tree() const { return tree_; }
+    /// @brief The grid (for tests and the tracker).
+    const UniformGrid& grid() const { return grid_; }
+    /// @brief The sweep and prune state (for tests and the tracker).
+    const SweepAndPrune& sweepAndPrune() const { return sweepAndPrune_; }
+
+private:
+    void sortIntoCanonicalOrder(const BodySet& bodies, std::vector<CandidatePair>& pairs);
+
+    std::vector<Aabb> boxes_;                ///< One per proxy (dynamic, then kinematic).
+    std::vector<ProxyPair> rawPairs_;        ///< What the structure found, in its own order.
+    std::vector<std::uint32_t> pairStart_;   ///< Counting sort: where each dynamic body's pairs start.
+    std::vector<std::uint32_t> partners_;    ///< Counting sort: each body's partners, grouped by body.
+    SweepAndPrune sweepAndPrune_;
+    AabbTree tree_;
+    UniformGrid grid_;
+    BroadphaseKind lastKind_ = BroadphaseKind::BruteForce;
+    BroadphaseChoice autoChoice_;
+    bool autoChosen_ = false;
+    BroadphaseCounters counters_;
+};
 
 }  // namespace stepwise

@@ -205,6 +205,9 @@ private:
             case FieldKind::Solver:
                 readChoice(field, slot, value, wordsOf(kSolverChoices));
                 break;
+            case FieldKind::Broadphase:
+                readChoice(field, slot, value, wordsOf(kBroadphaseChoices));
+                break;
             case FieldKind::Boolean:
                 readChoice(field, slot, value, wordsOf(kBooleanChoices));
                 break;

@@ -53,6 +53,7 @@ const Vec3 kDefaultGravity{0, -kStandardGravity, 0};  ///< m/s², pointing down 
 constexpr Shape kDefaultShape = Shape::Sphere;         ///< The shape every collision test supports.
 constexpr Real kDefaultMass = 1;                       ///< kg.
 constexpr IntegratorKind kDefaultIntegrator = IntegratorKind::SymplecticEuler;
+constexpr BroadphaseKind kDefaultBroadphase = BroadphaseKind::Auto;  ///< Brute force for small scenes (see chooseBroadphase).
 constexpr bool kDefaultHollow = false;                 ///< A sphere is a solid ball (I = 2/5 m r^2).
 
 /// A dynamic body's own elasticity and friction: a moderate bounce and grip.
@@ -298,6 +299,7 @@ private:
         settings.timeStep = values.number("TimeStep", kDefaultTimeStep);
         settings.integrator = values.choice<IntegratorKind>("Integrator", kIntegratorChoices, kDefaultIntegrator);
         settings.duration = values.number("Duration", kDefaultDuration);
+        settings.broadphase = values.choice<BroadphaseKind>("Broadphase", kBroadphaseChoices, kDefaultBroadphase);
 
         const WorldSettings defaults;
         auto count = [&](std::string_view field, int fallback) {

@@ -115,6 +115,7 @@ constexpr FieldSpec kWorldFields[] = {
     {"SleepLinearSpeed",    FieldKind::Number,  kNamedOnly, Range::NonNegative},      // m/s
     {"SleepAngularSpeed",   FieldKind::Number,  kNamedOnly, Range::NonNegative},      // rad/s
     {"TimeToSleep",         FieldKind::Number,  kNamedOnly, Range::Positive, kTimeHint}, // s
+    {"Broadphase",          FieldKind::Broadphase, kNamedOnly, Range::Any},       // docs/broadphase.md
 };
 
 /// Expect: one checked outcome (src/world/expectations.hpp), named fields only.
@@ -260,6 +261,17 @@ const std::array<Choice<IntegratorKind>, 6> kIntegratorChoices = {{
 const std::array<Choice<SolverKind>, 2> kSolverChoices = {{
     {"Impulse", SolverKind::Impulse},
     {"SequentialImpulse", SolverKind::SequentialImpulse},
+}};
+
+const std::array<Choice<BroadphaseKind>, 8> kBroadphaseChoices = {{
+    {"Auto", BroadphaseKind::Auto},
+    {"BruteForce", BroadphaseKind::BruteForce},
+    {"SweepAndPrune", BroadphaseKind::SweepAndPrune},
+    {"SAP", BroadphaseKind::SweepAndPrune},
+    {"AabbTree", BroadphaseKind::AabbTree},
+    {"DynamicTree", BroadphaseKind::AabbTree},
+    {"Grid", BroadphaseKind::Grid},
+    {"UniformGrid", BroadphaseKind::Grid},
 }};
 
 const std::array<Choice<bool>, 6> kBooleanChoices = {{

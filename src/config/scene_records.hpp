@@ -30,6 +30,7 @@ enum class FieldKind : std::uint8_t {
     Shape,       ///< A word from kShapeChoices.
     Integrator,  ///< A word from kIntegratorChoices.
     Solver,      ///< A word from kSolverChoices.
+    Broadphase,  ///< A word from kBroadphaseChoices.
     Boolean,     ///< Yes or no, a word from kBooleanChoices: `Hollow=true`, `Hollow=yes`, `Hollow=1`.
     Name,        ///< An object name (see parseName()).
     Compare,     ///< A word from kCompareChoices: `Compare=AtLeast` (Expect records).
@@ -91,6 +92,8 @@ extern const std::array<Choice<IntegratorKind>, 6> kIntegratorChoices;
 
 /// @brief Accepted spellings of SolverKind (any case).
 extern const std::array<Choice<SolverKind>, 2> kSolverChoices;
+/// @brief Accepted spellings of BroadphaseKind (any case), with synonyms.
+extern const std::array<Choice<BroadphaseKind>, 8> kBroadphaseChoices;
 
 /// @brief Accepted spellings of a Boolean field (any case): true/false, yes/no, 1/0.
 extern const std::array<Choice<bool>, 6> kBooleanChoices;

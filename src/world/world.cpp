@@ -118,8 +118,8 @@ void World::stepWithImpulses() {
     // 3. Advance kinematic bodies along their prescribed motion (src/integrators/kinematic_motion.cpp)
     runStage(Stage::MoveKinematics, [&] { moveKinematics(kinematics_, h); });
 
-    // 4. Which pairs might touch? (src/collision/broadphase_brute_force.cpp)
-    runStage(Stage::Broadphase, [&] { findPairsBruteForce(bodies(), boundingBoxes_, pairs_); });
+    // 4. Which pairs might touch? (src/collision/broadphase.cpp → broadphase_*.cpp)
+    runStage(Stage::Broadphase, [&] { broadphase_.findPairs(settings_.broadphase, bodies(), pairs_); });
 
     // 5. Which of them do, where, and how deep? (src/collision/narrowphase.cpp → sphere_*.cpp)
     runStage(Stage::Narrowphase, [&] { findContacts(bodies(), pairs_, contacts_); });
@@ -172,9 +172,9 @@ void World::stepWithSequentialImpulses() {
     });
 
     // 2. Which pairs might touch? Sleepers against static objects cannot, jointed bodies do not.
-    //    (src/collision/broadphase_brute_force.cpp, src/dynamics/islands.cpp, src/dynamics/joints/joint.cpp)
+    //    (src/collision/broadphase.cpp → broadphase_*.cpp, src/dynamics/islands.cpp, src/dynamics/joints/joint.cpp)
     runStage(Stage::Broadphase, [&] {
-        findPairsBruteForce(bodies(), boundingBoxes_, pairs_);
+        broadphase_.findPairs(settings_.broadphase, bodies(), pairs_);
         dropSleepingPairs(bodies(), pairs_);
         dropJointedPairs(joints_, jointWorkspace_, pairs_);  // what a joint holds does not collide (joint.hpp)
     });

@@ -3,12 +3,14 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string_view>
 #include <vector>
 
 #include "collision/broadphase.hpp"
 #include "collision/contact.hpp"
 #include "dynamics/contact_solver.hpp"
+#include "collision/raycast.hpp"
 #include "dynamics/impulse_resolver.hpp"
 #include "dynamics/islands.hpp"
 #include "dynamics/joints/joint.hpp"
@@ -59,6 +61,15 @@ public:
     const std::vector<Contact>& contacts() const { return contacts_; }           ///< Last narrowphase output.
     const std::vector<ImpulseReport>& impulses() const { return impulses_; }     ///< One per contact, last step.
     const StageRecords& stageRecords() const { return stageRecords_; }           ///< Per-stage timing.
+    const Broadphase& broadphase() const { return broadphase_; }  ///< Stage 4's state: which kind ran, Auto's reason.
+
+    /// @brief The first body the ray from @p origin along @p direction meets within @p maxDistance
+    /// (src/world/world_raycast.cpp); nothing when it meets none.
+    /// @param origin      start of the ray, m
+    /// @param direction   any non-zero vector (normalised here)
+    /// @param maxDistance how far to look, m (≥ 0)
+    /// @throws std::invalid_argument when @p direction is zero or a value is not finite.
+    std::optional<RayHit> raycast(const Vec3& origin, const Vec3& direction, Real maxDistance) const;
 
 private:
     /// Runs one stage: times it, records it, then checks the state it left.
@@ -79,7 +90,7 @@ private:
     std::vector<Attractor> attractors_;
     std::vector<Joint> joints_;
 
-    std::vector<Aabb> boundingBoxes_;
+    Broadphase broadphase_;
     std::vector<CandidatePair> pairs_;
     std::vector<Contact> contacts_;
     std::vector<ImpulseReport> impulses_;

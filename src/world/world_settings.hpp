@@ -29,6 +29,20 @@ enum class SolverKind : std::uint8_t {
 
 /// @brief Scene-file spelling of a solver ("Impulse", "SequentialImpulse").
 const char* toString(SolverKind kind);
+/// @brief Which broadphase finds the candidate pairs (src/collision/broadphase.hpp).
+///
+/// Every broadphase returns the same pairs in the same order, so the choice
+/// changes how long a step takes, never the trajectory.
+enum class BroadphaseKind : std::uint8_t {
+    Auto,           ///< Chosen from the scene on the first step (chooseBroadphase(), which says why).
+    BruteForce,     ///< Every pair of bodies, O(n²): the reference.
+    SweepAndPrune,  ///< Sort the boxes along the axis of greatest spread and sweep.
+    AabbTree,       ///< Dynamic tree of fattened boxes, inserted by the surface-area heuristic.
+    Grid,           ///< Uniform grid, cells sized from the bodies.
+};
+
+/// @brief Scene-file spelling of a broadphase ("Auto", "BruteForce", "SweepAndPrune", "AabbTree", "Grid").
+const char* toString(BroadphaseKind kind);
 
 /// @brief Default time step, s: 60 steps per second, the usual display rate.
 inline constexpr Real kDefaultTimeStep = Real(1) / Real(60);
@@ -91,6 +105,7 @@ struct WorldSettings {
     Real sleepLinearSpeed = kDefaultSleepLinearSpeed;  ///< Still below this speed, m/s.
     Real sleepAngularSpeed = kDefaultSleepAngularSpeed; ///< Still below this angular speed, rad/s.
     Real timeToSleep = kDefaultTimeToSleep;            ///< Still for this long → asleep, s.
+    BroadphaseKind broadphase = BroadphaseKind::Auto;  ///< Which broadphase finds the candidate pairs.
 };
 
 /// @brief The step the integrator takes, s: TimeStep, or TimeStep/Substeps under

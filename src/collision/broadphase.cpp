@@ -1,0 +1,177 @@
+/// @file broadphase.cpp
+/// @brief Stage 4 dispatcher: run the chosen broadphase, then put its pairs in the one canonical order.
+///
+/// Every broadphase but brute force works in three parts:
+///
+/// 1. the bounding boxes of all dynamic and kinematic bodies (the proxies),
+///    computed once here, exactly as brute force computes them;
+/// 2. the structure (sweep and prune, tree or grid) finds the overlapping
+///    pairs of proxies, in whatever order it meets them. Each structure only
+///    *proposes* pairs; the final word is always the same exact test on the
+///    same boxes as brute force (Aabb::overlaps), so the pair *set* is the same;
+/// 3. here, the pairs are put in brute force's order, and the plane pairs
+///    (which no structure holds: a plane has no bounding box) are added.
+///
+/// The order matters because the impulse stage visits contacts in order, and
+/// Gauss–Seidel results depend on it: the same pairs in another order would
+/// give a (slightly) different trajectory. With the canonical order, the
+/// trajectory is bit for bit the same whichever broadphase runs.
+#include "collision/broadphase.hpp"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace stepwise {
+
+const char* toString(BroadphaseKind kind) {
+    switch (kind) {
+        case BroadphaseKind::Auto: return "Auto";
+        case BroadphaseKind::BruteForce: return "BruteForce";
+        case BroadphaseKind::SweepAndPrune: return "SweepAndPrune";
+        case BroadphaseKind::AabbTree: return "AabbTree";
+        case BroadphaseKind::Grid: return "Grid";
+    }
+    return "?";
+}
+
+BroadphaseChoice chooseBroadphase(const BodySet& bodies) {
+    char text[256];
+    const std::size_t dynamicCount = bodies.dynamics.size();
+    if (dynamicCount < kAutoBruteForceBelow) {
+        std::snprintf(text, sizeof text,
+                      "%zu dynamic bodies, fewer than %zu: testing every pair costs less than keeping a structure",
+                      dynamicCount, kAutoBruteForceBelow);
+        return {BroadphaseKind::BruteForce, text};
+    }
+    // Already built and at rest? Which bodies touch something is what a
+    // broadphase finds; the grid finds it in O(n) (this runs once per World).
+    std::vector<Aabb> boxes;
+    boxes.reserve(dynamicCount + bodies.kinematics.size());
+    for (const DynamicObject& body : bodies.dynamics) boxes.push_back(broadphaseBounds(body));
+    for (const KinematicsObject& body : bodies.kinematics) boxes.push_back(broadphaseBounds(body));
+    std::vector<ProxyPair> overlaps;
+    BroadphaseCounters ignored;
+    UniformGrid().findOverlaps({boxes, static_cast<std::uint32_t>(dynamicCount)}, overlaps, ignored);
+    std::vector<std::uint8_t> touching(dynamicCount, 0);
+    for (const ProxyPair& pair : overlaps) {
+        touching[pair.a] = 1;
+        if (pair.b < dynamicCount) touching[pair.b] = 1;
+    }
+    std::size_t resting = 0;
+    for (std::size_t i = 0; i < dynamicCount; ++i) {
+        const bool onPlane = std::any_of(bodies.planes.begin(), bodies.planes.end(),
+                                         [&](const CollisionPlane& plane) { return aabbTouchesPlane(boxes[i], plane); });
+        if ((touching[i] || onPlane) && glm::length(bodies.dynamics[i].velocity) <= kAutoRestingSpeed) ++resting;
+    }
+    if (Real(resting) >= kAutoRestingFraction * Real(dynamicCount)) {
+        std::snprintf(text, sizeof text,
+                      "%zu of %zu dynamic bodies start at rest and touching (a structure already built): the AABB "
+                      "tree leaves resting bodies where they are",
+                      resting, dynamicCount);
+        return {BroadphaseKind::AabbTree, text};
+    }
+
+    // How different are the sizes? The grid's cells are sized from the median body.
+    std::vector<Real> sizes;
+    sizes.reserve(dynamicCount + bodies.kinematics.size());
+    for (const DynamicObject& body : bodies.dynamics) sizes.push_back(broadphaseBounds(body).longestSide());
+    for (const KinematicsObject& body : bodies.kinematics) sizes.push_back(broadphaseBounds(body).longestSide());
+    const auto middle = sizes.begin() + static_cast<std::ptrdiff_t>(sizes.size() / 2);
+    std::nth_element(sizes.begin(), middle, sizes.end());
+    const Real median = *middle;
+    const auto oversize = static_cast<std::size_t>(
+        std::count_if(sizes.begin(), sizes.end(), [&](Real size) { return size > kGridOversizeRatio * median; }));
+    if (oversize <= kAutoGridMaxOversize && dynamicCount < kAutoSweepBelow) {
+        std::snprintf(text, sizeof text,
+                      "%zu bodies of similar size (%zu larger than %.3g x the median %.3g m), fewer than %zu: "
+                      "sorting along one axis and sweeping is the fastest at this count",
+                      sizes.size(), oversize, double(kGridOversizeRatio), double(median), kAutoSweepBelow);
+        return {BroadphaseKind::SweepAndPrune, text};
+    }
+    if (oversize <= kAutoGridMaxOversize) {
+        std::snprintf(text, sizeof text,
+                      "%zu bodies of similar size (%zu larger than %.3g x the median %.3g m): a grid sized from "
+                      "them costs the same per body at any count",
+                      sizes.size(), oversize, double(kGridOversizeRatio), double(median));
+        return {BroadphaseKind::Grid, text};
+    }
+    std::snprintf(text, sizeof text,
+                  "%zu bodies of mixed sizes (%zu larger than %.3g x the median %.3g m, more than %zu): a grid "
+                  "would test each of those against all, the AABB tree adapts to any sizes",
+                  sizes.size(), oversize, double(kGridOversizeRatio), double(median), kAutoGridMaxOversize);
+    return {BroadphaseKind::AabbTree, text};
+}
+
+void Broadphase::findPairs(BroadphaseKind kind, const BodySet& bodies, std::vector<CandidatePair>& pairs) {
+    if (kind == BroadphaseKind::Auto) {
+        if (!autoChosen_) {
+            autoChoice_ = chooseBroadphase(bodies);  // once per World: the first step decides
+            autoChosen_ = true;
+        }
+        kind = autoChoice_.kind;
+    }
+    lastKind_ = kind;
+    counters_ = {};
+
+    const auto dynamicCount = static_cast<std::uint32_t>(bodies.dynamics.size());
+    if (kind == BroadphaseKind::BruteForce) {
+        findPairsBruteForce(bodies, boxes_, pairs);
+        const std::uint64_t n = dynamicCount;
+        counters_.pairTests = n * (n - (n > 0 ? 1 : 0)) / 2 + n * bodies.kinematics.size() + n * bodies.planes.size();
+        return;
+    }
+
+    boxes_.resize(bodies.dynamics.size() + bodies.kinematics.size());
+    for (std::size_t i = 0; i < bodies.dynamics.size(); ++i) boxes_[i] = broadphaseBounds(bodies.dynamics[i]);
+    for (std::size_t k = 0; k < bodies.kinematics.size(); ++k) {
+        boxes_[dynamicCount + k] = broadphaseBounds(bodies.kinematics[k]);
+    }
+    const ProxySet proxies{boxes_, dynamicCount};
+    rawPairs_.clear();
+    switch (kind) {
+        case BroadphaseKind::SweepAndPrune: sweepAndPrune_.findOverlaps(proxies, rawPairs_, counters_); break;
+        case BroadphaseKind::AabbTree: tree_.findOverlaps(proxies, rawPairs_, counters_); break;
+        case BroadphaseKind::Grid: grid_.findOverlaps(proxies, rawPairs_, counters_); break;
+        case BroadphaseKind::Auto:
+        case BroadphaseKind::BruteForce: break;  // handled above
+    }
+    sortIntoCanonicalOrder(bodies, pairs);
+}
+
+void Broadphase::sortIntoCanonicalOrder(const BodySet& bodies, std::vector<CandidatePair>& pairs) {
+    const auto dynamicCount = static_cast<std::uint32_t>(bodies.dynamics.size());
+
+    // Counting sort by body A, O(n + pairs): count each body's partners, take
+    // running sums as the start of each body's run, then place the partners.
+    pairStart_.assign(dynamicCount + 1, 0);
+    for (const ProxyPair& pair : rawPairs_) ++pairStart_[pair.a + 1];
+    for (std::uint32_t a = 0; a < dynamicCount; ++a) pairStart_[a + 1] += pairStart_[a];
+    partners_.resize(rawPairs_.size());
+    for (const ProxyPair& pair : rawPairs_) partners_[pairStart_[pair.a]++] = pair.b;
+    // Placing moved each start to the end of its run, which is the next run's start.
+    for (std::uint32_t a = dynamicCount; a > 0; --a) pairStart_[a] = pairStart_[a - 1];
+    pairStart_[0] = 0;
+
+    // Brute force's order for each A: dynamic partners by index, then kinematic
+    // ones (their proxy indices come after every dynamic one, so sorting the
+    // proxy indices gives exactly that), then the planes.
+    pairs.clear();
+    for (std::uint32_t a = 0; a < dynamicCount; ++a) {
+        const auto first = partners_.begin() + pairStart_[a];
+        const auto last = partners_.begin() + pairStart_[a + 1];
+        std::sort(first, last);  // a body has a few partners: this is cheap, and sorts in place
+        for (auto b = first; b != last; ++b) {
+            if (*b < dynamicCount) {
+                pairs.push_back({a, {BodyKind::Dynamic, *b}});
+            } else {
+                pairs.push_back({a, {BodyKind::Kinematic, *b - dynamicCount}});
+            }
+        }
+        for (std::uint32_t p = 0; p < bodies.planes.size(); ++p) {
+            ++counters_.pairTests;
+            if (aabbTouchesPlane(boxes_[a], bodies.planes[p])) pairs.push_back({a, {BodyKind::Plane, p}});
+        }
+    }
+}
+
+}  // namespace stepwise

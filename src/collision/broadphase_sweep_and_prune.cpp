@@ -1,0 +1,70 @@
+/// @file broadphase_sweep_and_prune.cpp
+/// @brief Stage 4, sweep and prune: sort the boxes along one axis, then sweep for overlapping intervals.
+#include "collision/broadphase_sweep_and_prune.hpp"
+
+#include <algorithm>
+
+namespace stepwise {
+
+void SweepAndPrune::chooseAxis(const ProxySet& proxies) {
+    // Variance of the box centres along each axis, σ² = E[c²] − E[c]².
+    Vec3 sum(0), sumOfSquares(0);
+    for (const Aabb& box : proxies.boxes) {
+        const Vec3 c = box.centre();
+        sum += c;
+        sumOfSquares += c * c;
+    }
+    const Real n = Real(proxies.size());
+    const Vec3 mean = sum / n;
+    const Vec3 variance = sumOfSquares / n - mean * mean;
+
+    int best = 0;
+    for (int i = 1; i < 3; ++i) {
+        if (variance[i] > variance[best]) best = i;
+    }
+    if (axis_ < 0 || variance[best] > kAxisSwitchRatio * variance[axis_]) axis_ = best;
+}
+
+void SweepAndPrune::findOverlaps(const ProxySet& proxies, std::vector<ProxyPair>& pairs, BroadphaseCounters& counters) {
+    const std::uint32_t n = proxies.size();
+    if (n == 0) return;
+    const int previousAxis = axis_;
+    chooseAxis(proxies);
+    const int axis = axis_;
+    const auto byMin = [axis](const Entry& p, const Entry& q) { return p.box.min[axis] < q.box.min[axis]; };
+
+    if (sorted_.size() != n || axis != previousAxis) {
+        // Nothing to be coherent with: sort from scratch (std::sort sorts in place, no allocation).
+        sorted_.resize(n);
+        for (std::uint32_t i = 0; i < n; ++i) sorted_[i] = {proxies.boxes[i], i};
+        std::sort(sorted_.begin(), sorted_.end(), byMin);
+    } else {
+        // Refresh the boxes in last step's order, then insertion sort: each
+        // entry moves left past the entries it has overtaken, usually none.
+        for (Entry& entry : sorted_) entry.box = proxies.boxes[entry.proxy];
+        for (std::size_t i = 1; i < n; ++i) {
+            const Entry moving = sorted_[i];
+            std::size_t j = i;
+            while (j > 0 && byMin(moving, sorted_[j - 1])) {
+                sorted_[j] = sorted_[j - 1];
+                --j;
+            }
+            sorted_[j] = moving;
+        }
+    }
+
+    // The sweep: i's partners are the entries after it that start before i ends.
+    for (std::uint32_t i = 0; i < n; ++i) {
+        const Entry& first = sorted_[i];
+        const Real end = first.box.max[axis];
+        const bool firstKinematic = proxies.isKinematic(first.proxy);
+        for (std::uint32_t j = i + 1; j < n && sorted_[j].box.min[axis] <= end; ++j) {
+            const Entry& second = sorted_[j];
+            if (firstKinematic && proxies.isKinematic(second.proxy)) continue;  // neither can be pushed
+            ++counters.pairTests;
+            if (first.box.overlaps(second.box)) pairs.push_back(orderedPair(first.proxy, second.proxy));
+        }
+    }
+}
+
+}  // namespace stepwise

@@ -1,0 +1,455 @@
+// The broadphases: each one against brute force on seeded random scenes,
+// the tree's invariants, Auto's choice, whole trajectories that do not
+// depend on the broadphase, and the broadphase tracker. Tag: [broadphase].
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "collision/broadphase_tracker.hpp"
+#include "collision/narrowphase.hpp"
+#include "test_support.hpp"
+
+using namespace stepwise;
+
+namespace {
+
+constexpr BroadphaseKind kFastBroadphases[] = {BroadphaseKind::SweepAndPrune, BroadphaseKind::AabbTree,
+                                               BroadphaseKind::Grid};
+
+/// A scene's bodies in vectors the test can move, with the BodySet view the broadphases take.
+struct Bodies {
+    std::vector<DynamicObject> dynamics;
+    std::vector<KinematicsObject> kinematics;
+    std::vector<CollisionPlane> planes;
+    BodySet view() { return {dynamics, kinematics, planes}; }
+};
+
+Quat randomOrientation(std::mt19937& random) {
+    std::normal_distribution<Real> gauss;
+    const Quat q(gauss(random), gauss(random), gauss(random), gauss(random));
+    return glm::normalize(q);
+}
+
+/// @p count dynamic spheres and boxes of sizes from 0.1 m to 1 m scattered in
+/// a cube sized so that each touches a few others, some kinematic bodies
+/// (one of them a 30 m slab, oversize for the grid) and two planes.
+Bodies randomBodies(std::uint32_t seed, std::size_t count) {
+    std::mt19937 random(seed);
+    std::uniform_real_distribution<Real> unit(0, 1);
+    const Real side = Real(0.9) * std::cbrt(Real(count));
+    const auto place = [&] { return Vec3(unit(random), unit(random), unit(random)) * side; };
+    Bodies b;
+    for (std::size_t i = 0; i < count; ++i) {
+        if (i % 3 == 2) {
+            DynamicObject box = test::dynamicBox("box" + std::to_string(i), place(),
+                                                 Vec3(0.1 + 0.9 * unit(random), 0.1 + 0.9 * unit(random), 0.2), 1, 0.5);
+            box.orientation = randomOrientation(random);
+            b.dynamics.push_back(box);
+        } else {
+            b.dynamics.push_back(test::sphere("ball" + std::to_string(i), place(), Vec3(0), 0.05 + 0.45 * unit(random)));
+        }
+    }
+    b.kinematics.push_back(test::kinematicBox("slab", Vec3(side / 2, 0, side / 2), Vec3(30, 0.5, 30)));
+    b.kinematics.push_back(test::kinematicBox("paddle", place(), Vec3(1, 0.3, 0.6)));
+    KinematicsObject ball = test::kinematicBox("roller", place(), Vec3(0.8));
+    ball.shape = Shape::Sphere;
+    ball.radius = 0.4;
+    b.kinematics.push_back(ball);
+    b.planes.push_back(test::ground("floor"));
+    CollisionPlane slope = test::ground("slope");
+    slope.position = Vec3(side, 0, 0);
+    slope.normal = glm::normalize(Vec3(-1, 1, 0));
+    b.planes.push_back(slope);
+    return b;
+}
+
+/// Moves every body: most by a little (as in a step), a few far (thrown
+/// across the scene), and turns the boxes.
+void shake(Bodies& b, std::mt19937& random, Real side) {
+    std::uniform_real_distribution<Real> unit(0, 1);
+    std::uniform_real_distribution<Real> nudge(-0.05, 0.05);
+    for (DynamicObject& body : b.dynamics) {
+        if (unit(random) < 0.05) {
+            body.position = Vec3(unit(random), unit(random), unit(random)) * side;
+        } else {
+            body.position += Vec3(nudge(random), nudge(random), nudge(random));
+        }
+        if (body.shape == Shape::Box) {
+            const Vec3 axis = glm::normalize(Vec3(unit(random), unit(random), unit(random)) + Vec3(0.1));
+            body.orientation = glm::normalize(glm::angleAxis(Real(0.2), axis) * body.orientation);
+        }
+    }
+    for (std::size_t k = 1; k < b.kinematics.size(); ++k) b.kinematics[k].position += Vec3(nudge(random), 0, nudge(random));
+}
+
+std::vector<Aabb> proxyBoxes(Bodies& b) {
+    std::vector<Aabb> boxes;
+    for (const DynamicObject& body : b.dynamics) boxes.push_back(broadphaseBounds(body));
+    for (const KinematicsObject& body : b.kinematics) boxes.push_back(broadphaseBounds(body));
+    return boxes;
+}
+
+/// Every broadphase, keeping its state from call to call, must return
+/// exactly brute force's pairs in brute force's order.
+void requireAllAgree(Bodies& b, std::vector<Broadphase>& broadphases, const std::string& what) {
+    std::vector<Aabb> scratch;
+    std::vector<CandidatePair> reference;
+    findPairsBruteForce(b.view(), scratch, reference);
+    for (std::size_t k = 0; k < broadphases.size(); ++k) {
+        std::vector<CandidatePair> pairs;
+        broadphases[k].findPairs(kFastBroadphases[k], b.view(), pairs);
+        INFO(what << ", " << toString(kFastBroadphases[k]) << ": " << pairs.size() << " pairs, brute force "
+                  << reference.size());
+        REQUIRE(pairs.size() == reference.size());
+        for (std::size_t i = 0; i < pairs.size(); ++i) {
+            INFO("pair " << i);
+            REQUIRE(pairs[i].a == reference[i].a);
+            REQUIRE(pairs[i].b.kind == reference[i].b.kind);
+            REQUIRE(pairs[i].b.index == reference[i].b.index);
+        }
+    }
+}
+
+}  // namespace
+
+TEST_CASE("Brute force keeps every pair the narrowphase finds touching", "[broadphase]") {
+    // The reference itself, checked against the exact tests: every pair of
+    // bodies that the narrowphase finds in contact must be a candidate.
+    for (std::uint32_t seed = 1; seed <= 5; ++seed) {
+        Bodies b = randomBodies(seed, 150);
+        std::vector<Aabb> scratch;
+        std::vector<CandidatePair> pairs;
+        findPairsBruteForce(b.view(), scratch, pairs);
+        const auto isCandidate = [&](std::uint32_t a, BodyRef other) {
+            return std::any_of(pairs.begin(), pairs.end(), [&](const CandidatePair& p) {
+                return p.a == a && p.b.kind == other.kind && p.b.index == other.index;
+            });
+        };
+        std::size_t touching = 0;
+        for (std::uint32_t a = 0; a < b.dynamics.size(); ++a) {
+            std::vector<BodyRef> others;
+            for (std::uint32_t j = a + 1; j < b.dynamics.size(); ++j) others.push_back({BodyKind::Dynamic, j});
+            for (std::uint32_t k = 0; k < b.kinematics.size(); ++k) others.push_back({BodyKind::Kinematic, k});
+            for (std::uint32_t p = 0; p < b.planes.size(); ++p) others.push_back({BodyKind::Plane, p});
+            for (const BodyRef& other : others) {
+                if (!pairTouches(b.view(), {a, other})) continue;
+                ++touching;
+                INFO("seed " << seed << ": " << b.dynamics[a].name << " and " << bodyName(b.view(), other));
+                CHECK(isCandidate(a, other));
+            }
+        }
+        CHECK(touching > 20);  // the scene is dense enough for the check to mean something
+    }
+}
+
+TEST_CASE("Every broadphase returns brute force's pairs, in its order, step after step", "[broadphase]") {
+    for (std::uint32_t seed = 1; seed <= 4; ++seed) {
+        const std::size_t count = 60 + 150 * seed;
+        Bodies b = randomBodies(seed, count);
+        std::vector<Broadphase> broadphases(std::size(kFastBroadphases));
+        std::mt19937 random(seed + 100);
+        const Real side = Real(0.9) * std::cbrt(Real(count));
+        for (int step = 0; step < 30; ++step) {
+            requireAllAgree(b, broadphases, "seed " + std::to_string(seed) + ", step " + std::to_string(step));
+            const std::vector<Aabb> boxes = proxyBoxes(b);
+            CHECK(broadphases[1].tree().isConsistent({boxes, static_cast<std::uint32_t>(b.dynamics.size())}));
+            shake(b, random, side);
+        }
+        // Bodies leave the scene: every structure must notice and start again.
+        b.dynamics.resize(b.dynamics.size() / 2);
+        requireAllAgree(b, broadphases, "seed " + std::to_string(seed) + ", half the bodies removed");
+    }
+}
+
+TEST_CASE("The broadphases agree on degenerate scenes", "[broadphase]") {
+    std::vector<Broadphase> broadphases(std::size(kFastBroadphases));
+    Bodies b;
+    SECTION("no bodies at all") { requireAllAgree(b, broadphases, "empty"); }
+    SECTION("only kinematic bodies: they never pair with each other") {
+        b.kinematics.push_back(test::kinematicBox("k0", Vec3(0), Vec3(1)));
+        b.kinematics.push_back(test::kinematicBox("k1", Vec3(0.5, 0, 0), Vec3(1)));
+        requireAllAgree(b, broadphases, "kinematic only");
+        std::vector<CandidatePair> pairs;
+        broadphases[0].findPairs(BroadphaseKind::SweepAndPrune, b.view(), pairs);
+        CHECK(pairs.empty());
+    }
+    SECTION("every body at the same point") {
+        for (int i = 0; i < 40; ++i) b.dynamics.push_back(test::sphere("s" + std::to_string(i), Vec3(1, 2, 3)));
+        requireAllAgree(b, broadphases, "coincident");
+        std::vector<CandidatePair> pairs;
+        broadphases[2].findPairs(BroadphaseKind::Grid, b.view(), pairs);
+        CHECK(pairs.size() == 40 * 39 / 2);  // every pair overlaps
+    }
+    SECTION("a tower: every sweep interval along x overlaps") {
+        for (int i = 0; i < 60; ++i) b.dynamics.push_back(test::sphere("s" + std::to_string(i), Vec3(0, 0.9 * i, 0)));
+        requireAllAgree(b, broadphases, "tower");
+        std::vector<CandidatePair> pairs;
+        broadphases[0].findPairs(BroadphaseKind::SweepAndPrune, b.view(), pairs);
+        CHECK(pairs.size() == 59);  // neighbours only: 0.9 m apart, 1 m across (+2 cm of speculative margin)
+        CHECK(broadphases[0].sweepAndPrune().axis() == 1);  // the tower spreads along y
+    }
+    SECTION("bodies touching exactly, face to face") {
+        // Boxes 1 m wide, 1 m apart: their grown boxes overlap by 2·kSpeculativeDistance.
+        for (int i = 0; i < 30; ++i) {
+            b.dynamics.push_back(test::dynamicBox("b" + std::to_string(i), Vec3(i, 0.5, 0), Vec3(1), 1, 0.5));
+        }
+        b.planes.push_back(test::ground());
+        requireAllAgree(b, broadphases, "a row of touching boxes");
+    }
+    SECTION("one body far away from the rest") {
+        for (int i = 0; i < 30; ++i) b.dynamics.push_back(test::sphere("s" + std::to_string(i), Vec3(i * 0.5, 0, 0)));
+        b.dynamics.push_back(test::sphere("far", Vec3(1e12, -1e12, 1e12)));
+        requireAllAgree(b, broadphases, "far away");
+    }
+}
+
+TEST_CASE("The grid sizes its cells from the bodies and sets oversize bodies aside", "[broadphase]") {
+    Bodies b = randomBodies(7, 300);
+    std::vector<CandidatePair> pairs;
+    Broadphase broadphase;
+    broadphase.findPairs(BroadphaseKind::Grid, b.view(), pairs);
+    const std::vector<Aabb> boxes = proxyBoxes(b);
+    std::vector<Real> sizes;
+    for (const Aabb& box : boxes) sizes.push_back(box.longestSide());
+    std::vector<Real> sorted = sizes;
+    std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+    const Real limit = kGridOversizeRatio * sorted[sorted.size() / 2];
+    Real largestListed = 0;
+    std::size_t oversize = 0;
+    for (const Real size : sizes) {
+        if (size > limit) ++oversize;
+        else largestListed = std::max(largestListed, size);
+    }
+    CHECK(broadphase.grid().cellSize() == largestListed);
+    CHECK(broadphase.grid().oversizeCount() == oversize);
+    CHECK(oversize >= 1);  // the 30 m slab at least
+}
+
+TEST_CASE("The tree keeps resting bodies where they are and stays shallow", "[broadphase]") {
+    Bodies b = randomBodies(3, 500);
+    Broadphase broadphase;
+    std::vector<CandidatePair> pairs;
+    broadphase.findPairs(BroadphaseKind::AabbTree, b.view(), pairs);
+    // Moving every body by less than its fat margin (a tenth of its size) moves no leaf.
+    for (int step = 0; step < 5; ++step) {
+        for (DynamicObject& body : b.dynamics) body.position += Vec3(1e-4);
+        broadphase.findPairs(BroadphaseKind::AabbTree, b.view(), pairs);
+        CHECK(broadphase.counters().reinsertions == 0);
+    }
+    // Moving one body far moves exactly its leaf.
+    b.dynamics[17].position += Vec3(3, 0, 0);
+    broadphase.findPairs(BroadphaseKind::AabbTree, b.view(), pairs);
+    CHECK(broadphase.counters().reinsertions == 1);
+    // A balanced binary tree over n leaves has height ⌈log₂ n⌉; the rotations
+    // keep this one within twice that (503 leaves: log₂ = 9).
+    const int leaves = static_cast<int>(b.dynamics.size() + b.kinematics.size());
+    CHECK(broadphase.tree().height() <= 2 * static_cast<int>(std::ceil(std::log2(leaves))));
+    const std::vector<Aabb> boxes = proxyBoxes(b);
+    CHECK(broadphase.tree().isConsistent({boxes, static_cast<std::uint32_t>(b.dynamics.size())}));
+}
+
+TEST_CASE("Sweep and prune sorts along the axis of greatest spread", "[broadphase]") {
+    Bodies b;
+    for (int i = 0; i < 50; ++i) b.dynamics.push_back(test::sphere("s" + std::to_string(i), Vec3(0.1 * (i % 3), 0, 2 * i)));
+    Broadphase broadphase;
+    std::vector<CandidatePair> pairs;
+    broadphase.findPairs(BroadphaseKind::SweepAndPrune, b.view(), pairs);
+    CHECK(broadphase.sweepAndPrune().axis() == 2);
+    // Spheres 2 m apart along z, 1 m across: the sweep meets no interval overlap at all.
+    CHECK(broadphase.counters().pairTests == 0);
+    CHECK(pairs.empty());
+}
+
+TEST_CASE("Auto picks brute force for a few bodies, then by count, sizes and rest", "[broadphase]") {
+    Bodies b;
+    for (int i = 0; i < 10; ++i) b.dynamics.push_back(test::sphere("s" + std::to_string(i), Vec3(i, 0, 0)));
+    BroadphaseChoice choice = chooseBroadphase(b.view());
+    CHECK(choice.kind == BroadphaseKind::BruteForce);
+    CHECK_THAT(choice.reason, Catch::Matchers::Contains("10 dynamic bodies"));
+
+    for (int i = 10; i < 500; ++i) b.dynamics.push_back(test::sphere("s" + std::to_string(i), Vec3(i, 0, 0), Vec3(0), 0.4 + 0.0002 * i));
+    choice = chooseBroadphase(b.view());
+    CHECK(choice.kind == BroadphaseKind::SweepAndPrune);
+
+    Bodies many;  // a lattice of 2 197 falling balls, 2 m apart
+    for (int i = 0; i < 13 * 13 * 13; ++i) {
+        many.dynamics.push_back(test::sphere("m" + std::to_string(i), Real(2) * Vec3(i % 13, i / 169, (i / 13) % 13), Vec3(0, -3, 0)));
+    }
+    CHECK(chooseBroadphase(many.view()).kind == BroadphaseKind::Grid);
+
+    for (std::size_t i = 0; i <= kAutoGridMaxOversize; ++i) {
+        b.kinematics.push_back(test::kinematicBox("rock" + std::to_string(i), Vec3(0, -10, 10 * Real(i)), Vec3(8)));
+    }
+    choice = chooseBroadphase(b.view());
+    CHECK(choice.kind == BroadphaseKind::AabbTree);
+    CHECK_THAT(choice.reason, Catch::Matchers::Contains("9 larger"));
+
+    // A wall of boxes standing on a floor, each touching its neighbours: at rest, built.
+    Bodies wall;
+    for (int i = 0; i < 150; ++i) {
+        wall.dynamics.push_back(test::dynamicBox("brick" + std::to_string(i), Vec3(i % 15, 0.5 + i / 15, 0), Vec3(1), 1, 0.5));
+    }
+    wall.planes.push_back(test::ground());
+    const BroadphaseChoice built = chooseBroadphase(wall.view());
+    CHECK(built.kind == BroadphaseKind::AabbTree);
+    CHECK_THAT(built.reason, Catch::Matchers::Contains("150 of 150") && Catch::Matchers::Contains("at rest"));
+    // The same wall thrown apart at 3 m/s is not at rest.
+    for (DynamicObject& brick : wall.dynamics) brick.velocity = Vec3(0, 0, 3);
+    CHECK(chooseBroadphase(wall.view()).kind != BroadphaseKind::AabbTree);
+
+    // The World resolves Auto on its first step and keeps the reason. (Under
+    // SequentialImpulse its bounds also hold each body's sweep, |v|·h + ½|a|·h²,
+    // so the sizes it quotes are a little larger than the bodies at rest.)
+    Scene scene = test::emptyScene();
+    scene.dynamics = b.dynamics;
+    scene.kinematics = b.kinematics;
+    World world(scene);
+    world.step();
+    CHECK(world.broadphase().lastKind() == BroadphaseKind::AabbTree);
+    CHECK_THAT(world.broadphase().autoChoice().reason, Catch::Matchers::Contains("509 bodies of mixed sizes"));
+}
+
+TEST_CASE("A scene's trajectory is bit for bit the same whichever broadphase runs", "[broadphase]") {
+    // 120 bodies, spheres and boxes, dropped on a floor with a kinematic paddle
+    // sweeping through them: many contacts, warm starting, resting piles.
+    std::mt19937 random(11);
+    std::uniform_real_distribution<Real> unit(0, 1);
+    Scene scene = test::emptyScene();
+    for (int i = 0; i < 120; ++i) {
+        const Vec3 position(4 * unit(random), 0.3 + 3 * unit(random), 4 * unit(random));
+        if (i % 2 == 0) {
+            scene.dynamics.push_back(test::sphere("s" + std::to_string(i), position, Vec3(0), 0.15 + 0.1 * unit(random)));
+        } else {
+            DynamicObject box = test::dynamicBox("b" + std::to_string(i), position, Vec3(0.3, 0.2, 0.25), 1, 0.5);
+            box.orientation = randomOrientation(random);
+            scene.dynamics.push_back(box);
+        }
+    }
+    scene.kinematics.push_back(test::kinematicBox("paddle", Vec3(-1, 0.3, 2), Vec3(0.2, 0.6, 4), Vec3(1, 0, 0)));
+    scene.planes.push_back(test::ground());
+
+    const auto trajectory = [&](BroadphaseKind kind) {
+        Scene copy = scene;
+        copy.settings.broadphase = kind;
+        World world(copy);
+        std::vector<Real> states;
+        std::size_t contacts = 0;
+        for (int step = 0; step < 150; ++step) {
+            world.step();
+            contacts += world.contacts().size();
+            for (const DynamicObject& body : world.dynamics()) {
+                for (int i = 0; i < 3; ++i) {
+                    states.push_back(body.position[i]);
+                    states.push_back(body.velocity[i]);
+                    states.push_back(body.angularMomentum[i]);
+                }
+                states.push_back(body.orientation.w);
+            }
+        }
+        CHECK(world.broadphase().lastKind() == kind);
+        CHECK(contacts > 1000);
+        return states;
+    };
+    const std::vector<Real> reference = trajectory(BroadphaseKind::BruteForce);
+    for (const BroadphaseKind kind : kFastBroadphases) {
+        INFO(toString(kind));
+        const std::vector<Real> states = trajectory(kind);
+        REQUIRE(states.size() == reference.size());
+        // Exact equality, not a tolerance: the same pairs in the same order make the same arithmetic.
+        CHECK(std::equal(states.begin(), states.end(), reference.begin()));
+    }
+}
+
+TEST_CASE("The tracker finds no difference on random falling scenes and counts brute force's tests", "[broadphase]") {
+    for (std::uint32_t seed = 1; seed <= 3; ++seed) {
+        std::mt19937 random(seed);
+        std::uniform_real_distribution<Real> unit(0, 1);
+        Scene scene = test::emptyScene();
+        const std::size_t n = 100 * seed;
+        for (std::size_t i = 0; i < n; ++i) {
+            scene.dynamics.push_back(test::sphere("s" + std::to_string(i),
+                                                  Vec3(3 * unit(random), 0.2 + 2 * unit(random), 3 * unit(random)),
+                                                  Vec3(0), 0.1 + 0.05 * unit(random)));
+        }
+        scene.kinematics.push_back(test::kinematicBox("block", Vec3(1.5, 0.2, 1.5), Vec3(0.5)));
+        scene.planes.push_back(test::ground());
+        World world(scene);
+        BroadphaseTracker tracker;
+        const int steps = 60;
+        for (int i = 0; i < steps; ++i) {
+            world.step();
+            tracker.observe({world.dynamics(), world.kinematics(), world.planes()}, world.stepCount(), i % 2 == 0);
+        }
+        INFO("seed " << seed);
+        CHECK(tracker.agrees());
+        CHECK(tracker.differences().empty());
+        CHECK(tracker.steps() == steps);
+        CHECK(tracker.checkedSteps() == steps / 2);
+        const TrackedBroadphase& brute = tracker.results().front();
+        REQUIRE(brute.kind == BroadphaseKind::BruteForce);
+        CHECK(brute.steps == steps / 2);
+        // n(n−1)/2 dynamic pairs, n·1 kinematic, n·1 plane, each checked step.
+        CHECK(brute.pairTests == (n * (n - 1) / 2 + n + n) * brute.steps);
+        CHECK(tracker.results().size() == 4);
+        for (const TrackedBroadphase& t : tracker.results()) {
+            INFO(toString(t.kind));
+            CHECK(t.contactPairs > 0);
+            CHECK(t.pairTests <= brute.pairTests * t.steps / brute.steps);  // never more work than brute force
+        }
+        const std::vector<TrackedBroadphase> ranked = tracker.ranked();
+        for (std::size_t i = 1; i < ranked.size(); ++i) CHECK(ranked[i - 1].secondsPerStep() <= ranked[i].secondsPerStep());
+    }
+}
+
+TEST_CASE("The tracker reports a missed touching pair as an error, with its step and pair", "[broadphase]") {
+    Bodies b;
+    b.dynamics.push_back(test::sphere("left", Vec3(0, 0.5, 0)));
+    b.dynamics.push_back(test::sphere("right", Vec3(0.9, 0.5, 0)));  // 0.1 m overlap
+    b.dynamics.push_back(test::sphere("near", Vec3(1.905, 0.5, 0)));  // 5 mm gap to right: boxes overlap, no touch
+    b.planes.push_back(test::ground());
+    std::vector<Aabb> scratch;
+    std::vector<CandidatePair> reference;
+    findPairsBruteForce(b.view(), scratch, reference);
+    REQUIRE(reference.size() == 5);  // left–right, left–floor, right–near, right–floor, near–floor
+
+    TrackedBroadphase totals;
+    totals.kind = BroadphaseKind::Grid;
+    std::vector<BroadphaseDifference> kept;
+    SECTION("a missed touching pair is an error") {
+        std::vector<CandidatePair> candidate = reference;
+        candidate.erase(candidate.begin());  // left–right
+        compareWithReference(b.view(), reference, candidate, 42, totals, kept);
+        CHECK(totals.missedContacts == 1);
+        CHECK(totals.otherDifferences == 0);
+        REQUIRE(kept.size() == 1);
+        CHECK(kept[0].step == 42);
+        CHECK(kept[0].missing);
+        CHECK(kept[0].touching);
+        CHECK(kept[0].pair.a == 0);
+        CHECK(kept[0].pair.b.index == 1);
+    }
+    SECTION("a missed pair that does not touch is a difference, not an error") {
+        std::vector<CandidatePair> candidate = reference;
+        candidate.erase(candidate.begin() + 2);  // right–near
+        compareWithReference(b.view(), reference, candidate, 7, totals, kept);
+        CHECK(totals.missedContacts == 0);
+        CHECK(totals.otherDifferences == 1);
+        REQUIRE(kept.size() == 1);
+        CHECK_FALSE(kept[0].touching);
+    }
+    SECTION("an extra pair and a wrong order are differences") {
+        std::vector<CandidatePair> candidate = reference;
+        std::swap(candidate[0], candidate[1]);
+        candidate.push_back({0, {BodyKind::Dynamic, 2}});
+        compareWithReference(b.view(), reference, candidate, 3, totals, kept);
+        CHECK(totals.missedContacts == 0);
+        CHECK(totals.otherDifferences == 2);
+        REQUIRE(kept.size() == 2);
+        CHECK(kept[0].orderOnly);
+        CHECK_FALSE(kept[1].missing);
+        CHECK(kept[1].pair.b.index == 2);
+    }
+}
