@@ -24,19 +24,6 @@ namespace stepwise::cli {
 
 namespace {
 
-/// Loads a scene, printing every diagnostic; nullptr on failure (as `run` and `check` do).
-std::unique_ptr<Scene> loadScene(const std::string& path) {
-    try {
-        auto scene = std::make_unique<Scene>(loadSceneFile(path));
-        for (const std::string& warning : scene->warnings) std::fprintf(stderr, "%s\n", warning.c_str());
-        return scene;
-    } catch (const ConfigError& error) {
-        for (const ConfigDiagnostic& d : error.diagnostics()) std::fprintf(stderr, "%s\n", d.message().c_str());
-        std::fprintf(stderr, "stepwise: %zu error(s) in %s; nothing was loaded.\n", error.diagnostics().size(),
-                     path.c_str());
-        return nullptr;
-    }
-}
 
 std::string vec(const Vec3& v) {
     char text[96];
@@ -128,7 +115,7 @@ int raycastCommand(const std::vector<std::string>& args) {
     if (scenePath.empty() || !from || !direction) throw UsageError("'raycast' needs a scene file, --from x,y,z and --dir x,y,z");
     if (glm::length(*direction) <= 0) throw UsageError("--dir must not be the zero vector");
 
-    std::unique_ptr<Scene> scene = loadScene(scenePath);
+    std::unique_ptr<Scene> scene = loadOrReport(scenePath);
     if (!scene) return kExitUsageError;
     World world(std::move(*scene));
     const auto steps = static_cast<std::uint64_t>(std::llround(at / double(world.settings().timeStep)));
@@ -237,7 +224,7 @@ int benchCommand(const std::vector<std::string>& args) {
     if (duration && steps) throw UsageError("give --duration or --steps, not both");
     if (duration && *duration <= 0) throw UsageError("--duration expects a number of seconds > 0");
 
-    std::unique_ptr<Scene> scene = loadScene(scenePath);
+    std::unique_ptr<Scene> scene = loadOrReport(scenePath);
     if (!scene) return kExitUsageError;
     World world(std::move(*scene));
     const double h = double(world.settings().timeStep);

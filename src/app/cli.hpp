@@ -3,12 +3,14 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "world/expectations.hpp"
+#include "world/scene.hpp"
 
 /// @brief The `stepwise` command-line program (src/app/).
 namespace stepwise::cli {
@@ -39,6 +41,10 @@ RunOptions parseRunOptions(const std::vector<std::string>& args, const std::stri
 
 /// @brief `stepwise run`: simulate, print a summary, optionally write CSV. Returns the exit code.
 int runCommand(const RunOptions& options);
+
+/// @brief Loads the scene at @p path, printing its warnings, or every diagnostic and
+/// "nothing was loaded" to stderr; nullptr when it did not load (`run`, `check`, `bench`, `raycast`).
+std::unique_ptr<Scene> loadOrReport(const std::string& path);
 
 /// @brief Options of `stepwise view` (the viewer in src/viewer/, built when STEPWISE_VIEWER is ON).
 struct ViewOptions {

@@ -34,19 +34,6 @@ std::string vec(const Vec3& v) {
     return text;
 }
 
-/// Loads a scene, printing every diagnostic; nullptr on failure.
-std::unique_ptr<Scene> loadOrReport(const std::string& path) {
-    try {
-        auto scene = std::make_unique<Scene>(loadSceneFile(path));
-        for (const std::string& warning : scene->warnings) std::fprintf(stderr, "%s\n", warning.c_str());
-        return scene;
-    } catch (const ConfigError& error) {
-        for (const ConfigDiagnostic& d : error.diagnostics()) std::fprintf(stderr, "%s\n", d.message().c_str());
-        std::fprintf(stderr, "stepwise: %zu error(s) in %s; nothing was loaded.\n", error.diagnostics().size(),
-                     path.c_str());
-        return nullptr;
-    }
-}
 
 void printSceneHeader(const std::string& path, const Scene& scene) {
     const WorldSettings& s = scene.settings;
@@ -224,6 +211,19 @@ void printStageTimes(const World& world, double wallSeconds) {
 }
 
 }  // namespace
+
+std::unique_ptr<Scene> loadOrReport(const std::string& path) {
+    try {
+        auto scene = std::make_unique<Scene>(loadSceneFile(path));
+        for (const std::string& warning : scene->warnings) std::fprintf(stderr, "%s\n", warning.c_str());
+        return scene;
+    } catch (const ConfigError& error) {
+        for (const ConfigDiagnostic& d : error.diagnostics()) std::fprintf(stderr, "%s\n", d.message().c_str());
+        std::fprintf(stderr, "stepwise: %zu error(s) in %s; nothing was loaded.\n", error.diagnostics().size(),
+                     path.c_str());
+        return nullptr;
+    }
+}
 
 int runCommand(const RunOptions& options) {
     std::unique_ptr<Scene> scene = loadOrReport(options.scenePath);
