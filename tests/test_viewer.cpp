@@ -18,6 +18,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <array>
 #include <fstream>
 #include <iterator>
 #include <sstream>
@@ -837,4 +838,44 @@ TEST_CASE("In the window, the mouse picks, highlights, pushes and pulls the body
     INFO("yellow pixels: " << offBall << " with the pointer off the ball, " << onBall << " on it");
     CHECK(offBall < 10);
     CHECK(onBall > 300);
+}
+
+TEST_CASE("I shows sleeping bodies in the sleeping colour instead of their own", "[viewer][xvfb][sleep]") {
+    // The 100:1 stack with Sleep=true is still from the start and sleeps after
+    // TimeToSleep (0.5 s); at 2 s the heavy box, red in the scene, must be drawn
+    // in kSleepingColor (blue above red) with I, and in its red without.
+    if (!canTakeScreenshots()) return;
+    const TempFile scene("sleeping.scene");
+    {
+        std::ifstream in(kSourceDir + "/config/lesson08_heavy_on_light.scene");
+        std::ostringstream text;
+        text << in.rdbuf();
+        std::string contents = text.str();
+        const std::string off = "Sleep=false";
+        contents.replace(contents.find(off), off.size(), "Sleep=true");
+        std::ofstream(scene.path) << contents;
+    }
+    const World world = [&] {
+        World w(loadSceneFile(scene.path.string()));
+        while (w.time() < 2 - 1e-9) w.step();
+        return w;
+    }();
+    const DynamicObject& heavy = *world.findDynamic("heavy");
+    REQUIRE(heavy.asleep);
+    const OrbitCamera camera = cameraForScene(World(loadSceneFile(scene.path.string())));
+    const Vec3 pixel = camera.project(heavy.position, 320, 240);
+    auto shoot = [&](const std::string& keys) {
+        const TempFile png("sleep-" + keys + ".png");
+        const Result shot = viewUnderXvfb(scene.quoted() + " --screenshot " + png.quoted() +
+                                          " --at 2 --size 320x240 --keys " + keys);
+        INFO(shot.output);
+        REQUIRE(shot.exitCode == 0);
+        const Image image = decodePng(readBytes(png.path));
+        const std::uint8_t* p = image.at(static_cast<int>(pixel.x), static_cast<int>(pixel.y));
+        return std::array<int, 3>{p[0], p[1], p[2]};
+    };
+    const auto own = shoot("O");
+    const auto sleeping = shoot("OI");
+    CHECK(own[0] > own[2]);            // red: the scene's colour (0.8, 0.3, 0.2)
+    CHECK(sleeping[2] > sleeping[0]);  // kSleepingColor (0.55, 0.6, 0.7)
 }

@@ -32,6 +32,12 @@ bool isMovingKinematic(const BodySet& bodies, const BodyRef& ref) {
 
 }  // namespace
 
+std::uint32_t islandOf(const IslandWorkspace& workspace, std::uint32_t body) {
+    if (body >= workspace.parent.size()) return body;  // before the first update: alone
+    while (workspace.parent[body] != body) body = workspace.parent[body];
+    return body;
+}
+
 void dropSleepingPairs(const BodySet& bodies, std::vector<CandidatePair>& pairs) {
     std::erase_if(pairs, [&](const CandidatePair& pair) {
         if (!bodies.dynamics[pair.a].asleep) return false;

@@ -50,6 +50,10 @@ struct IslandWorkspace {
     std::uint32_t nextSleepIsland = 1;   ///< Id for the next island that falls asleep (0 = never slept).
 };
 
+/// @brief The island of awake body @p body after the last updateSleep(): the lowest body
+/// index of its island (a body alone is its own island). For display (the viewer's I key).
+std::uint32_t islandOf(const IslandWorkspace& workspace, std::uint32_t body);
+
 /// @brief Drops candidate pairs that cannot change anything: a sleeping body
 /// against a static object or against another sleeper (asleep together, they
 /// were at rest against each other).

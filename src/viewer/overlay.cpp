@@ -101,12 +101,12 @@ std::vector<std::string> helpLines() {
         "  C       contact points and normals",
         "  V       velocity (cyan) and angular velocity (magenta) vectors",
         "  B       bounding boxes; the broadphase's candidate pairs in yellow",
-        "  I       islands and sleeping bodies: not available yet (sleeping arrives with issue 4)",
+        "  I       islands: awake bodies coloured by island, sleeping bodies in pale blue-grey",
         "  F       frame the scene again (reset the camera)",
         "  O       hide / show the on-screen text",
         "  P       save a picture of the window (stepwise-SCENE-stepN.png, current directory)",
         "  Esc, Q  quit",
-        "Kinematic bodies wear diagonal stripes; joints are not drawn yet (they arrive with the solver issue).",
+        "Kinematic bodies wear diagonal stripes; joints are drawn as lines to their anchors.",
     };
 }
 
@@ -122,8 +122,10 @@ std::vector<std::string> hudLines(const Simulation& simulation, const OverlaySta
     if (state.framesPerSecond > 0) first += format("  %.0f fps", state.framesPerSecond);
     lines.push_back(first);
 
-    lines.push_back("bodies: " + std::to_string(world.dynamics().size()) +
-                    " awake, 0 asleep (sleeping arrives with issue 4); " + std::to_string(world.kinematics().size()) +
+    const auto asleep = static_cast<std::size_t>(std::count_if(
+        world.dynamics().begin(), world.dynamics().end(), [](const DynamicObject& b) { return b.asleep; }));
+    lines.push_back("bodies: " + std::to_string(world.dynamics().size() - asleep) + " awake, " +
+                    std::to_string(asleep) + " asleep; " + std::to_string(world.kinematics().size()) +
                     " kinematic, " + std::to_string(world.planes().size()) + " planes");
     lines.push_back("contacts " + std::to_string(world.contacts().size()) + "   candidate pairs " +
                     std::to_string(world.candidatePairs().size()));

@@ -75,6 +75,16 @@ const GLubyte* stripes() {
     return pattern;
 }
 
+/// I: one colour per awake island (from a small palette, by the island's
+/// lowest body index), kSleepingColor for a sleeping body.
+Color islandColor(const World& world, std::uint32_t body) {
+    static constexpr Color kPalette[] = {{0.9f, 0.45f, 0.2f}, {0.3f, 0.75f, 0.35f}, {0.85f, 0.3f, 0.6f},
+                                         {0.95f, 0.8f, 0.2f}, {0.35f, 0.8f, 0.8f},  {0.6f, 0.4f, 0.9f}};
+    if (world.dynamics()[body].asleep) return kSleepingColor;
+    const std::uint32_t island = islandOf(world.islands(), body);
+    return kPalette[island % (sizeof kPalette / sizeof kPalette[0])];
+}
+
 void drawBody(Shape shape, Real radius, const Vec3& scale, const Vec3& position, const Quat& orientation,
               const Color& c, bool kinematic) {
     pushPose(position, orientation);
@@ -333,8 +343,10 @@ void drawScene(const Simulation& simulation, const OrbitCamera& camera, int widt
     setUpLight();
 
     for (const CollisionPlane& plane : world.planes()) drawPlane(plane, camera);
-    for (const DynamicObject& b : world.dynamics()) {
-        drawBody(b.shape, b.radius, b.scale, b.position, b.orientation, b.color, false);
+    for (std::uint32_t i = 0; i < world.dynamics().size(); ++i) {
+        const DynamicObject& b = world.dynamics()[i];
+        drawBody(b.shape, b.radius, b.scale, b.position, b.orientation,
+                 options.islands ? islandColor(world, i) : b.color, false);
     }
     for (const KinematicsObject& b : world.kinematics()) {
         drawBody(b.shape, b.radius, b.scale, b.position, b.orientation, b.color, true);

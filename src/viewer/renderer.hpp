@@ -17,8 +17,12 @@ struct DrawOptions {
     bool contacts = false;       ///< C: contact points and their normals.
     bool velocities = false;     ///< V: velocity (cyan) and angular velocity (magenta) vectors.
     bool boundingBoxes = false;  ///< B: bounding boxes; those in a candidate pair in yellow.
+    bool islands = false;        ///< I: awake bodies coloured by island, sleeping ones in kSleepingColor.
     std::optional<BodyRef> hovered;  ///< Body under the mouse or held: drawn with a yellow outline.
 };
+
+/// @brief Colour of a sleeping body when islands are shown (I): a pale blue-grey, "switched off".
+inline constexpr Color kSleepingColor{0.55f, 0.6f, 0.7f};
 
 /// @brief Background colour of the 3D view (red, green, blue, 0–1); the screenshot test knows it.
 inline constexpr float kBackground[3] = {0.16f, 0.18f, 0.22f};

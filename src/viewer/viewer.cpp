@@ -158,7 +158,7 @@ void pressKey(unsigned char key) {
         case 'b':
         case 'B': app->overlay.draw.boundingBoxes = !app->overlay.draw.boundingBoxes; break;
         case 'i':
-        case 'I': notify("I: islands and sleeping bodies are not available yet (sleeping arrives with issue 4)"); break;
+        case 'I': app->overlay.draw.islands = !app->overlay.draw.islands; break;
         case 'h':
         case 'H': app->overlay.help = !app->overlay.help; break;
         case 'f':

@@ -52,6 +52,7 @@ public:
     const std::vector<CollisionPlane>& planes() const { return planes_; }     ///< Infinite planes.
     const std::vector<Spring>& springs() const { return springs_; }           ///< Springs (src/forces/spring.hpp).
     const std::vector<Attractor>& attractors() const { return attractors_; }  ///< Central forces (src/forces/attractor.hpp).
+    const IslandWorkspace& islands() const { return islandWorkspace_; }  ///< Islands of the last step (islandOf()).
     const std::vector<Joint>& joints() const { return joints_; }              ///< Joints, broken ones included.
 
     /// @brief The dynamic body called @p name, or nullptr.
