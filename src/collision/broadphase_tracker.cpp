@@ -35,12 +35,7 @@ std::uint64_t countTouchingPairs(const std::vector<Contact>& contacts) {
 
 bool pairTouches(const BodySet& bodies, const CandidatePair& pair) {
     const Geometry a = geometryOf(bodies.dynamics[pair.a]);
-    Geometry b;
-    switch (pair.b.kind) {
-        case BodyKind::Dynamic: b = geometryOf(bodies.dynamics[pair.b.index]); break;
-        case BodyKind::Kinematic: b = geometryOf(bodies.kinematics[pair.b.index]); break;
-        case BodyKind::Plane: b = geometryOf(bodies.planes[pair.b.index]); break;
-    }
+    const Geometry b = geometryOf(bodies, pair.b);
     const PairTest test = pairTestFor(a.type, b.type);
     ContactManifold manifold;
     return test != nullptr && test(a, b, manifold) && manifold.pointCount > 0;

@@ -51,6 +51,15 @@ Geometry geometryOf(const CollisionPlane& plane) {
     return g;
 }
 
+Geometry geometryOf(const BodySet& bodies, const BodyRef& ref) {
+    switch (ref.kind) {
+        case BodyKind::Dynamic: return geometryOf(bodies.dynamics[ref.index]);
+        case BodyKind::Kinematic: return geometryOf(bodies.kinematics[ref.index]);
+        case BodyKind::Plane: return geometryOf(bodies.planes[ref.index]);
+    }
+    return {};
+}
+
 namespace {
 
 Real sweepOf(const BodySet& bodies, const BodyRef& ref) {
@@ -68,12 +77,7 @@ void findContacts(const BodySet& bodies, const std::vector<CandidatePair>& pairs
     contacts.clear();
     for (const CandidatePair& pair : pairs) {
         Geometry a = geometryOf(bodies.dynamics[pair.a]);
-        Geometry b;
-        switch (pair.b.kind) {
-            case BodyKind::Dynamic: b = geometryOf(bodies.dynamics[pair.b.index]); break;
-            case BodyKind::Kinematic: b = geometryOf(bodies.kinematics[pair.b.index]); break;
-            case BodyKind::Plane: b = geometryOf(bodies.planes[pair.b.index]); break;
-        }
+        Geometry b = geometryOf(bodies, pair.b);
         // Every pair of shapes that can meet has a test; nullptr is left only
         // for a plane as A, which the broadphase never produces.
         const PairTest test = pairTestFor(a.type, b.type);

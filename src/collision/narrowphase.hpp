@@ -68,6 +68,8 @@ PairTest pairTestFor(GeometryType a, GeometryType b);
 Geometry geometryOf(const DynamicObject& body);
 Geometry geometryOf(const KinematicsObject& body);  ///< @copydoc geometryOf(const DynamicObject&)
 Geometry geometryOf(const CollisionPlane& plane);   ///< @copydoc geometryOf(const DynamicObject&)
+/// @brief The geometry of whichever object @p ref names in @p bodies.
+Geometry geometryOf(const BodySet& bodies, const BodyRef& ref);
 
 /// @brief Runs the exact test on every candidate pair and collects the contacts.
 /// @param contacts output, cleared first
