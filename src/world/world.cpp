@@ -92,6 +92,7 @@ void World::step() {
     }
     time_ += settings_.timeStep;
     ++stepCount_;
+    if (observer_) observer_->afterStep(*this);
 }
 
 void World::integrate(Real h, const AccelerationFunction& forces) {
@@ -191,6 +192,7 @@ void World::stepWithSequentialImpulses() {
     });
 
     for (int substep = 0; substep < settings_.substeps; ++substep) {
+        substep_ = substep;  // for the observer's StageEvent
         // 5. Free flight for h_s (src/integrators/*.cpp, kinematic_motion.cpp)
         if (substep > 0) runStage(Stage::ApplyForces, [&] { forces(dynamics_); });
         runStage(Stage::Integrate, [&] {
@@ -223,6 +225,8 @@ void World::stepWithSequentialImpulses() {
         });
     }
 
+    substep_ = -1;
+
     // 8. Bounces, once per step, from the approach speed at touch (src/dynamics/contact_solver.cpp);
     //    joints that pulled harder than their MaxForce break (src/dynamics/joints/joint.cpp)
     runStage(Stage::Restitution, [&] {
@@ -241,6 +245,16 @@ void World::stepWithSequentialImpulses() {
 template <class StageBody>
 void World::runStage(Stage stage, StageBody&& body) {
     using Clock = std::chrono::steady_clock;
+    StageEvent event;
+    if (observer_) {
+        event.stage = stage;
+        event.step = stepCount_ + 1;
+        event.substep = substep_;
+        event.substeps = settings_.solver == SolverKind::SequentialImpulse ? settings_.substeps : 1;
+        event.stepStartTime = time_;
+        event.timeStep = settings_.timeStep;
+        observer_->beforeStage(event, *this);
+    }
     const auto start = Clock::now();
     body();
     const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
@@ -251,7 +265,12 @@ void World::runStage(Stage stage, StageBody&& body) {
     record.lastSeconds += seconds;
     record.totalSeconds += seconds;
     checkFinite(stage);
+    if (observer_) observer_->afterStage(event, *this);
 }
+
+void StepObserver::beforeStage(const StageEvent&, const World&) {}
+void StepObserver::afterStage(const StageEvent&, const World&) {}
+void StepObserver::afterStep(const World&) {}
 
 void World::checkFinite(Stage stage) const {
     auto fail = [&](const std::string& object, const char* quantity) {

@@ -18,6 +18,7 @@
 #include "world/body_set.hpp"
 #include "world/scene.hpp"
 #include "world/stages.hpp"
+#include "world/step_observer.hpp"
 #include "world/world_settings.hpp"
 
 namespace stepwise {
@@ -62,6 +63,8 @@ public:
     const std::vector<Contact>& contacts() const { return contacts_; }           ///< Last narrowphase output.
     const std::vector<ImpulseReport>& impulses() const { return impulses_; }     ///< One per contact, last step.
     const StageRecords& stageRecords() const { return stageRecords_; }           ///< Per-stage timing.
+    /// @brief The sequential-impulse solver's constraints of the last step (effective masses, accumulated impulses).
+    const std::vector<SolverContact>& solverContacts() const { return solverWorkspace_.contacts; }
     const Broadphase& broadphase() const { return broadphase_; }  ///< Stage 4's state: which kind ran, Auto's reason.
 
     /// @brief The first body the ray from @p origin along @p direction meets within @p maxDistance
@@ -71,6 +74,11 @@ public:
     /// @param maxDistance how far to look, m (≥ 0)
     /// @throws std::invalid_argument when @p direction is zero or a value is not finite.
     std::optional<RayHit> raycast(const Vec3& origin, const Vec3& direction, Real maxDistance) const;
+
+    /// @brief Calls @p observer around every stage of every later step (nullptr: none).
+    ///
+    /// The World does not own it; it must outlive the steps it watches. See step_observer.hpp.
+    void setObserver(StepObserver* observer) { observer_ = observer; }
 
 private:
     /// Runs one stage: times it, records it, then checks the state it left.
@@ -102,6 +110,8 @@ private:
     std::vector<BodyLink> links_;  ///< Bodies held together by joints (for islands).
 
     StageRecords stageRecords_{};
+    StepObserver* observer_ = nullptr;
+    int substep_ = -1;  ///< Substep being run, −1 outside the substep loop (for StageEvent).
     Real time_ = 0;
     std::uint64_t stepCount_ = 0;
 };
