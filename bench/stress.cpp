@@ -348,7 +348,7 @@ CaseResult springEdge(const Options& o) {
     CaseResult r;
     r.criterion = format("hω = %.3f: stretch never beyond A/√(1 − (hω/2)²) = %.4f m in %g s", hw, bound,
                          kSpringEdgeSeconds);
-    r.pass = stats.error.empty() && !scene.warnings.size() && largest <= bound * (1 + kEllipseTolerance);
+    r.pass = stats.error.empty() && scene.warnings.empty() && largest <= bound * (1 + kEllipseTolerance);
     r.measured = stats.error.empty() ? format("largest stretch %.4f m (%.6f of the bound)%s", largest, largest / bound,
                                               scene.warnings.empty() ? "" : "; the loader warned")
                                      : failureNote(stats);
