@@ -14,8 +14,27 @@ constexpr double kTwoPi = 2 * 3.14159265358979323846;
 constexpr double kKeplerTolerance = 1e-15;
 /// ... or after this many iterations (it converges in a handful for e < 0.9).
 constexpr int kKeplerMaxIterations = 50;
+/// The AGM stops when a and b agree to this relative difference (double precision).
+constexpr double kAgmTolerance = 1e-15;
+/// ... or after this many iterations (quadratic convergence: 5 suffice below k = 0.99).
+constexpr int kAgmMaxIterations = 30;
 
 }  // namespace
+
+double completeEllipticK(double k) {
+    if (!(k >= 0 && k < 1)) throw std::invalid_argument("completeEllipticK: k must be in [0, 1)");
+    double a = 1, b = std::sqrt(1 - k * k);
+    for (int i = 0; i < kAgmMaxIterations && std::abs(a - b) > kAgmTolerance * a; ++i) {
+        const double mean = 0.5 * (a + b);
+        b = std::sqrt(a * b);
+        a = mean;
+    }
+    return 0.5 * kTwoPi / (2 * a);  // π / (2·AGM)
+}
+
+double pendulumPeriod(double length, double g, double theta0) {
+    return 4 * std::sqrt(length / g) * completeEllipticK(std::sin(0.5 * theta0));
+}
 
 PointState projectileAt(const PointState& start, const DVec3& gravity, double t) {
     return {start.position + start.velocity * t + 0.5 * gravity * t * t, start.velocity + gravity * t};

@@ -32,6 +32,23 @@ PointState projectileAt(const PointState& start, const DVec3& gravity, double t)
 /// @return (u, u̇) at time @p t.
 std::pair<double, double> oscillatorAt(double u0, double rate0, double omega, double t);
 
+/// @brief The complete elliptic integral of the first kind, K(k) = ∫₀^{π/2} dφ / √(1 − k² sin²φ), for 0 ≤ k < 1.
+///
+/// By Gauss's arithmetic–geometric mean (Abramowitz & Stegun 17.6):
+/// \f[ K(k) = \frac{\pi}{2\,\mathrm{AGM}(1, \sqrt{1 - k^2})}, \f]
+/// where AGM(a, b) iterates a ← (a + b)/2, b ← √(ab) until they agree; the
+/// number of correct digits doubles every iteration, so a handful reach
+/// double precision.
+/// @throws std::invalid_argument when k is outside [0, 1).
+double completeEllipticK(double k);
+
+/// @brief Period of a simple pendulum of length @p length in gravity @p g released from rest at @p theta0 (rad), s.
+///
+/// The exact period at any amplitude below π (Landau & Lifshitz, *Mechanics*, §11):
+/// \f[ T = 4\sqrt{L/g}\;K\big(\sin(\theta_0/2)\big), \f]
+/// which tends to the small-angle 2π√(L/g) as θ₀ → 0 and grows without bound as θ₀ → π.
+double pendulumPeriod(double length, double g, double theta0);
+
 /// @brief The two-body (Kepler) problem about a fixed centre of gravitational parameter μ.
 ///
 /// Bound orbits only (energy < 0). The state at any time follows from the

@@ -3,9 +3,9 @@
 ///
 ///     stepwise-bench precision [--quick] [--repeats N] [--csv PATH] [--markdown PATH]
 ///                              [--config DIR] [--problems a,b,...]
+///     stepwise-bench stress [--quick] [--markdown PATH] [--config DIR] [--cases a,b,...]
 ///
-/// Subcommands to come: `stress` (stiff springs, deep stacks), `bullet`
-/// (fast bodies and thin walls).
+/// Subcommand to come: `bullet` (a comparison with the Bullet engine).
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "precision.hpp"
+#include "stress.hpp"
 
 namespace {
 
@@ -33,7 +34,18 @@ const char* const kUsage =
     "  --config DIR      where the scene files are (default: the source tree's config/)\n"
     "  --problems LIST   comma-separated problem names, e.g. spring,bounce\n"
     "\n"
-    "  scripts/bench.sh runs it and draws the plots into docs/images/.\n";
+    "  scripts/bench.sh runs it and draws the plots into docs/images/.\n"
+    "\n"
+    "usage: stepwise-bench stress [--quick] [--markdown PATH] [--config DIR] [--cases a,b,...]\n"
+    "\n"
+    "  Runs the stress cases (deep stacks, a 1000-body elastic gas, a bullet at a thin\n"
+    "  wall, springs at and past their stability limit, a 1/15 s step, 10 km from the\n"
+    "  origin, masses from 1 g to 10 t, random scenes) and judges each against its\n"
+    "  criterion; exit code 1 when one fails.\n"
+    "\n"
+    "  --quick           shorter runs, fewer bodies (the CTest test bench_stress_quick)\n"
+    "  --markdown PATH   write the table as Markdown (for docs/benchmarks.md)\n"
+    "  --cases LIST      comma-separated case names, e.g. tower,random\n";
 
 int usageError(const std::string& message) {
     std::fprintf(stderr, "stepwise-bench: error: %s\n\n%s", message.c_str(), kUsage);
@@ -50,6 +62,27 @@ std::vector<std::string> splitCommas(const std::string& text) {
     return parts;
 }
 
+/// `stepwise-bench stress …`: its options, then the suite (bench/stress.cpp).
+int runStressCommand(const std::vector<std::string>& args) {
+    stepwise::bench::StressOptions options;
+    options.configDir = STEPWISE_CONFIG_DIR;
+    for (std::size_t i = 1; i < args.size(); ++i) {
+        const std::string& arg = args[i];
+        if (arg == "--quick") {
+            options.quick = true;
+        } else if (arg == "--markdown" || arg == "--config" || arg == "--cases") {
+            if (i + 1 >= args.size()) return usageError(arg + " needs a value");
+            const std::string& v = args[++i];
+            if (arg == "--markdown") options.markdownPath = v;
+            else if (arg == "--config") options.configDir = v;
+            else options.only = splitCommas(v);
+        } else {
+            return usageError("unknown option '" + arg + "' for stress");
+        }
+    }
+    return stepwise::bench::runStress(options);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -58,7 +91,8 @@ int main(int argc, char** argv) {
         std::fputs(kUsage, args.empty() ? stderr : stdout);
         return args.empty() ? kExitUsage : kExitOk;
     }
-    if (args[0] != "precision") return usageError("unknown subcommand '" + args[0] + "' (only 'precision' so far)");
+    if (args[0] == "stress") return runStressCommand(args);
+    if (args[0] != "precision") return usageError("unknown subcommand '" + args[0] + "'");
 
     stepwise::bench::PrecisionOptions options;
     options.configDir = STEPWISE_CONFIG_DIR;

@@ -36,9 +36,9 @@ point(i) = word('7 5 9', i) + 0
 rows(p, m, i) = sprintf("< awk -F, '$1==\"%s\" && $6==\"%s\" && $2==\"%s\" && $8+0 != 0 && $8 != \"nan\" && $8 != \"-nan\"' '%s'", p, m, i, csv)
 
 # problem, primary metric, what the y axis shows
-problems = 'projectile spring kepler-circular kepler-eccentric free-box bounce'
-metric(k) = word('position_error phase_error position_error position_error flip_time_error apex_error_max', k)
-ylabel(k) = word('"position error at t = 2 s (m)" "phase error after 10 periods (rad)" "position error after 10 orbits (m)" "position error after 10 orbits (m)" "largest flip-time error (s)" "largest relative apex error"', k)
+problems = 'projectile spring kepler-circular kepler-eccentric free-box bounce pendulum'
+metric(k) = word('position_error phase_error position_error position_error flip_time_error apex_error_max period_error', k)
+ylabel(k) = word('"position error at t = 2 s (m)" "phase error after 10 periods (rad)" "position error after 10 orbits (m)" "position error after 10 orbits (m)" "largest flip-time error (s)" "largest relative apex error" "relative period error over 10 swings"', k)
 
 do for [k = 1:words(problems)] {
     p = word(problems, k)

@@ -28,6 +28,9 @@ constexpr int kApexesMeasured = 4;
 /// step swept; RK4's error ∝ dt⁴ puts its flip times within 10⁻⁹ s (checked
 /// against dt·2 when the reference is built).
 constexpr double kReferenceStep = 1e-5;
+/// The pendulum runs this much longer than 11 exact periods, so a run whose
+/// period comes out a little long still shows its 11 crossings.
+constexpr double kPendulumRunMargin = 1.2;
 /// Two positions or velocities closer than this (relative) count as equal when checking a scene's shape.
 constexpr double kShapeTolerance = 1e-9;
 
@@ -303,6 +306,83 @@ ProblemRunner prepareBounce(const Scene& scene) {
     };
 }
 
+// ------------------------------------------------------------------ pendulum
+
+/// A bob on a DistanceJoint to a fixed point, released from rest: a simple
+/// pendulum (the rod holds the bob's centre, so nothing turns it). Its exact
+/// period at amplitude θ₀ is 4·√(L/g)·K(sin(θ₀/2)) (pendulumPeriod()).
+ProblemRunner preparePendulum(const Scene& scene) {
+    const std::string& file = scene.sourcePath;
+    require(scene.dynamics.size() == 1 && scene.joints.size() == 1 && scene.springs.empty() &&
+                scene.attractors.empty() && scene.planes.empty() && scene.kinematics.empty(),
+            file, "the pendulum problem needs one DynamicObject, one DistanceJoint and nothing else");
+    require(scene.settings.solver == SolverKind::SequentialImpulse, file,
+            "joints need Solver=SequentialImpulse");
+    const DynamicObject& body = scene.dynamics[0];
+    const JointDef& rod = scene.joints[0];
+    require(rod.kind == JointKind::Distance && rod.bodyB.empty(), file,
+            "the joint must be a DistanceJoint from the bob to a fixed point (no BodyB)");
+    const DVec3 pivot = d(rod.anchorB);
+    const DVec3 start = d(body.position);
+    require(glm::length(d(rod.anchorA) - start) <= kShapeTolerance * (1 + glm::length(start)), file,
+            "AnchorA must be the bob's centre, so the rod cannot turn it (a simple pendulum)");
+    require(glm::length(d(body.velocity)) == 0 && glm::length(d(body.angularVelocity)) == 0, file,
+            "the bob must start at rest");
+    const double length = rod.length ? double(*rod.length) : glm::length(start - pivot);
+    require(std::abs(glm::length(start - pivot) - length) <= kShapeTolerance * length, file,
+            "the rod must start at its Length");
+    const DVec3 g = d(scene.settings.gravity + body.constantAcceleration);
+    const double gravity = glm::length(g);
+    require(gravity > 0, file, "the pendulum needs gravity");
+    const DVec3 down = g / gravity;
+    const DVec3 arm = start - pivot;
+    // θ₀ from the hanging direction; the swing stays in the plane of `down` and the arm.
+    const double theta0 = std::acos(std::clamp(glm::dot(arm, down) / length, -1.0, 1.0));
+    const DVec3 sideways = arm - glm::dot(arm, down) * down;
+    require(theta0 > 0 && theta0 < kPi && glm::length(sideways) > 0, file,
+            "release the bob away from the vertical (0 < theta0 < 180 degrees)");
+    const DVec3 across = glm::normalize(sideways);
+    const double period = pendulumPeriod(length, gravity, theta0);
+    const double mass = double(body.mass);
+    // Energy above the lowest point, m·g·L·(1 − cos θ₀) at the start.
+    const auto energy = [=](const DynamicObject& b) {
+        return 0.5 * mass * glm::dot(d(b.velocity), d(b.velocity)) -
+               mass * gravity * glm::dot(d(b.position) - pivot - length * down, down);
+    };
+    const double e0 = mass * gravity * length * (1 - std::cos(theta0));
+    // The first upward crossing of the vertical comes ¾ of a period after the release; then one per period.
+    const double duration = (kPeriodsMeasured + 1) * period * kPendulumRunMargin;
+
+    return [=](IntegratorKind integrator, double h) {
+        World world(withStep(scene, integrator, h));
+        const std::uint64_t steps = stepsFor(duration, h);
+        std::vector<double> crossings;
+        double previous = glm::dot(start - pivot, across);
+        double worstLength = 0, worstEnergy = 0;
+        Measurement m = run(world, steps, [&](const World& w) {
+            const DynamicObject& b = w.dynamics()[0];
+            const double now = glm::dot(d(b.position) - pivot, across);
+            if (previous < 0 && now >= 0 && crossings.size() < std::size_t(kPeriodsMeasured) + 1) {
+                // Linear interpolation inside the step for the moment the bob passes under the pivot.
+                crossings.push_back(double(w.time()) - h * now / (now - previous));
+            }
+            previous = now;
+            worstLength = std::max(worstLength, std::abs(glm::length(d(b.position) - pivot) - length));
+            worstEnergy = std::max(worstEnergy, std::abs(energy(b) - e0) / e0);
+        });
+        const bool whole = !cutShort(m, steps) && crossings.size() == std::size_t(kPeriodsMeasured) + 1;
+        if (!cutShort(m, steps) && !whole) {
+            m.note = std::to_string(crossings.size()) + " crossings of the vertical instead of " +
+                     std::to_string(int(kPeriodsMeasured) + 1);
+        }
+        const double measured = whole ? (crossings.back() - crossings.front()) / kPeriodsMeasured : kNaN;
+        m.metrics = {{"period_error", "1", whole ? std::abs(measured / period - 1) : kNaN},
+                     {"length_error_max", "m", !cutShort(m, steps) ? worstLength : kNaN},
+                     {"energy_error_max", "1", !cutShort(m, steps) ? worstEnergy : kNaN}};
+        return m;
+    };
+}
+
 // ------------------------------------------------------------------ the list
 
 const std::vector<ReferenceProblem>& problems() {
@@ -319,12 +399,8 @@ const std::vector<ReferenceProblem>& problems() {
          prepareFreeBox, ""},
         {"bounce", "reference_bounce.scene", "A ball dropped 1 m with e = 0.8, apexes against e^(2n) * 1 m",
          prepareBounce, ""},
-        // SLOT(pendulum): a bob on a DistanceJoint, its period against the exact
-        // 4·√(L/g)·K(sin(θ₀/2)) (complete elliptic integral K). Waiting for the
-        // DistanceJoint record (issue #4), which is being written; then add
-        // config/reference_pendulum.scene and a preparePendulum() here.
-        {"pendulum", "", "A pendulum's period against 4 sqrt(L/g) K(sin(theta0/2))", nullptr,
-         "needs the DistanceJoint record (issue #4), not merged yet"},
+        {"pendulum", "reference_pendulum.scene",
+         "A 1 m pendulum released at 60 degrees, period against 4 sqrt(L/g) K(sin(theta0/2))", preparePendulum, ""},
     };
     return list;
 }
