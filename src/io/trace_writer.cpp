@@ -437,8 +437,8 @@ void TraceObserver::writeSleep(const std::string& head, const World& world) {
             const Real speed = glm::length(b.velocity);
             const Real spin = glm::length(b.angularVelocity);
             fields = "awake  island " + std::to_string(islandOf(world.islands(), std::uint32_t(i))) + "  still " +
-                     num(b.stillTime) + " s of " + num(s.timeToSleep) + " s  |v| " + num(speed) + " m/s (still below " +
-                     num(s.sleepLinearSpeed) + " m/s)  |w| " + num(spin) + " rad/s (still below " +
+                     num(b.stillTime) + " s of " + num(s.timeToSleep) + " s  |v| " + num(speed) + " m/s (still when < " +
+                     num(s.sleepLinearSpeed) + " m/s)  |w| " + num(spin) + " rad/s (still when < " +
                      num(s.sleepAngularSpeed) + " rad/s)";
         }
         line(head, b.name, fields);
