@@ -95,6 +95,11 @@ int generateCommand(const std::vector<std::string>& args);
 ///        disagrees with brute force).
 int benchCommand(const std::vector<std::string>& args);
 
+/// @brief `stepwise trace FILE [--steps N] [--from STEP] [--stage NAME] [--object NAME] [--substeps all]
+/// [--digits D]`: stage-by-stage lines of what each stage took in and produced (src/io/trace_writer.hpp).
+/// @param args the arguments after `trace`. @throws UsageError. Returns the exit code.
+int traceCommand(const std::vector<std::string>& args);
+
 /// @brief The usage text printed by `stepwise` and `stepwise --help`.
 const char* usageText();
 

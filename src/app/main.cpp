@@ -46,7 +46,7 @@ int viewCommand(const std::vector<std::string>& args) {
 }  // namespace
 
 /// @brief Runs the command named by the first argument (`run`, `check`, `view`, `grade`, `raycast`, `generate`,
-/// `bench`, `--help`).
+/// `bench`, `trace`, `--help`).
 /// @return the exit code: 0 success, 1 simulation failure, 2 bad command line or scene,
 ///         3 an expectation failed (`run`) or a graded file did not pass (`grade`).
 int main(int argc, char** argv) {
@@ -70,7 +70,9 @@ int main(int argc, char** argv) {
         if (command == "raycast") return raycastCommand(rest);
         if (command == "generate") return generateCommand(rest);
         if (command == "bench") return benchCommand(rest);
-        throw UsageError("unknown command '" + command + "' (commands: run, check, view, grade, raycast, generate, bench)");
+        if (command == "trace") return traceCommand(rest);
+        throw UsageError("unknown command '" + command +
+                         "' (commands: run, check, view, grade, raycast, generate, bench, trace)");
     } catch (const UsageError& error) {
         std::fprintf(stderr, "stepwise: error: %s\nRun 'stepwise --help' for usage.\n", error.what());
         return kExitUsageError;

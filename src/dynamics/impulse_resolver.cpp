@@ -86,7 +86,7 @@ ContactConstraint prepare(const BodySet& bodies, const Contact& contact, Real h,
         c.speculative = true;
         c.active = c.resting;
     }
-    report = {std::max(-vn, Real(0)), approachAtTouch, e, 0, 0};
+    report = {std::max(-vn, Real(0)), approachAtTouch, e, 0, 0, c.normalMass, c.resting};
     return c;
 }
 
@@ -96,7 +96,9 @@ void solve(ContactConstraint& c) {
     // Normal: drive v_n to the target separation speed, keep the total j ≥ 0.
     const Real vn = glm::dot(relativeVelocity(c), c.normal);
     const Real previous = c.normalImpulse;
-    c.normalImpulse = std::max(previous + c.normalMass * (c.targetSeparation - vn), Real(0));
+    const Real wanted = previous + c.normalMass * (c.targetSeparation - vn);
+    c.normalClamped = c.normalClamped || wanted < 0;  // reported only: a trace shows where j = 0 held
+    c.normalImpulse = std::max(wanted, Real(0));
     applyImpulse(c, (c.normalImpulse - previous) * c.normal);
 
     // Friction: recompute the relative velocity, because the normal impulse
@@ -111,6 +113,7 @@ void solve(ContactConstraint& c) {
     const Real magnitude = std::sqrt(total[0] * total[0] + total[1] * total[1]);
     if (magnitude > limit) {  // sliding: kinetic friction at the full μ·j, along the sliding direction
         const Real scale = magnitude > 0 ? limit / magnitude : Real(0);
+        c.frictionClamped = true;
         total[0] *= scale;
         total[1] *= scale;
     }
@@ -188,6 +191,8 @@ void resolveImpulses(const BodySet& bodies, std::span<const Contact> contacts, R
             const ContactConstraint& c = constraints[i];
             reports[i].normalImpulse = c.normalImpulse;
             reports[i].frictionImpulse = std::hypot(c.tangentImpulse[0], c.tangentImpulse[1]);
+            reports[i].normalClamped = c.normalClamped;
+            reports[i].frictionClamped = c.frictionClamped;
         }
     }
 }

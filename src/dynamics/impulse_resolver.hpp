@@ -43,6 +43,10 @@ struct ImpulseReport {
     Real restitution = 0;         ///< e used (0 for a resting contact).
     Real normalImpulse = 0;       ///< Total normal impulse j over all passes, N·s (≥ 0).
     Real frictionImpulse = 0;     ///< Magnitude of the total friction impulse, N·s (≤ μ·j).
+    Real normalMass = 0;          ///< Effective mass along the normal, 1/(J M⁻¹ Jᵀ), kg (foundation solver).
+    bool resting = false;         ///< Support, not impact: no bounce (foundation solver).
+    bool normalClamped = false;   ///< A pass wanted a pulling total (j < 0) and was held at j = 0 (foundation solver).
+    bool frictionClamped = false; ///< The friction total reached Coulomb's bound μ·j: sliding (foundation solver).
 };
 
 /// @brief One contact prepared for the impulse passes: geometry, effective
@@ -69,6 +73,8 @@ struct ContactConstraint {
     Real friction = 0;             ///< μ of the pair.
     Real normalImpulse = 0;        ///< Accumulated j, N·s.
     Real tangentImpulse[2] = {0, 0}; ///< Accumulated friction impulse along each tangent, N·s.
+    bool normalClamped = false;    ///< Some pass clamped the accumulated j at 0 (for ImpulseReport).
+    bool frictionClamped = false;  ///< Some pass scaled the friction back to μ·j (for ImpulseReport).
 };
 
 /// @brief Names one contact point from step to step: body A, body B and the
