@@ -891,6 +891,37 @@ TEST_CASE("A screenshot with the overlays shows the heads-up display's text", "[
     CHECK(white > 200);
 }
 
+TEST_CASE("--stage K draws the bodies where the K-th stage run of the step left them", "[viewer][xvfb]") {
+    // Lesson 3's ball in step 28: after integrate (stage run 2) its centre is
+    // 68 mm below its radius, the ball half in the floor; after
+    // correct-positions (run 7) it rests on the floor, centre at y = r. A
+    // point r/2 above the resting centre is inside the resting ball but above
+    // the sunken one: red only in the second picture.
+    if (!canTakeScreenshots()) return;
+    const int width = 640, height = 480;
+    World world(loadSceneFile(kBounceScene));
+    while (world.stepCount() < 27) world.step();
+    const OrbitCamera camera = cameraForScene(world);  // F frames the World as it is at t = 0.45 s
+    const Real r = world.dynamics()[0].radius;
+    const Vec3 probe = camera.project(Vec3(0, r + r / 2, 0), width, height);
+    auto shoot = [&](int stage) {
+        const TempFile png("stage-" + std::to_string(stage) + ".png");
+        const Result shot = viewUnderXvfb("'" + kBounceScene + "' --screenshot " + png.quoted() +
+                                          " --at 0.45 --size 640x480 --keys OF --stage " + std::to_string(stage));
+        INFO(shot.output);
+        REQUIRE(shot.exitCode == 0);
+        CHECK_THAT(shot.output, Contains("(step 28)"));
+        const Image image = decodePng(readBytes(png.path));
+        return dominant(image.at(static_cast<int>(probe.x), static_cast<int>(probe.y)));
+    };
+    CHECK(shoot(2) != 'r');
+    CHECK(shoot(7) == 'r');
+    const TempFile unused("stage-8.png");
+    const Result tooFar = viewUnderXvfb("'" + kBounceScene + "' --screenshot " + unused.quoted() + " --at 0.45 --stage 8");
+    CHECK(tooFar.exitCode == 2);
+    CHECK_THAT(tooFar.output, Contains("7 stage runs"));
+}
+
 TEST_CASE("In the window, the mouse picks, highlights, pushes and pulls the body under the cursor",
           "[viewer][xvfb][xdotool]") {
     // The real window under Xvfb, driven by xdotool (Debian package xdotool,
