@@ -34,6 +34,8 @@
 #include "viewer/mouse_controls.hpp"
 #include "viewer/mouse_force.hpp"
 #include "viewer/picking.hpp"
+#include "viewer/simulation.hpp"
+#include "viewer/stage_walkthrough.hpp"
 
 using Catch::Matchers::Contains;
 using namespace stepwise;
@@ -263,25 +265,56 @@ TEST_CASE("The camera's projection and its mouse ray agree", "[viewer]") {
     CHECK(glm::length(camera.eye() - camera.target) == Approx(7));
 }
 
-TEST_CASE("Ray casts hit spheres and turned boxes where the geometry says", "[viewer]") {
+namespace {
+
+/// A World holding only @p body (a dynamic body), for one ray cast.
+World worldWith(const DynamicObject& body) {
+    Scene scene;
+    scene.dynamics = {body};
+    return World(scene);
+}
+
+/// Where the pick along @p ray meets the World of @p body alone, m along the ray; nothing when it misses.
+std::optional<Real> pickDistance(const DynamicObject& body, const Ray& ray) {
+    const std::optional<RayHit> hit = pickBody(worldWith(body), ray);
+    return hit ? std::optional<Real>(hit->distance) : std::nullopt;
+}
+
+DynamicObject boxAt(const Vec3& centre, const Quat& orientation, const Vec3& halfExtents) {
+    DynamicObject box;
+    box.name = "box";
+    box.shape = Shape::Box;
+    box.position = centre;
+    box.orientation = orientation;
+    box.scale = Real(2) * halfExtents;
+    return box;
+}
+
+}  // namespace
+
+TEST_CASE("Picking through World::raycast hits spheres and turned boxes where the geometry says", "[viewer]") {
     const Ray down{Vec3(0, 10, 0), Vec3(0, -1, 0)};
-    // A sphere of radius 1 at the origin is entered at y = 1: 9 m down the ray.
-    REQUIRE(raySphere(down, Vec3(0), 1).has_value());
-    CHECK(*raySphere(down, Vec3(0), 1) == Approx(9));
-    CHECK_FALSE(raySphere(down, Vec3(3, 0, 0), 1).has_value());                     // beside the ray
-    CHECK_FALSE(raySphere({Vec3(0, 10, 0), Vec3(0, 1, 0)}, Vec3(0), 1).has_value()); // behind it
-    CHECK(*raySphere({Vec3(0.2, 0, 0), Vec3(1, 0, 0)}, Vec3(0), 1) == 0); // starting inside
+    const DynamicObject ball = test::sphere("ball", Vec3(0), Vec3(0), 1);
+    // A sphere of radius 1 at the origin is entered at y = 1: 9 m down the ray, normal up.
+    const std::optional<RayHit> top = pickBody(worldWith(ball), down);
+    REQUIRE(top.has_value());
+    CHECK(top->distance == Approx(9));
+    CHECK(glm::length(top->point - Vec3(0, 1, 0)) < 1e-12);
+    CHECK(glm::length(top->normal - Vec3(0, 1, 0)) < 1e-12);
+    CHECK_FALSE(pickDistance(test::sphere("beside", Vec3(3, 0, 0), Vec3(0), 1), down).has_value());
+    CHECK_FALSE(pickDistance(ball, {Vec3(0, 10, 0), Vec3(0, 1, 0)}).has_value());  // behind the ray
+    CHECK(*pickDistance(ball, {Vec3(0.2, 0, 0), Vec3(1, 0, 0)}) == 0);            // starting inside
 
     // A 2 m cube turned 45° about z has a corner on top at y = √2.
     const Quat turned = glm::angleAxis(kPi / 4, Vec3(0, 0, 1));
-    REQUIRE(rayBox(down, Vec3(0), turned, Vec3(1)).has_value());
-    CHECK(*rayBox(down, Vec3(0), turned, Vec3(1)) == Approx(10 - std::sqrt(2.0)));
+    REQUIRE(pickDistance(boxAt(Vec3(0), turned, Vec3(1)), down).has_value());
+    CHECK(*pickDistance(boxAt(Vec3(0), turned, Vec3(1)), down) == Approx(10 - std::sqrt(2.0)));
     // Straight, its top face is at y = 1; 1.2 m to the side the ray misses it, turned or not.
-    CHECK(*rayBox(down, Vec3(0), Quat(1, 0, 0, 0), Vec3(1)) == Approx(9));
-    CHECK_FALSE(rayBox({Vec3(1.5, 10, 0), Vec3(0, -1, 0)}, Vec3(0), turned, Vec3(1)).has_value());
-    CHECK_FALSE(rayBox({Vec3(0, 10, 1.2), Vec3(0, -1, 0)}, Vec3(0), turned, Vec3(1)).has_value());
+    CHECK(*pickDistance(boxAt(Vec3(0), Quat(1, 0, 0, 0), Vec3(1)), down) == Approx(9));
+    CHECK_FALSE(pickDistance(boxAt(Vec3(0), turned, Vec3(1)), {Vec3(1.5, 10, 0), Vec3(0, -1, 0)}).has_value());
+    CHECK_FALSE(pickDistance(boxAt(Vec3(0), turned, Vec3(1)), {Vec3(0, 10, 1.2), Vec3(0, -1, 0)}).has_value());
 
-    // pickBody returns the nearest body along the ray.
+    // Of two bodies on the ray, the nearer is picked.
     Scene scene;
     DynamicObject low, high;
     low.name = "low";
@@ -291,9 +324,10 @@ TEST_CASE("Ray casts hit spheres and turned boxes where the geometry says", "[vi
     high.position = Vec3(0, 4, 0);
     scene.dynamics = {low, high};
     const World world(scene);
-    const std::optional<PickHit> hit = pickBody(world, down);
+    const std::optional<RayHit> hit = pickBody(world, down);
     REQUIRE(hit.has_value());
-    CHECK(hit->index == 1);
+    CHECK(hit->body.kind == BodyKind::Dynamic);
+    CHECK(hit->body.index == 1);
     CHECK(hit->point.y == Approx(4.5));
 }
 
@@ -324,7 +358,7 @@ TEST_CASE("The ray through a cursor pixel meets a sphere, a turned box and a pla
         REQUIRE(glm::dot(normal, eye - centre) > 0);
         const Vec3 surface = centre + radius * normal;
         const Ray ray = rayAt(surface);
-        const std::optional<Real> s = raySphere(ray, centre, radius);
+        const std::optional<Real> s = pickDistance(test::sphere("ball", centre, Vec3(0), radius), ray);
         REQUIRE(s.has_value());
         CHECK(glm::length(ray.origin + *s * ray.direction - surface) < 1e-9);
         // The ray enters there and leaves on the far side: the far point is not the hit.
@@ -355,7 +389,7 @@ TEST_CASE("The ray through a cursor pixel meets a sphere, a turned box and a pla
         local[(axis + 2) % 3] = Real(-0.7) * half[(axis + 2) % 3];
         const Vec3 onFace = centre + turn * local;
         const Ray ray = rayAt(onFace);
-        const std::optional<Real> s = rayBox(ray, centre, turn, half);
+        const std::optional<Real> s = pickDistance(boxAt(centre, turn, half), ray);
         REQUIRE(s.has_value());
         CHECK(glm::length(ray.origin + *s * ray.direction - onFace) < 1e-9);
         // A pixel beside the box: its ray passes farther from the centre than
@@ -363,19 +397,29 @@ TEST_CASE("The ray through a cursor pixel meets a sphere, a turned box and a pla
         const Ray beside = rayAt(centre + Real(2.5) * glm::length(half) * cameraRight);
         const Vec3 toCentre = centre - beside.origin;
         REQUIRE(glm::length(toCentre - glm::dot(toCentre, beside.direction) * beside.direction) > glm::length(half));
-        CHECK_FALSE(rayBox(beside, centre, turn, half).has_value());
+        CHECK_FALSE(pickDistance(boxAt(centre, turn, half), beside).has_value());
     }
     SECTION("plane: s = n·(p0 − o) / n·d") {
+        Scene scene;
+        CollisionPlane floor;
+        floor.name = "floor";
+        floor.position = Vec3(0, -1, 0);
+        scene.planes = {floor};
+        const World world(scene);
         const Vec3 onFloor(1.3, -1, 2.1);
         const Ray ray = rayAt(onFloor);
-        const std::optional<Real> s = rayPlane(ray, Vec3(0, -1, 0), Vec3(0, 1, 0));
-        REQUIRE(s.has_value());
-        CHECK(glm::length(ray.origin + *s * ray.direction - onFloor) < 1e-9);
-        // Seen from below the plane counts too (the floor is drawn two-sided) ...
-        CHECK(rayPlane({Vec3(0, -3, 0), Vec3(0, 1, 0)}, Vec3(0, -1, 0), Vec3(0, 1, 0)) == Approx(2));
-        // ... but not a plane behind the ray's start, nor one the ray runs along.
-        CHECK_FALSE(rayPlane({Vec3(0, -3, 0), Vec3(0, -1, 0)}, Vec3(0, -1, 0), Vec3(0, 1, 0)).has_value());
-        CHECK_FALSE(rayPlane({Vec3(0, 2, 0), Vec3(1, 0, 0)}, Vec3(0, -1, 0), Vec3(0, 1, 0)).has_value());
+        const std::optional<RayHit> hit = pickBody(world, ray);
+        REQUIRE(hit.has_value());
+        CHECK(hit->body.kind == BodyKind::Plane);
+        CHECK(glm::length(ray.origin + hit->distance * ray.direction - onFloor) < 1e-9);
+        CHECK(glm::length(hit->point - onFloor) < 1e-9);
+        // Not a plane the ray runs along or away from ...
+        CHECK_FALSE(pickBody(world, {Vec3(0, 2, 0), Vec3(1, 0, 0)}).has_value());
+        CHECK_FALSE(pickBody(world, {Vec3(0, 2, 0), Vec3(0, 1, 0)}).has_value());
+        // ... and from below, inside the solid, the plane is met at once: nothing behind it can be picked.
+        const std::optional<RayHit> below = pickBody(world, {Vec3(0, -3, 0), Vec3(0, 1, 0)});
+        REQUIRE(below.has_value());
+        CHECK(below->distance == 0);
     }
 }
 
@@ -404,22 +448,23 @@ TEST_CASE("Picking takes the nearest hit along the cursor's ray, and the floor h
     };
 
     // Front and back lie on one line of sight: the front one is picked, at its near surface.
-    const std::optional<PickHit> hit = pickAtPointOf(world.dynamics()[0].position);
+    const std::optional<RayHit> hit = pickAtPointOf(world.dynamics()[0].position);
     REQUIRE(hit.has_value());
-    CHECK(hit->kind == BodyKind::Dynamic);
-    CHECK(hit->index == 1);
+    CHECK(hit->body.kind == BodyKind::Dynamic);
+    CHECK(hit->body.index == 1);
     CHECK(glm::length(hit->point - (world.dynamics()[1].position + Real(0.5) * towardsEye)) < 1e-9);
+    CHECK(glm::length(hit->normal - towardsEye) < 1e-9);  // the sphere's outward normal faces the eye
 
     // A kinematic body is picked (to be named; the viewer does not push it).
-    const std::optional<PickHit> onSlab = pickAtPointOf(slab.position + Vec3(0, 0.2, 0));
+    const std::optional<RayHit> onSlab = pickAtPointOf(slab.position + Vec3(0, 0.2, 0));
     REQUIRE(onSlab.has_value());
-    CHECK(onSlab->kind == BodyKind::Kinematic);
+    CHECK(onSlab->body.kind == BodyKind::Kinematic);
     CHECK(onSlab->point.y == Approx(1.2));
 
     // The ball under the floor is behind the floor from the eye: the floor is hit, at y = 0.
-    const std::optional<PickHit> onFloor = pickAtPointOf(world.dynamics()[2].position);
+    const std::optional<RayHit> onFloor = pickAtPointOf(world.dynamics()[2].position);
     REQUIRE(onFloor.has_value());
-    CHECK(onFloor->kind == BodyKind::Plane);
+    CHECK(onFloor->body.kind == BodyKind::Plane);
     CHECK(onFloor->point.y == Approx(0).margin(1e-9));
 
     // Straight up into the sky nothing is hit.
@@ -443,9 +488,9 @@ TEST_CASE("A push acts at the picked point: the body moves along the ray and tur
         DynamicObject ball = test::sphere("ball", camera.target, Vec3(0), radius, mass);
         initialiseMassProperties(ball);
         const Ray ray = camera.rayThroughPixel(Real(width) / 2 + pixelsRightOfCentre, Real(height) / 2, width, height);
-        const std::optional<Real> s = raySphere(ray, ball.position, radius);
-        REQUIRE(s.has_value());
-        const Vec3 hit = ray.origin + *s * ray.direction;
+        const std::optional<RayHit> picked = pickBody(worldWith(ball), ray);
+        REQUIRE(picked.has_value());
+        const Vec3 hit = picked->point;
         const Grab grab = grabAt(ball, 0, hit, ray.direction, pull);
         CHECK(glm::length(grabPoint(ball, grab) - hit) < 1e-12);
         applyGrab(ball, grab, noGravity, h);
@@ -585,6 +630,161 @@ TEST_CASE("The fixed-step clock turns any frame rate into the same whole steps",
     }
 }
 
+namespace {
+
+/// Lesson 3's ball (radius 0.1 m, lowest point 1 m above the floor, e = 0.8,
+/// Verlet, h = 1/60 s, Solver=Impulse). It touches at t = sqrt(2 / g) = 0.4515 s,
+/// inside step 28: after 27 steps (t = 0.45 s) the next step sinks it into the floor.
+const std::string kBounceScene = kSourceDir + "/config/lesson03_bounce.scene";
+constexpr double kBeforeImpact = 0.45;
+
+/// Presses S until the walk-through shows @p stage; returns the snapshot index.
+std::size_t pressSUntil(Simulation& sim, Stage stage) {
+    for (int press = 0; press < 1000; ++press) {
+        sim.stepStage();
+        REQUIRE(sim.shownStage().has_value());
+        if (sim.walkthrough().snapshot(*sim.shownStage()).event.stage == stage) return *sim.shownStage();
+    }
+    FAIL("S never showed " << stageName(stage));
+    return 0;
+}
+
+}  // namespace
+
+TEST_CASE("S shows the ball where each stage left it: in the floor after integrate, on it after correct-positions",
+          "[viewer]") {
+    Simulation sim(kBounceScene);
+    sim.stepTo(kBeforeImpact);
+    const World& world = sim.world();
+    REQUIRE(world.settings().solver == SolverKind::Impulse);
+    const DynamicObject& ball = world.dynamics()[0];
+    const CollisionPlane& floor = world.planes()[0];
+    const Real r = ball.radius, e = ball.elasticity, g = glm::length(world.settings().gravity);
+    const Real dropHeight = floor.signedDistance(ball.position) - r + Real(0.5) * glm::dot(ball.velocity, ball.velocity) / g;
+    auto height = [&](const Vec3& centre) { return floor.signedDistance(centre) - r; };  // of the lowest point, m
+
+    const std::size_t integrate = pressSUntil(sim, Stage::Integrate);
+    const StageWalkthrough& walk = sim.walkthrough();
+    REQUIRE(walk.snapshot(integrate).event.step == 28);
+    // The World already is at the end of step 28; the snapshot is not.
+    const BodySnapshot& sunk = walk.body(integrate, 0);
+    INFO("after integrate the lowest point is at " << height(sunk.position) << " m");
+    CHECK(height(sunk.position) < 0);  // below the floor's surface
+    CHECK(sim.view().dynamics[0].position == sunk.position);  // what the renderer draws
+    CHECK(height(world.dynamics()[0].position) >= -kTouchTolerance);
+    // Verlet is exact under constant gravity: the depth is g t²/2 − 1 m at t = 28 h.
+    const Real t = Real(28) * world.settings().timeStep;
+    CHECK(-height(sunk.position) == Approx(Real(0.5) * g * t * t - dropHeight).epsilon(1e-9));
+
+    // The narrowphase reports the contact that deep, at the floor.
+    const std::size_t narrow = pressSUntil(sim, Stage::Narrowphase);
+    const SceneView atNarrow = sim.view();
+    REQUIRE(atNarrow.contacts.size() == 1);
+    CHECK(atNarrow.contacts[0].depth == Approx(-height(walk.body(narrow, 0).position)).epsilon(1e-9));
+    CHECK(walk.snapshot(narrow).description.find("1 contact") != std::string::npos);
+
+    // Resolve-impulses turns the velocity up: e times the speed at touch, sqrt(2 g · 1 m).
+    const std::size_t resolve = pressSUntil(sim, Stage::ResolveImpulses);
+    const BodySnapshot& bounced = walk.body(resolve, 0);
+    CHECK(bounced.velocity.y > 0);
+    CHECK(bounced.velocity.y == Approx(e * std::sqrt(2 * g * dropHeight)).epsilon(0.01));
+    CHECK(bounced.position == sunk.position);  // impulses change velocities only
+
+    // Correct-positions puts it back on the surface.
+    const std::size_t correct = pressSUntil(sim, Stage::CorrectPositions);
+    CHECK(height(walk.body(correct, 0).position) >= -kTouchTolerance);
+    CHECK(correct + 1 == walk.size());  // the last stage of the step
+    CHECK(walk.body(correct, 0).position == world.dynamics()[0].position);
+}
+
+TEST_CASE("The walk-through has one snapshot per stage run, and leaving it keeps the trajectory of stepwise run",
+          "[viewer]") {
+    // viewer_test.scene runs the default sequential-impulse solver, 16 substeps.
+    Simulation sim(kScene);
+    sim.stepTo(0.5);
+    const World& world = sim.world();
+    REQUIRE(world.settings().solver == SolverKind::SequentialImpulse);
+    const int substeps = world.settings().substeps;
+    std::array<std::uint64_t, kStageCount> runsBefore{};
+    for (std::size_t i = 0; i < kStageCount; ++i) runsBefore[i] = world.stageRecords()[i].runs;
+
+    sim.stepStage();
+    const StageWalkthrough& walk = sim.walkthrough();
+    std::uint64_t runs = 0;
+    for (std::size_t i = 0; i < kStageCount; ++i) runs += world.stageRecords()[i].runs - runsBefore[i];
+    CHECK(walk.size() == runs);
+    // Every substep runs integrate, move-kinematics, solve and relax; apply-forces again from the second.
+    CHECK(walk.size() >= std::size_t(5 * substeps - 1));
+    std::vector<Stage> order;
+    for (std::size_t k = 0; k < walk.size(); ++k) {
+        const StageEvent& event = walk.snapshot(k).event;
+        CHECK(event.step == world.stepCount());
+        if (event.stage == Stage::SolveConstraints) {
+            CHECK(event.substep == static_cast<int>(std::count(order.begin(), order.end(), Stage::SolveConstraints)));
+            CHECK(walk.snapshot(k).description.rfind("substep " + std::to_string(event.substep + 1) + "/" +
+                                                         std::to_string(substeps) + ": solve-constraints",
+                                                     0) == 0);
+        }
+        order.push_back(event.stage);
+    }
+
+    SECTION("S visits every snapshot in order; Shift+S only the first and last substep's") {
+        std::size_t plain = 1;
+        while (sim.shownStage() && *sim.shownStage() + 1 < walk.size()) {
+            sim.stepStage();
+            ++plain;
+        }
+        CHECK(plain == walk.size());
+        Simulation skipping(kScene);
+        skipping.stepTo(0.5);
+        std::size_t presses = 0;
+        std::vector<int> substepsSeen;
+        do {
+            skipping.stepStage(true);
+            ++presses;
+            const int substep = skipping.walkthrough().snapshot(*skipping.shownStage()).event.substep;
+            if (substep >= 0 && (substepsSeen.empty() || substepsSeen.back() != substep)) substepsSeen.push_back(substep);
+        } while (*skipping.shownStage() + 1 < skipping.walkthrough().size());
+        CHECK(substepsSeen == std::vector<int>{0, substeps - 1});
+        CHECK(presses < walk.size() / 4);
+    }
+    SECTION("N leaves at the end of the step; the state is that of the same steps without the walk-through") {
+        sim.stepStage();
+        sim.stepStage(true);
+        sim.stepOnce();  // leaves the walk-through: no step
+        CHECK_FALSE(sim.shownStage().has_value());
+        CHECK(world.stepCount() == 31);
+        sim.stepStage();  // a second recorded step
+        sim.stepOnce();
+        sim.stepOnce();  // and one plain step
+        World plain(loadSceneFile(kScene));
+        for (int i = 0; i < 33; ++i) plain.step();
+        REQUIRE(world.stepCount() == 33);
+        for (std::size_t i = 0; i < plain.dynamics().size(); ++i) {
+            CHECK(world.dynamics()[i].position == plain.dynamics()[i].position);
+            CHECK(world.dynamics()[i].velocity == plain.dynamics()[i].velocity);
+            CHECK(world.dynamics()[i].orientation == plain.dynamics()[i].orientation);
+        }
+    }
+}
+
+TEST_CASE("The walk-through's arrays stop growing after the first recorded step", "[viewer]") {
+    // The bouncing ball has at most one pair and one contact in any step, and
+    // every step has the same seven stage runs: after the step with the
+    // contact, no recording needs more room.
+    Simulation sim(kBounceScene);
+    sim.stepTo(kBeforeImpact);
+    sim.showStageRun(0);
+    REQUIRE(sim.walkthrough().size() == 7);
+    const std::size_t first = sim.walkthrough().memoryBytes();
+    CHECK(first > 0);
+    for (int step = 0; step < 20; ++step) {
+        sim.stepOnce();
+        sim.showStageRun(0);
+        CHECK(sim.walkthrough().memoryBytes() == first);
+    }
+}
+
 TEST_CASE("Without a display, stepwise view says why and how to run headless", "[viewer]") {
     const Result r = shell("env -u DISPLAY " + cli() + " view '" + kScene + "'");
     CHECK(r.exitCode == 2);
@@ -689,6 +889,37 @@ TEST_CASE("A screenshot with the overlays shows the heads-up display's text", "[
         }
     }
     CHECK(white > 200);
+}
+
+TEST_CASE("--stage K draws the bodies where the K-th stage run of the step left them", "[viewer][xvfb]") {
+    // Lesson 3's ball in step 28: after integrate (stage run 2) its centre is
+    // 68 mm below its radius, the ball half in the floor; after
+    // correct-positions (run 7) it rests on the floor, centre at y = r. A
+    // point r/2 above the resting centre is inside the resting ball but above
+    // the sunken one: red only in the second picture.
+    if (!canTakeScreenshots()) return;
+    const int width = 640, height = 480;
+    World world(loadSceneFile(kBounceScene));
+    while (world.stepCount() < 27) world.step();
+    const OrbitCamera camera = cameraForScene(world);  // F frames the World as it is at t = 0.45 s
+    const Real r = world.dynamics()[0].radius;
+    const Vec3 probe = camera.project(Vec3(0, r + r / 2, 0), width, height);
+    auto shoot = [&](int stage) {
+        const TempFile png("stage-" + std::to_string(stage) + ".png");
+        const Result shot = viewUnderXvfb("'" + kBounceScene + "' --screenshot " + png.quoted() +
+                                          " --at 0.45 --size 640x480 --keys OF --stage " + std::to_string(stage));
+        INFO(shot.output);
+        REQUIRE(shot.exitCode == 0);
+        CHECK_THAT(shot.output, Contains("(step 28)"));
+        const Image image = decodePng(readBytes(png.path));
+        return dominant(image.at(static_cast<int>(probe.x), static_cast<int>(probe.y)));
+    };
+    CHECK(shoot(2) != 'r');
+    CHECK(shoot(7) == 'r');
+    const TempFile unused("stage-8.png");
+    const Result tooFar = viewUnderXvfb("'" + kBounceScene + "' --screenshot " + unused.quoted() + " --at 0.45 --stage 8");
+    CHECK(tooFar.exitCode == 2);
+    CHECK_THAT(tooFar.output, Contains("7 stage runs"));
 }
 
 TEST_CASE("In the window, the mouse picks, highlights, pushes and pulls the body under the cursor",

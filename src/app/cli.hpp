@@ -56,6 +56,7 @@ struct ViewOptions {
     std::optional<std::string> dumpStatePath;  ///< --dump-state PATH: the state drawn, as `run --csv` writes it.
     std::string keys;                          ///< --keys KEYS: keys pressed before the screenshot (e.g. "CV").
     std::optional<std::string> logEventsPath;  ///< --log-events PATH: one line per pick, push and release (window only).
+    std::optional<std::size_t> stage;          ///< --stage K: show the state after the K-th stage run of the next step (S).
 };
 
 /// @brief Parses the arguments after `view`. @throws UsageError.

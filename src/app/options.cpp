@@ -26,11 +26,12 @@ const char* usageText() {
            "      Open a window onto the scene (H in the window lists the controls);\n"
            "      --log-events writes a line per mouse pick, push and release to PATH.\n"
            "  stepwise view [FILE] --screenshot PATH [--at T] [--size WxH] [--keys KEYS]\n"
-           "                [--dump-state PATH]\n"
+           "                [--dump-state PATH] [--stage K]\n"
            "      Simulate to T seconds (default 0) as 'run --duration T' does, draw one\n"
            "      frame into the PNG file PATH and exit; --keys presses window keys first\n"
            "      (e.g. CV: contacts and velocities); --dump-state writes the state drawn\n"
-           "      in the CSV format of --csv. Without a screen, prefix 'xvfb-run -a'.\n"
+           "      in the CSV format of --csv; --stage K draws the state after the K-th\n"
+           "      stage run of the next step (the S key). Without a screen, prefix 'xvfb-run -a'.\n"
            "      A scene with Expect records ends with a table: each expectation, PASS or\n"
            "      FAIL, and the value measured.\n"
            "  stepwise check FILE\n"
@@ -135,6 +136,14 @@ ViewOptions parseViewOptions(const std::vector<std::string>& args, const std::st
             options.keys = value();
         } else if (arg == "--log-events") {
             options.logEventsPath = value();
+        } else if (arg == "--stage") {
+            const std::string& text = value();
+            char* end = nullptr;
+            const long k = std::strtol(text.c_str(), &end, 10);
+            if (text.empty() || *end != '\0' || k < 1) {
+                throw UsageError("--stage expects a stage run number >= 1, found '" + text + "'");
+            }
+            options.stage = static_cast<std::size_t>(k);
         } else if (arg.size() > 1 && arg[0] == '-') {
             throw UsageError("unknown option '" + arg + "' for 'view'");
         } else if (sceneGiven) {
@@ -144,8 +153,8 @@ ViewOptions parseViewOptions(const std::vector<std::string>& args, const std::st
             sceneGiven = true;
         }
     }
-    if (!options.screenshotPath && (atGiven || options.dumpStatePath || !options.keys.empty())) {
-        throw UsageError("--at, --dump-state and --keys go with --screenshot PATH");
+    if (!options.screenshotPath && (atGiven || options.dumpStatePath || !options.keys.empty() || options.stage)) {
+        throw UsageError("--at, --dump-state, --keys and --stage go with --screenshot PATH");
     }
     if (options.screenshotPath && options.logEventsPath) {
         throw UsageError("--log-events records what the mouse does in the window; a --screenshot has no mouse");

@@ -83,6 +83,41 @@ void panel(int x, int y, const std::vector<std::string>& lines, float r, float g
     }
 }
 
+/// The S panel: where in the step the shown snapshot is, what its stage
+/// produced, and the keys. The pipeline line lists the step's stages in the
+/// order they ran, the substep loop as one item, the shown one in brackets.
+std::vector<std::string> walkthroughLines(const Simulation& simulation) {
+    const StageWalkthrough& walk = simulation.walkthrough();
+    const std::size_t shown = *simulation.shownStage();
+    const StageSnapshot& now = walk.snapshot(shown);
+    std::vector<std::string> lines;
+    lines.push_back(format("S: step %.0f, stage run %.0f of %.0f", double(now.event.step), double(shown + 1),
+                           double(walk.size())) +
+                    format(" (the step ran once; the state after each stage, as captured: %.0f KB)",
+                           double(walk.memoryBytes()) / 1024.0));
+    std::string pipeline = "  ";
+    bool inLoop = false;
+    for (std::size_t k = 0; k < walk.size(); ++k) {
+        const StageEvent& e = walk.snapshot(k).event;
+        if (e.substep >= 0 && inLoop) continue;
+        inLoop = e.substep >= 0;
+        if (k > 0) pipeline += " > ";
+        if (inLoop) {
+            pipeline += now.event.substep >= 0 ? format("[substep %.0f/%.0f: ", double(now.event.substep + 1),
+                                                        double(now.event.substeps)) +
+                                                     stageName(now.event.stage) + "]"
+                                               : format("substeps x%.0f", double(e.substeps));
+        } else {
+            pipeline += k == shown ? std::string("[") + stageName(e.stage) + "]" : std::string(stageName(e.stage));
+        }
+    }
+    lines.push_back(pipeline);
+    lines.push_back(" > " + now.description + format("  [%.1f us]", 1e6 * now.seconds));
+    lines.push_back("   white outlines: the bodies at the start of the step.  S: next stage  Shift+S: skip the "
+                    "middle substeps  N: end of the step  Space: run");
+    return lines;
+}
+
 }  // namespace
 
 std::vector<std::string> helpLines() {
@@ -94,8 +129,9 @@ std::vector<std::string> helpLines() {
         "  left button on body   push it at that point (a force along the mouse ray)",
         "  right button on body  pull it at that point (towards the camera)",
         "  Space   pause / resume",
-        "  N       one step (pauses)",
-        "  S       one stage: the first press runs a step, each press shows its next stage",
+        "  N       one step (pauses); during S, the end of the step",
+        "  S       one stage: the state after the next stage of the step, and what it produced",
+        "  Shift+S the same, skipping the substeps between the first and the last",
         "  + / -   time scale x2 / x0.5 (wall-clock speed; the time step stays the scene's)",
         "  R       reload the scene file (a broken file shows its errors, the last good scene stays)",
         "  C       contact points and normals",
@@ -191,18 +227,7 @@ void drawOverlay(const Simulation& simulation, int width, int height, const Over
         panel(kMargin, bottom, lines, r, g, b, alpha);
         bottom -= kMargin;
     };
-    if (const std::optional<std::size_t> shown = simulation.shownStage()) {
-        std::vector<std::string> lines = {
-            format("S: stage %.0f of %.0f of step ", double(*shown + 1), double(kStageCount)) +
-            std::to_string(simulation.world().stepCount()) + " (World::step() ran them all; this replays each)"};
-        for (std::size_t i = 0; i < kStageCount; ++i) {
-            const Stage stage = static_cast<Stage>(i);
-            if (i == *shown) lines.push_back(" > " + simulation.describeStage(stage));
-            else lines.push_back(std::string("   ") + stageName(stage));
-        }
-        lines.push_back("   white outlines: the bodies before the step.  S: next stage  N, Space: leave");
-        panelAbove(wrap(lines, maxChars), 0.05f, 0.15f, 0.35f, 0.7f);
-    }
+    if (simulation.shownStage()) panelAbove(wrap(walkthroughLines(simulation), maxChars), 0.05f, 0.15f, 0.35f, 0.7f);
     std::vector<std::string> notices;
     if (!state.message.empty()) notices.push_back(state.message);
     if (!simulation.error().empty()) {

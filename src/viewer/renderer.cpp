@@ -77,10 +77,10 @@ const GLubyte* stripes() {
 
 /// I: one colour per awake island (from a small palette, by the island's
 /// lowest body index), kSleepingColor for a sleeping body.
-Color islandColor(const World& world, std::uint32_t body) {
+Color islandColor(const World& world, const DynamicObject& b, std::uint32_t body) {
     static constexpr Color kPalette[] = {{0.9f, 0.45f, 0.2f}, {0.3f, 0.75f, 0.35f}, {0.85f, 0.3f, 0.6f},
                                          {0.95f, 0.8f, 0.2f}, {0.35f, 0.8f, 0.8f},  {0.6f, 0.4f, 0.9f}};
-    if (world.dynamics()[body].asleep) return kSleepingColor;
+    if (b.asleep) return kSleepingColor;
     const std::uint32_t island = islandOf(world.islands(), body);
     return kPalette[island % (sizeof kPalette / sizeof kPalette[0])];
 }
@@ -175,22 +175,17 @@ Aabb boundsOf(const Body& b) {
                                     : boxAabb(b.position, b.orientation, b.halfExtents());
 }
 
-Vec3 centreOf(const World& world, const BodyRef& ref) {
-    switch (ref.kind) {
-        case BodyKind::Dynamic: return world.dynamics()[ref.index].position;
-        case BodyKind::Kinematic: return world.kinematics()[ref.index].position;
-        case BodyKind::Plane: break;
-    }
-    return world.planes()[ref.index].position;
+Vec3 centreOf(const SceneView& view, const BodyRef& ref) {
+    return ref.kind == BodyKind::Dynamic ? view.dynamics[ref.index].position : view.kinematics[ref.index].position;
 }
 
 /// B: every bounding box; the bodies of a candidate pair in yellow, joined by a line.
-void drawBroadphase(const World& world) {
-    std::vector<bool> paired(world.dynamics().size() + world.kinematics().size(), false);
-    for (const CandidatePair& p : world.candidatePairs()) {
+void drawBroadphase(const SceneView& view) {
+    std::vector<bool> paired(view.dynamics.size() + view.kinematics.size(), false);
+    for (const CandidatePair& p : view.pairs) {
         paired[p.a] = true;
         if (p.b.kind == BodyKind::Dynamic) paired[p.b.index] = true;
-        if (p.b.kind == BodyKind::Kinematic) paired[world.dynamics().size() + p.b.index] = true;
+        if (p.b.kind == BodyKind::Kinematic) paired[view.dynamics.size() + p.b.index] = true;
     }
     glLineWidth(1.0f);
     std::size_t i = 0;
@@ -199,33 +194,33 @@ void drawBroadphase(const World& world) {
         else glColor3f(0.6f, 0.6f, 0.6f);
         drawAabb(box);
     };
-    for (const DynamicObject& b : world.dynamics()) draw(boundsOf(b));
-    for (const KinematicsObject& b : world.kinematics()) draw(boundsOf(b));
+    for (const DynamicObject& b : view.dynamics) draw(boundsOf(b));
+    for (const KinematicsObject& b : view.kinematics) draw(boundsOf(b));
     glColor3f(1.0f, 0.9f, 0.2f);
     glBegin(GL_LINES);
-    for (const CandidatePair& p : world.candidatePairs()) {
+    for (const CandidatePair& p : view.pairs) {
         if (p.b.kind == BodyKind::Plane) continue;
-        vertex(world.dynamics()[p.a].position);
-        vertex(centreOf(world, p.b));
+        vertex(view.dynamics[p.a].position);
+        vertex(centreOf(view, p.b));
     }
     glEnd();
 }
 
 /// C: contact points (orange) and normals from A towards B (yellow); with
 /// @p impulses, the normal's length grows with the contact's share of the largest impulse.
-void drawContacts(const World& world, bool impulses) {
+void drawContacts(const SceneView& view, bool impulses) {
     Real largest = 0;
     if (impulses) {
-        for (const ImpulseReport& r : world.impulses()) largest = std::max(largest, r.normalImpulse);
+        for (const ImpulseReport& r : view.impulses) largest = std::max(largest, r.normalImpulse);
     }
     glLineWidth(2.0f);
     glColor3f(1.0f, 0.9f, 0.2f);
     glBegin(GL_LINES);
-    for (std::size_t i = 0; i < world.contacts().size(); ++i) {
-        const Contact& c = world.contacts()[i];
+    for (std::size_t i = 0; i < view.contacts.size(); ++i) {
+        const Contact& c = view.contacts[i];
         Real length = kNormalLength;
-        if (impulses && largest > 0 && i < world.impulses().size()) {
-            length = 2 * kNormalLength * world.impulses()[i].normalImpulse / largest;
+        if (impulses && largest > 0 && i < view.impulses.size()) {
+            length = 2 * kNormalLength * view.impulses[i].normalImpulse / largest;
         }
         vertex(c.point);
         vertex(c.point + length * c.normal);
@@ -234,13 +229,13 @@ void drawContacts(const World& world, bool impulses) {
     glPointSize(7.0f);
     glColor3f(1.0f, 0.45f, 0.1f);
     glBegin(GL_POINTS);
-    for (const Contact& c : world.contacts()) vertex(c.point);
+    for (const Contact& c : view.contacts) vertex(c.point);
     glEnd();
     glLineWidth(1.0f);
 }
 
 /// V: velocity vectors (cyan, the distance covered in 0.25 s) and angular velocities (magenta, 0.1 m per rad/s).
-void drawVelocities(const World& world) {
+void drawVelocities(const SceneView& view) {
     glLineWidth(2.0f);
     glBegin(GL_LINES);
     auto draw = [](const Vec3& x, const Vec3& v, const Vec3& w) {
@@ -251,8 +246,8 @@ void drawVelocities(const World& world) {
         vertex(x);
         vertex(x + kSpinMetresPerRadian * w);
     };
-    for (const DynamicObject& b : world.dynamics()) draw(b.position, b.velocity, b.angularVelocity);
-    for (const KinematicsObject& b : world.kinematics()) draw(b.position, b.velocity, b.angularVelocity);
+    for (const DynamicObject& b : view.dynamics) draw(b.position, b.velocity, b.angularVelocity);
+    for (const KinematicsObject& b : view.kinematics) draw(b.position, b.velocity, b.angularVelocity);
     glEnd();
     glLineWidth(1.0f);
 }
@@ -260,13 +255,13 @@ void drawVelocities(const World& world) {
 /// Joints, always shown: the rod from each body's centre to its anchor and
 /// between the anchors (light tan), the anchors as points, hinge and motor
 /// axes (green). A broken joint is not drawn.
-void drawJoints(const World& world) {
+void drawJoints(const World& world, std::span<const DynamicObject> bodies) {
     glLineWidth(2.0f);
     glBegin(GL_LINES);
     for (const Joint& joint : world.joints()) {
         if (joint.broken) continue;
-        const JointAnchors anchors = jointAnchors(joint, world.dynamics());
-        const DynamicObject& a = world.dynamics()[joint.bodyA];
+        const JointAnchors anchors = jointAnchors(joint, bodies);
+        const DynamicObject& a = bodies[joint.bodyA];
         if (joint.kind != JointKind::AngularMotor) {  // a motor holds no point: only its axis is drawn
             glColor3f(0.95f, 0.85f, 0.6f);
             vertex(a.position);
@@ -275,12 +270,12 @@ void drawJoints(const World& world) {
             vertex(anchors.onB);
             if (joint.bodyB != kWorldAnchor) {
                 vertex(anchors.onB);
-                vertex(world.dynamics()[joint.bodyB].position);
+                vertex(bodies[joint.bodyB].position);
             }
         }
         if (joint.kind == JointKind::Hinge || joint.kind == JointKind::AngularMotor) {
             const Quat orientationB =
-                joint.bodyB == kWorldAnchor ? Quat(1, 0, 0, 0) : world.dynamics()[joint.bodyB].orientation;
+                joint.bodyB == kWorldAnchor ? Quat(1, 0, 0, 0) : bodies[joint.bodyB].orientation;
             const Vec3 axis = orientationB * joint.localAxisB;
             const Vec3 centre = joint.kind == JointKind::Hinge ? anchors.onA : a.position;
             glColor3f(0.4f, 0.95f, 0.4f);
@@ -294,7 +289,7 @@ void drawJoints(const World& world) {
     glBegin(GL_POINTS);
     for (const Joint& joint : world.joints()) {
         if (joint.broken || joint.kind == JointKind::AngularMotor) continue;
-        const JointAnchors anchors = jointAnchors(joint, world.dynamics());
+        const JointAnchors anchors = jointAnchors(joint, bodies);
         vertex(anchors.onA);
         vertex(anchors.onB);
     }
@@ -326,6 +321,7 @@ void setUpLight() {
 void drawScene(const Simulation& simulation, const OrbitCamera& camera, int width, int height,
                const DrawOptions& options) {
     const World& world = simulation.world();
+    const SceneView view = simulation.view();  // the live World, or the walk-through's snapshot
     glViewport(0, 0, width, height);
     glClearColor(kBackground[0], kBackground[1], kBackground[2], 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -338,31 +334,31 @@ void drawScene(const Simulation& simulation, const OrbitCamera& camera, int widt
     const glm::dmat4 p(projection);
     glLoadMatrixd(&p[0][0]);
     glMatrixMode(GL_MODELVIEW);
-    const glm::dmat4 view(camera.viewMatrix());
-    glLoadMatrixd(&view[0][0]);
+    const glm::dmat4 viewMatrix(camera.viewMatrix());
+    glLoadMatrixd(&viewMatrix[0][0]);
     setUpLight();
 
     for (const CollisionPlane& plane : world.planes()) drawPlane(plane, camera);
-    for (std::uint32_t i = 0; i < world.dynamics().size(); ++i) {
-        const DynamicObject& b = world.dynamics()[i];
+    for (std::uint32_t i = 0; i < view.dynamics.size(); ++i) {
+        const DynamicObject& b = view.dynamics[i];
         drawBody(b.shape, b.radius, b.scale, b.position, b.orientation,
-                 options.islands ? islandColor(world, i) : b.color, false);
+                 options.islands ? islandColor(world, b, i) : b.color, false);
     }
-    for (const KinematicsObject& b : world.kinematics()) {
+    for (const KinematicsObject& b : view.kinematics) {
         drawBody(b.shape, b.radius, b.scale, b.position, b.orientation, b.color, true);
     }
 
     glDisable(GL_LIGHTING);
-    drawJoints(world);
+    drawJoints(world, view.dynamics);
     if (options.hovered && options.hovered->kind != BodyKind::Plane) {
         glColor3f(1.0f, 0.95f, 0.2f);
         glLineWidth(3.0f);
         if (options.hovered->kind == BodyKind::Dynamic) {
-            const DynamicObject& b = world.dynamics()[options.hovered->index];
+            const DynamicObject& b = view.dynamics[options.hovered->index];
             pushPose(b.position, b.orientation);
             wireShape(b.shape, b.radius, b.scale, 1.03f);
         } else {
-            const KinematicsObject& b = world.kinematics()[options.hovered->index];
+            const KinematicsObject& b = view.kinematics[options.hovered->index];
             pushPose(b.position, b.orientation);
             wireShape(b.shape, b.radius, b.scale, 1.03f);
         }
@@ -370,28 +366,32 @@ void drawScene(const Simulation& simulation, const OrbitCamera& camera, int widt
         glLineWidth(1.0f);
     }
 
-    // The stage walk-through: ghosts of the poses before the step, and the shown stage's overlay.
-    const std::optional<std::size_t> stage = simulation.shownStage();
-    const PoseSnapshot& before = simulation.poseBeforeStep();
-    if (stage && before.positions.size() == world.dynamics().size()) {
+    // The stage walk-through: ghosts where the bodies were at the start of the step, and the shown stage's overlay.
+    const std::optional<std::size_t> shownIndex = simulation.shownStage();
+    const Stage stage = shownIndex ? simulation.walkthrough().snapshot(*shownIndex).event.stage : Stage::Count;  // Count: none
+    if (shownIndex) {
         glColor3f(0.95f, 0.95f, 0.95f);
-        for (std::size_t i = 0; i < before.positions.size(); ++i) {
-            const DynamicObject& b = world.dynamics()[i];
-            pushPose(before.positions[i], before.orientations[i]);
+        for (std::size_t i = 0; i < view.dynamics.size(); ++i) {
+            const DynamicObject& b = view.dynamics[i];
+            const BodySnapshot& start = simulation.walkthrough().bodyAtStart(i);
+            pushPose(start.position, start.orientation);
             wireShape(b.shape, b.radius, b.scale, 1.0f);
             glPopMatrix();
         }
     }
-    const auto shown = [&](Stage s) { return stage && *stage == static_cast<std::size_t>(s); };
+    const auto shown = [&](Stage s) { return stage == s; };
 
     // Overlays are drawn on top of the bodies so that contacts inside them show.
     glDisable(GL_DEPTH_TEST);
-    if (options.boundingBoxes || shown(Stage::Broadphase)) drawBroadphase(world);
+    if (options.boundingBoxes || shown(Stage::Broadphase)) drawBroadphase(view);
     if (options.contacts || shown(Stage::Narrowphase) || shown(Stage::ResolveImpulses) ||
-        shown(Stage::CorrectPositions)) {
-        drawContacts(world, shown(Stage::ResolveImpulses));
+        shown(Stage::CorrectPositions) || shown(Stage::PrepareConstraints) || shown(Stage::Restitution)) {
+        drawContacts(view, shown(Stage::ResolveImpulses) || shown(Stage::Restitution));
     }
-    if (options.velocities || shown(Stage::Integrate)) drawVelocities(world);
+    if (options.velocities || shown(Stage::Integrate) || shown(Stage::ResolveImpulses) ||
+        shown(Stage::SolveConstraints) || shown(Stage::RelaxConstraints) || shown(Stage::Restitution)) {
+        drawVelocities(view);
+    }
     if (const std::optional<Grab>& grab = simulation.grabbed()) {
         const Vec3 point = simulation.grabPoint();
         glColor3f(1.0f, 0.25f, 0.2f);

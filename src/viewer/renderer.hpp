@@ -35,10 +35,14 @@ inline constexpr float kBackground[3] = {0.16f, 0.18f, 0.22f};
 /// edges, kinematic bodies with diagonal stripes), the joints (lines from
 /// each body's centre to its anchor and between the anchors; hinge and motor
 /// axes in green; broken joints are gone), and the overlays
-/// @p options asks for. While the stage walk-through runs, the overlays of
-/// the stage being shown are drawn whatever the keys say (bounding boxes at
-/// the broadphase, contacts at the narrowphase, impulses at the impulse
-/// stage), and the bodies' poses before the step are drawn as white ghosts.
+/// @p options asks for. Bodies, pairs and contacts come from
+/// Simulation::view(): inside the stage walk-through (S) that is the shown
+/// snapshot, so the bodies stand where that stage left them; the overlays of
+/// that stage are drawn whatever the keys say (bounding boxes and pairs at
+/// the broadphase; contacts from the narrowphase on, normals scaled by
+/// impulse at resolve-impulses and restitution; velocity vectors after the
+/// stages that change velocities), and the bodies' poses at the start of the
+/// step are drawn as white ghosts.
 void drawScene(const Simulation& simulation, const OrbitCamera& camera, int width, int height,
                const DrawOptions& options);
 

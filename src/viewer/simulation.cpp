@@ -1,5 +1,5 @@
 /// @file simulation.cpp
-/// @brief The viewer's World: loading and reloading, fixed steps, the stage walk-through, picking forces.
+/// @brief The viewer's World: loading and reloading, fixed steps, the S key's recorded steps, picking forces.
 #include "viewer/simulation.hpp"
 
 #include "dynamics/islands.hpp"
@@ -21,12 +21,6 @@ std::unique_ptr<World> loadWorld(const std::string& path) {
     Scene scene = loadSceneFile(path);
     for (const std::string& warning : scene.warnings) std::fprintf(stderr, "%s\n", warning.c_str());
     return std::make_unique<World>(std::move(scene));
-}
-
-std::string format(const char* pattern, double a, double b = 0, double c = 0) {
-    char text[160];
-    std::snprintf(text, sizeof text, pattern, a, b, c);
-    return text;
 }
 
 }  // namespace
@@ -64,7 +58,7 @@ bool Simulation::reload() {
     clock_ = fresh;
     grab_.reset();
     shownStage_.reset();
-    before_ = {};
+    walkthrough_.clear();
     error_.clear();
     ++loads_;
     return true;
@@ -95,10 +89,7 @@ void Simulation::takeStep() {
 
 std::uint64_t Simulation::advanceFrame(double wallSeconds) {
     const std::uint64_t steps = clock_.advance(wallSeconds);
-    if (steps > 0) {
-        shownStage_.reset();
-        before_ = {};
-    }
+    if (steps > 0) shownStage_.reset();
     std::uint64_t taken = 0;
     try {
         for (; taken < steps; ++taken) takeStep();
@@ -109,8 +100,10 @@ std::uint64_t Simulation::advanceFrame(double wallSeconds) {
 }
 
 void Simulation::stepOnce() {
-    shownStage_.reset();
-    before_ = {};
+    if (shownStage_) {  // the World is at the end of the walk-through's step already
+        shownStage_.reset();
+        return;
+    }
     try {
         takeStep();
     } catch (const SimulationError&) {
@@ -122,110 +115,42 @@ void Simulation::stepTo(double seconds) {
     while (world_->stepCount() < target) takeStep();  // a SimulationError reaches the caller
 }
 
-void Simulation::stepStage() {
-    clock_.setPaused(true);
-    if (shownStage_ && *shownStage_ + 1 < kStageCount) {
-        ++*shownStage_;
-        return;
-    }
-    PoseSnapshot snapshot;
-    for (const DynamicObject& b : world_->dynamics()) {
-        snapshot.positions.push_back(b.position);
-        snapshot.orientations.push_back(b.orientation);
-    }
+bool Simulation::recordStep() {
+    shownStage_.reset();
+    world_->setObserver(&walkthrough_);
     try {
         takeStep();
     } catch (const SimulationError&) {
-        shownStage_.reset();
-        return;
+        world_->setObserver(nullptr);
+        walkthrough_.clear();  // a half-recorded step: start afresh next time
+        return false;
     }
-    before_ = std::move(snapshot);
-    shownStage_ = 0;
+    world_->setObserver(nullptr);  // only the walk-through's steps are watched
+    return walkthrough_.size() > 0;
 }
 
-std::string Simulation::describeStage(Stage stage) const {
-    const World& w = *world_;
-    const std::size_t n = w.dynamics().size();
-    std::string text = stageName(stage);
-    text += ": ";
-    switch (stage) {
-        case Stage::ApplyForces:
-            text += std::to_string(n) + " accelerations a = g + a_obj";
-            if (n > 0) {
-                const Vec3& a = w.dynamics()[0].acceleration;
-                text += " (" + w.dynamics()[0].name + ": " +
-                        format("%.3g, %.3g, %.3g m/s^2)", double(a.x), double(a.y), double(a.z));
-            }
-            break;
-        case Stage::Integrate: {
-            Real largest = 0;
-            std::string who;
-            for (std::size_t i = 0; i < n && i < before_.positions.size(); ++i) {
-                const Real moved = glm::length(w.dynamics()[i].position - before_.positions[i]);
-                if (moved >= largest) {
-                    largest = moved;
-                    who = w.dynamics()[i].name;
-                }
-            }
-            text += std::to_string(n) + " bodies advanced by h = " + format("%.4g s", double(w.settings().timeStep)) +
-                    " (" + toString(w.settings().integrator) + ")";
-            if (!who.empty()) text += "; largest move in the whole step " + format("%.3g mm", 1e3 * double(largest)) +
-                                      " (" + who + ")";
-            break;
+void Simulation::stepStage(bool skipMiddleSubsteps) {
+    clock_.setPaused(true);
+    if (shownStage_) {
+        for (std::size_t k = *shownStage_ + 1; k < walkthrough_.size(); ++k) {
+            if (skipMiddleSubsteps && !walkthrough_.isSummaryStop(k)) continue;
+            shownStage_ = k;
+            walkthrough_.show(k);
+            return;
         }
-        case Stage::MoveKinematics:
-            text += std::to_string(w.kinematics().size()) + " kinematic bodies moved along their prescribed velocity";
-            break;
-        case Stage::Broadphase:
-            text += std::to_string(w.candidatePairs().size()) + " candidate pairs whose bounding boxes overlap";
-            break;
-        case Stage::Narrowphase: {
-            text += std::to_string(w.contacts().size()) + " contacts";
-            const Contact* deepest = nullptr;
-            for (const Contact& c : w.contacts()) {
-                if (!deepest || c.depth > deepest->depth) deepest = &c;
-            }
-            if (deepest) {
-                text += "; deepest " + format("%.3g mm", 1e3 * double(deepest->depth)) + " (" +
-                        w.dynamics()[deepest->a].name + " - " + bodyName(w, deepest->b) + ")";
-            }
-            break;
-        }
-        case Stage::ResolveImpulses: {
-            Real normal = 0, friction = 0, approach = 0;
-            for (const ImpulseReport& r : w.impulses()) {
-                normal += r.normalImpulse;
-                friction += r.frictionImpulse;
-                approach = std::max(approach, r.approachSpeed);
-            }
-            text += std::to_string(w.impulses().size()) + " impulses, normal " + format("%.3g N*s", double(normal)) +
-                    ", friction " + format("%.3g N*s", double(friction)) + ", fastest approach " +
-                    format("%.3g m/s", double(approach));
-            break;
-        }
-        case Stage::CorrectPositions: {
-            Real deepest = 0;
-            for (const Contact& c : w.contacts()) deepest = std::max(deepest, c.depth);
-            text += "overlaps of up to " + format("%.3g mm", 1e3 * double(deepest)) +
-                    " removed; resting bodies moved as a support force would";
-            break;
-        }
-        case Stage::PrepareConstraints:
-            text += std::to_string(w.contacts().size()) + " contact constraints prepared (anchors, effective masses, warm start)";
-            break;
-        case Stage::SolveConstraints:
-        case Stage::RelaxConstraints:
-            text += std::to_string(w.settings().substeps) + " substeps of h/" + std::to_string(w.settings().substeps);
-            break;
-        case Stage::Restitution:
-        case Stage::Sleep:
-            text += "done";
-            break;
-        case Stage::Count: break;
     }
-    const StageRecord& record = w.stageRecords()[static_cast<std::size_t>(stage)];
-    text += format("  [%.1f us]", 1e6 * record.lastSeconds);
-    return text;
+    if (!recordStep()) return;
+    shownStage_ = 0;
+    walkthrough_.show(0);
+}
+
+bool Simulation::showStageRun(std::size_t k) {
+    clock_.setPaused(true);
+    if (!recordStep()) return false;
+    const bool exists = k < walkthrough_.size();
+    shownStage_ = exists ? k : walkthrough_.size() - 1;
+    walkthrough_.show(*shownStage_);
+    return exists;
 }
 
 void Simulation::grab(std::uint32_t body, const Vec3& point, const Vec3& rayDirection, bool pull) {

@@ -16,15 +16,10 @@
 #include "viewer/event_log.hpp"
 #include "viewer/fixed_step_clock.hpp"
 #include "viewer/mouse_force.hpp"
+#include "viewer/stage_walkthrough.hpp"
 #include "world/world.hpp"
 
 namespace stepwise::viewer {
-
-/// @brief Where the body poses were before the step the stage walk-through is showing.
-struct PoseSnapshot {
-    std::vector<Vec3> positions;    ///< One per dynamic body, m.
-    std::vector<Quat> orientations; ///< One per dynamic body.
-};
 
 /// @brief A scene file's World plus everything the viewer does to it between frames.
 class Simulation {
@@ -45,32 +40,39 @@ public:
     /// @return the number of steps taken
     std::uint64_t advanceFrame(double wallSeconds);
 
-    /// @brief Takes exactly one step (the N key), leaving the stage walk-through.
+    /// @brief The N key: takes exactly one step; inside the stage walk-through, only leaves it.
+    ///
+    /// The walk-through's step has already run to its end (see stepStage()),
+    /// so leaving it shows the World where the step left it, and the next N
+    /// takes the next step: the trajectory is the one `stepwise run` computes.
     void stepOnce();
 
     /// @brief Steps until the world's clock reads @p seconds: `llround(seconds / h)` steps
     /// in all, exactly as many as `stepwise run --duration seconds`.
     void stepTo(double seconds);
 
-    /// @brief The S key: shows the next stage of the step, running a new step when needed.
+    /// @brief The S key (and Shift+S with @p skipMiddleSubsteps): shows the state after the next stage.
     ///
-    /// World::step() runs all seven stages in one call. The walk-through
-    /// therefore runs one whole step on the first press (after noting where
-    /// the bodies were), then shows that step's stages one per press, each
-    /// with what it produced, read from what the World keeps after a step:
-    /// candidatePairs(), contacts(), impulses(), stageRecords(). Pressing S
-    /// after the last stage runs the next step. The bodies are drawn where
-    /// the whole step left them; their poses before it are drawn as ghosts.
-    void stepStage();
+    /// At a step boundary, runs one World::step() with a StageWalkthrough as
+    /// its observer, which captures the state after every stage run (see
+    /// stage_walkthrough.hpp), and shows the first. Each later press shows
+    /// the next snapshot; with @p skipMiddleSubsteps, the next one outside the
+    /// substep loop or in its first or last substep. After the last
+    /// snapshot, the next press runs the next step. Pauses the clock.
+    void stepStage(bool skipMiddleSubsteps = false);
 
-    /// @brief Index of the stage being shown by the walk-through, or nothing outside it.
+    /// @brief `--stage K`: shows snapshot @p k (0-based) of a step run now, as k + 1 presses of S would.
+    /// @return false when the step has no snapshot @p k (the walk-through then shows its last)
+    bool showStageRun(std::size_t k);
+
+    /// @brief Index of the snapshot the walk-through shows, or nothing outside it.
     std::optional<std::size_t> shownStage() const { return shownStage_; }
 
-    /// @brief One line on what stage @p stage did in the last step, e.g. "narrowphase: 4 contacts".
-    std::string describeStage(Stage stage) const;
+    /// @brief The snapshots of the step the walk-through shows (or showed last).
+    const StageWalkthrough& walkthrough() const { return walkthrough_; }
 
-    /// @brief Body poses before the step the walk-through shows (empty outside the walk-through).
-    const PoseSnapshot& poseBeforeStep() const { return before_; }
+    /// @brief What to draw: the shown snapshot inside the walk-through, else the live World.
+    SceneView view() const { return shownStage_ ? walkthrough_.view() : liveView(*world_); }
 
     /// @brief Starts holding dynamic body @p body at world point @p point (see mouse_force.hpp).
     void grab(std::uint32_t body, const Vec3& point, const Vec3& rayDirection, bool pull);
@@ -106,13 +108,14 @@ public:
 
 private:
     void takeStep();  // one World::step() with the grab's impulse before it; catches SimulationError
+    bool recordStep();  // takeStep() with the walk-through watching; false when the step failed
 
     std::string path_;
     std::unique_ptr<World> world_;
     FixedStepClock clock_;
     std::optional<Grab> grab_;
     std::optional<std::size_t> shownStage_;
-    PoseSnapshot before_;
+    StageWalkthrough walkthrough_;
     std::string error_;
     int loads_ = 0;
     EventLog* log_ = nullptr;

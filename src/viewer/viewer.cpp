@@ -86,18 +86,18 @@ Ray mouseRay(int x, int y) {
 }
 
 /// The body under pixel (x, y), or nothing.
-std::optional<PickHit> pickAt(int x, int y) { return pickBody(app->simulation->world(), mouseRay(x, y)); }
+std::optional<RayHit> pickAt(int x, int y) { return pickBody(app->simulation->world(), mouseRay(x, y)); }
 
 /// The name shown for what the mouse points at or holds.
-void describePointer(const std::optional<PickHit>& hit) {
+void describePointer(const std::optional<RayHit>& hit) {
     const World& world = app->simulation->world();
     if (const std::optional<Grab>& grab = app->simulation->grabbed()) {
         app->overlay.pointed = std::string(grab->pull ? "pulling " : "pushing ") + world.dynamics()[grab->body].name;
         app->overlay.draw.hovered = BodyRef{BodyKind::Dynamic, grab->body};
-    } else if (hit && hit->kind != BodyKind::Plane) {
-        const BodyRef ref{hit->kind, hit->index};
+    } else if (hit && hit->body.kind != BodyKind::Plane) {
+        const BodyRef ref = hit->body;
         app->overlay.pointed = "pointing at " + bodyName(world, ref) +
-                               (hit->kind == BodyKind::Kinematic ? " (kinematic: cannot be pushed)" : "");
+                               (ref.kind == BodyKind::Kinematic ? " (kinematic: cannot be pushed)" : "");
         app->overlay.draw.hovered = ref;
     } else {
         app->overlay.pointed.clear();
@@ -132,8 +132,8 @@ void pressKey(unsigned char key) {
             clock.setPaused(true);
             sim.stepOnce();
             break;
-        case 's':
-        case 'S': sim.stepStage(); break;
+        case 's': sim.stepStage(); break;
+        case 'S': sim.stepStage(true); break;  // Shift+S: past the middle substeps
         case '+':
         case '=':
             clock.setScale(clock.scale() * 2);
@@ -275,14 +275,14 @@ std::optional<MouseButton> mouseButton(int button) {
 }
 
 /// A "pick" line of the event log for a press at pixel (x, y).
-void logPick(const std::optional<PickHit>& hit, int x, int y) {
+void logPick(const std::optional<RayHit>& hit, int x, int y) {
     if (!hit) {
         app->log.line("pick none pixel %d %d", x, y);
         return;
     }
     static constexpr const char* kKindNames[] = {"dynamic", "kinematic", "plane"};
-    app->log.line("pick %s pixel %d %d hit %s %s", bodyName(app->simulation->world(), {hit->kind, hit->index}).c_str(),
-                  x, y, EventLog::vec(hit->point).c_str(), kKindNames[static_cast<int>(hit->kind)]);
+    app->log.line("pick %s pixel %d %d hit %s %s", bodyName(app->simulation->world(), hit->body).c_str(), x, y,
+                  EventLog::vec(hit->point).c_str(), kKindNames[static_cast<int>(hit->body.kind)]);
 }
 
 void onMouse(int button, int state, int x, int y) {
@@ -303,11 +303,11 @@ void onMouse(int button, int state, int x, int y) {
     }
     const int glutModifiers = glutGetModifiers();
     const Modifiers modifiers{(glutModifiers & GLUT_ACTIVE_SHIFT) != 0, (glutModifiers & GLUT_ACTIVE_CTRL) != 0};
-    const std::optional<PickHit> hit = pickAt(x, y);
-    app->drag = dragForPress(*which, modifiers, hit && hit->kind == BodyKind::Dynamic);
+    const std::optional<RayHit> hit = pickAt(x, y);
+    app->drag = dragForPress(*which, modifiers, hit && hit->body.kind == BodyKind::Dynamic);
     logPick(hit, x, y);
     if (app->drag == Drag::Grab) {
-        app->simulation->grab(hit->index, hit->point, mouseRay(x, y).direction, *which == MouseButton::Right);
+        app->simulation->grab(hit->body.index, hit->point, mouseRay(x, y).direction, *which == MouseButton::Right);
         if (app->simulation->clock().paused()) notify("paused: Space resumes (or N steps), then the push acts");
     }
     describePointer(hit);
@@ -464,6 +464,12 @@ int runViewer(const cli::ViewOptions& options) {
             return cli::kExitSimulationError;
         }
         for (char key : options.keys) pressKey(static_cast<unsigned char>(key));
+        if (options.stage && !state.simulation->showStageRun(*options.stage - 1)) {
+            std::fprintf(stderr, "stepwise view: --stage %zu: the step has %zu stage runs\n", *options.stage,
+                         state.simulation->walkthrough().size());
+            app = nullptr;
+            return cli::kExitUsageError;
+        }
         openWindow("stepwise view (screenshot)");
         check.reset();  // freeglut has its own connection now
         glutDisplayFunc(onScreenshotDisplay);
