@@ -6,6 +6,7 @@
 #include <cmath>
 #include <functional>
 #include <stdexcept>
+#include <utility>
 
 #include "collision/narrowphase.hpp"
 #include "core/errors.hpp"
@@ -70,6 +71,26 @@ World::World(Scene scene)
     }
     joints_ = makeJoints(scene.joints, dynamics_, settings_.solver);  // src/dynamics/joints/joint.cpp
     jointLinks(joints_, links_);
+    replan();
+}
+
+/// The step plan from what the World holds now (src/world/step_plan.cpp); it allocates nothing.
+void World::replan() {
+    plan_ = makeStepPlan({settings_, dynamics_, kinematics_, planes_, springs_, joints_});
+    for (DynamicObject& body : dynamics_) body.canTurn = plan_.rotation.runs;  // read by the integrators
+    planStale_ = false;
+}
+
+/// Nothing can change this step: no dynamic body is awake (a sleeper is only
+/// woken by an awake body or a moving kinematic one) and no kinematic body moves.
+bool World::idle() const {
+    for (const DynamicObject& body : dynamics_) {
+        if (!body.asleep) return false;
+    }
+    for (const KinematicsObject& body : kinematics_) {
+        if (body.velocity != Vec3(0) || body.angularVelocity != Vec3(0)) return false;
+    }
+    return true;
 }
 
 const DynamicObject* World::findDynamic(std::string_view name) const {
@@ -85,6 +106,17 @@ void World::step() {
     for (StageRecord& record : stageRecords_) {
         record.ranLastStep = false;
         record.lastSeconds = 0;
+    }
+    if (planStale_) replan();  // a body was handed out for writing since the last step
+    // The step plan's early-out (step_plan.hpp): with nothing awake and nothing moving, time alone advances.
+    if (plan_.idleSkip.runs && idle()) {
+        // What the skipped stages would have found: every pair is dropped (dropSleepingPairs), so nothing touches.
+        pairs_.clear();
+        contacts_.clear();
+        impulses_.clear();
+        time_ += settings_.timeStep;
+        ++stepCount_;
+        return;
     }
     switch (settings_.solver) {
         case SolverKind::Impulse: stepWithImpulses(); break;
@@ -110,22 +142,22 @@ void World::stepWithImpulses() {
     const AccelerationFunction forces = std::cref(sceneForces);  // by reference: no allocation per step
 
     // 1. Forces → accelerations (src/forces/apply_forces.cpp)
-    runStage(Stage::ApplyForces, [&] { forces(dynamics_); });
+    runPlanned(Stage::ApplyForces, [&] { forces(dynamics_); });
 
     // 2. Advance dynamic bodies by h (src/integrators/*.cpp)
-    runStage(Stage::Integrate, [&] { integrate(h, forces); });
+    runPlanned(Stage::Integrate, [&] { integrate(h, forces); });
 
     // 3. Advance kinematic bodies along their prescribed motion (src/integrators/kinematic_motion.cpp)
-    runStage(Stage::MoveKinematics, [&] { moveKinematics(kinematics_, h); });
+    runPlanned(Stage::MoveKinematics, [&] { moveKinematics(kinematics_, h); });
 
     // 4. Which pairs might touch? (src/collision/broadphase.cpp → broadphase_*.cpp)
-    runStage(Stage::Broadphase, [&] { broadphase_.findPairs(settings_.broadphase, bodies(), pairs_); });
+    runPlanned(Stage::Broadphase, [&] { broadphase_.findPairs(settings_.broadphase, bodies(), pairs_); });
 
     // 5. Which of them do, where, and how deep? (src/collision/narrowphase.cpp → sphere_*.cpp)
-    runStage(Stage::Narrowphase, [&] { findContacts(bodies(), pairs_, contacts_); });
+    runPlanned(Stage::Narrowphase, [&] { findContacts(bodies(), pairs_, contacts_); });
 
     // 6. Impulses: bounce and friction change velocities (src/dynamics/impulse_resolver.cpp)
-    runStage(Stage::ResolveImpulses, [&] {
+    runPlanned(Stage::ResolveImpulses, [&] {
         impulses_.resize(contacts_.size());
         resolveImpulses(bodies(), contacts_, h, settings_.impulseIterations, settings_.warmStarting, contactWorkspace_,
                         impulses_);
@@ -133,7 +165,7 @@ void World::stepWithImpulses() {
 
     // 7. Push overlapping bodies apart (src/dynamics/impulse_resolver.cpp, correctPositions)
     const Real supportStep = positionShareOfVelocityChange(settings_.integrator) * h;
-    runStage(Stage::CorrectPositions, [&] { correctPositions(bodies(), contacts_, h, supportStep, contactWorkspace_); });
+    runPlanned(Stage::CorrectPositions, [&] { correctPositions(bodies(), contacts_, h, supportStep, contactWorkspace_); });
 }
 
 /// Sweep = |v|·h + ½|a|·h²: the distance free flight can carry a body in a
@@ -166,47 +198,51 @@ void World::stepWithSequentialImpulses() {
 
     // 1. Forces → accelerations (src/forces/apply_forces.cpp); again at every substep.
     //    How far each body can move this step sets how far ahead contacts are looked for.
-    runStage(Stage::ApplyForces, [&] {
+    runPlanned(Stage::ApplyForces, [&] {
         forces(dynamics_);
         measureSweeps(h);
     });
 
     // 2. Which pairs might touch? Sleepers against static objects cannot, jointed bodies do not.
     //    (src/collision/broadphase.cpp → broadphase_*.cpp, src/dynamics/islands.cpp, src/dynamics/joints/joint.cpp)
-    runStage(Stage::Broadphase, [&] {
+    runPlanned(Stage::Broadphase, [&] {
         broadphase_.findPairs(settings_.broadphase, bodies(), pairs_);
         dropSleepingPairs(bodies(), pairs_);
-        dropJointedPairs(joints_, jointWorkspace_, pairs_);  // what a joint holds does not collide (joint.hpp)
+        // What a joint holds does not collide (joint.hpp)
+        if (plan_.jointSolver.runs) dropJointedPairs(joints_, jointWorkspace_, pairs_);
     });
 
     // 3. Which of them touch, or are about to (src/collision/narrowphase.cpp → *_*.cpp)
-    runStage(Stage::Narrowphase, [&] { findContacts(bodies(), pairs_, contacts_); });
+    runPlanned(Stage::Narrowphase, [&] { findContacts(bodies(), pairs_, contacts_); });
 
     // 4. Contacts and joints → constraints; an awake body wakes the islands it touches
     //    (src/dynamics/contact_solver.cpp, src/dynamics/joints/joint.cpp, src/dynamics/islands.cpp)
-    runStage(Stage::PrepareConstraints, [&] {
+    runPlanned(Stage::PrepareConstraints, [&] {
         wakeTouchedIslands(bodies(), contacts_, links_);
         prepareContacts(bodies(), contacts_, h, settings_.warmStarting, solverWorkspace_);
-        prepareJoints(bodies(), joints_, settings_.warmStarting, jointWorkspace_);
+        if (plan_.jointSolver.runs) prepareJoints(bodies(), joints_, settings_.warmStarting, jointWorkspace_);
     });
 
     for (int substep = 0; substep < settings_.substeps; ++substep) {
         // 5. Free flight for h_s (src/integrators/*.cpp, kinematic_motion.cpp)
-        if (substep > 0) runStage(Stage::ApplyForces, [&] { forces(dynamics_); });
-        runStage(Stage::Integrate, [&] {
-            recordPoses(bodies(), solverWorkspace_);  // the solve measures separations from here
+        if (substep > 0) runPlanned(Stage::ApplyForces, [&] { forces(dynamics_); });
+        runPlanned(Stage::Integrate, [&] {
+            // The solve measures separations from here (nothing to measure when it is skipped)
+            if (plan_.runs(Stage::SolveConstraints)) recordPoses(bodies(), solverWorkspace_);
             integrate(hs, forces);
         });
-        runStage(Stage::MoveKinematics, [&] { moveKinematics(kinematics_, hs); });
+        runPlanned(Stage::MoveKinematics, [&] { moveKinematics(kinematics_, hs); });
 
         // 6. Warm start, soft solve (joints first, then contacts), and move by what the solve changed
         //    (src/dynamics/joints/*.cpp, src/dynamics/contact_solver.cpp, src/integrators/velocity_change_drift.cpp)
-        runStage(Stage::SolveConstraints, [&] {
+        runPlanned(Stage::SolveConstraints, [&] {
             recordVelocities(dynamics_, solverWorkspace_.velocityBefore, solverWorkspace_.angularVelocityBefore);
-            warmStartJoints(jointWorkspace_, solverWorkspace_.dynamicPoses);
+            if (plan_.jointSolver.runs) warmStartJoints(jointWorkspace_, solverWorkspace_.dynamicPoses);
             warmStartContacts(solverWorkspace_, settings_.accumulateImpulses);
             for (int pass = 0; pass < settings_.velocityIterations; ++pass) {
-                solveJoints(jointWorkspace_, solverWorkspace_.dynamicPoses, jointSettings, true);
+                if (plan_.jointSolver.runs) {
+                    solveJoints(jointWorkspace_, solverWorkspace_.dynamicPoses, jointSettings, true);
+                }
                 solveContacts(solverWorkspace_, contactSettings, true);
             }
             driftByVelocityChange(dynamics_, solverWorkspace_.velocityBefore, solverWorkspace_.angularVelocityBefore, hs,
@@ -214,10 +250,12 @@ void World::stepWithSequentialImpulses() {
         });
 
         // 7. Relax: the same passes without the push-out bias, so the push-out leaves no speed behind
-        runStage(Stage::RelaxConstraints, [&] {
+        runPlanned(Stage::RelaxConstraints, [&] {
             recordPoses(bodies(), solverWorkspace_);  // where the drift left them
             for (int pass = 0; pass < settings_.relaxIterations; ++pass) {
-                solveJoints(jointWorkspace_, solverWorkspace_.dynamicPoses, jointSettings, false);
+                if (plan_.jointSolver.runs) {
+                    solveJoints(jointWorkspace_, solverWorkspace_.dynamicPoses, jointSettings, false);
+                }
                 solveContacts(solverWorkspace_, contactSettings, false);
             }
         });
@@ -225,17 +263,22 @@ void World::stepWithSequentialImpulses() {
 
     // 8. Bounces, once per step, from the approach speed at touch (src/dynamics/contact_solver.cpp);
     //    joints that pulled harder than their MaxForce break (src/dynamics/joints/joint.cpp)
-    runStage(Stage::Restitution, [&] {
+    runPlanned(Stage::Restitution, [&] {
         applyRestitution(solverWorkspace_);
         impulses_.resize(contacts_.size());
         storeContactImpulses(contacts_, solverWorkspace_, impulses_);
-        finishJoints(jointWorkspace_, joints_, hs, stepCount_ + 1, time_ + h, links_);
+        if (plan_.jointSolver.runs) finishJoints(jointWorkspace_, joints_, hs, stepCount_ + 1, time_ + h, links_);
     });
 
     // 9. Islands at rest fall asleep (src/dynamics/islands.cpp)
     if (settings_.sleeping) {
-        runStage(Stage::Sleep, [&] { updateSleep(bodies(), contacts_, links_, settings_, islandWorkspace_); });
+        runPlanned(Stage::Sleep, [&] { updateSleep(bodies(), contacts_, links_, settings_, islandWorkspace_); });
     }
+}
+
+template <class StageBody>
+void World::runPlanned(Stage stage, StageBody&& body) {
+    if (plan_.runs(stage)) runStage(stage, std::forward<StageBody>(body));
 }
 
 template <class StageBody>

@@ -18,6 +18,7 @@
 #include "world/body_set.hpp"
 #include "world/scene.hpp"
 #include "world/stages.hpp"
+#include "world/step_plan.hpp"
 #include "world/world_settings.hpp"
 
 namespace stepwise {
@@ -45,9 +46,17 @@ public:
     Real time() const { return time_; }                           ///< Simulated time, s.
     std::uint64_t stepCount() const { return stepCount_; }        ///< Steps taken so far.
 
-    std::vector<DynamicObject>& dynamics() { return dynamics_; }              ///< Simulated bodies.
+    /// @brief Simulated bodies, to change: the step plan is rebuilt before the next step.
+    std::vector<DynamicObject>& dynamics() {
+        planStale_ = true;
+        return dynamics_;
+    }
     const std::vector<DynamicObject>& dynamics() const { return dynamics_; }  ///< Simulated bodies.
-    std::vector<KinematicsObject>& kinematics() { return kinematics_; }       ///< Prescribed-motion bodies.
+    /// @brief Prescribed-motion bodies, to change: the step plan is rebuilt before the next step.
+    std::vector<KinematicsObject>& kinematics() {
+        planStale_ = true;
+        return kinematics_;
+    }
     const std::vector<KinematicsObject>& kinematics() const { return kinematics_; }  ///< Prescribed-motion bodies.
     const std::vector<CollisionPlane>& planes() const { return planes_; }     ///< Infinite planes.
     const std::vector<Spring>& springs() const { return springs_; }           ///< Springs (src/forces/spring.hpp).
@@ -63,6 +72,9 @@ public:
     const std::vector<ImpulseReport>& impulses() const { return impulses_; }     ///< One per contact, last step.
     const StageRecords& stageRecords() const { return stageRecords_; }           ///< Per-stage timing.
     const Broadphase& broadphase() const { return broadphase_; }  ///< Stage 4's state: which kind ran, Auto's reason.
+    /// @brief What each step runs and why (src/world/step_plan.hpp), as of the last step
+    /// (or construction); `stepwise run --explain` prints it.
+    const StepPlan& plan() const { return plan_; }
 
     /// @brief The first body the ray from @p origin along @p direction meets within @p maxDistance
     /// (src/world/world_raycast.cpp); nothing when it meets none.
@@ -76,6 +88,11 @@ private:
     /// Runs one stage: times it, records it, then checks the state it left.
     template <class StageBody>
     void runStage(Stage stage, StageBody&& body);
+    /// Runs the stage only when the step plan says it runs (runStage() otherwise).
+    template <class StageBody>
+    void runPlanned(Stage stage, StageBody&& body);
+    void replan();
+    bool idle() const;
     void checkFinite(Stage stage) const;
     void stepWithImpulses();
     void measureSweeps(Real h);
@@ -101,6 +118,8 @@ private:
     JointWorkspace jointWorkspace_;
     std::vector<BodyLink> links_;  ///< Bodies held together by joints (for islands).
 
+    StepPlan plan_;
+    bool planStale_ = false;  ///< A body may have changed through dynamics() or kinematics(): replan before stepping.
     StageRecords stageRecords_{};
     Real time_ = 0;
     std::uint64_t stepCount_ = 0;
