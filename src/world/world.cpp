@@ -6,7 +6,6 @@
 #include <cmath>
 #include <functional>
 #include <stdexcept>
-#include <utility>
 
 #include "collision/narrowphase.hpp"
 #include "core/errors.hpp"
@@ -142,22 +141,22 @@ void World::stepWithImpulses() {
     const AccelerationFunction forces = std::cref(sceneForces);  // by reference: no allocation per step
 
     // 1. Forces → accelerations (src/forces/apply_forces.cpp)
-    runPlanned(Stage::ApplyForces, [&] { forces(dynamics_); });
+    runStage(Stage::ApplyForces, [&] { forces(dynamics_); });
 
     // 2. Advance dynamic bodies by h (src/integrators/*.cpp)
-    runPlanned(Stage::Integrate, [&] { integrate(h, forces); });
+    runStage(Stage::Integrate, [&] { integrate(h, forces); });
 
     // 3. Advance kinematic bodies along their prescribed motion (src/integrators/kinematic_motion.cpp)
-    runPlanned(Stage::MoveKinematics, [&] { moveKinematics(kinematics_, h); });
+    runStage(Stage::MoveKinematics, [&] { moveKinematics(kinematics_, h); });
 
     // 4. Which pairs might touch? (src/collision/broadphase.cpp → broadphase_*.cpp)
-    runPlanned(Stage::Broadphase, [&] { broadphase_.findPairs(settings_.broadphase, bodies(), pairs_); });
+    runStage(Stage::Broadphase, [&] { broadphase_.findPairs(settings_.broadphase, bodies(), pairs_); });
 
     // 5. Which of them do, where, and how deep? (src/collision/narrowphase.cpp → sphere_*.cpp)
-    runPlanned(Stage::Narrowphase, [&] { findContacts(bodies(), pairs_, contacts_); });
+    runStage(Stage::Narrowphase, [&] { findContacts(bodies(), pairs_, contacts_); });
 
     // 6. Impulses: bounce and friction change velocities (src/dynamics/impulse_resolver.cpp)
-    runPlanned(Stage::ResolveImpulses, [&] {
+    runStage(Stage::ResolveImpulses, [&] {
         impulses_.resize(contacts_.size());
         resolveImpulses(bodies(), contacts_, h, settings_.impulseIterations, settings_.warmStarting, contactWorkspace_,
                         impulses_);
@@ -165,7 +164,7 @@ void World::stepWithImpulses() {
 
     // 7. Push overlapping bodies apart (src/dynamics/impulse_resolver.cpp, correctPositions)
     const Real supportStep = positionShareOfVelocityChange(settings_.integrator) * h;
-    runPlanned(Stage::CorrectPositions, [&] { correctPositions(bodies(), contacts_, h, supportStep, contactWorkspace_); });
+    runStage(Stage::CorrectPositions, [&] { correctPositions(bodies(), contacts_, h, supportStep, contactWorkspace_); });
 }
 
 /// Sweep = |v|·h + ½|a|·h²: the distance free flight can carry a body in a
@@ -198,14 +197,14 @@ void World::stepWithSequentialImpulses() {
 
     // 1. Forces → accelerations (src/forces/apply_forces.cpp); again at every substep.
     //    How far each body can move this step sets how far ahead contacts are looked for.
-    runPlanned(Stage::ApplyForces, [&] {
+    runStage(Stage::ApplyForces, [&] {
         forces(dynamics_);
         measureSweeps(h);
     });
 
     // 2. Which pairs might touch? Sleepers against static objects cannot, jointed bodies do not.
     //    (src/collision/broadphase.cpp → broadphase_*.cpp, src/dynamics/islands.cpp, src/dynamics/joints/joint.cpp)
-    runPlanned(Stage::Broadphase, [&] {
+    runStage(Stage::Broadphase, [&] {
         broadphase_.findPairs(settings_.broadphase, bodies(), pairs_);
         dropSleepingPairs(bodies(), pairs_);
         // What a joint holds does not collide (joint.hpp)
@@ -213,11 +212,11 @@ void World::stepWithSequentialImpulses() {
     });
 
     // 3. Which of them touch, or are about to (src/collision/narrowphase.cpp → *_*.cpp)
-    runPlanned(Stage::Narrowphase, [&] { findContacts(bodies(), pairs_, contacts_); });
+    runStage(Stage::Narrowphase, [&] { findContacts(bodies(), pairs_, contacts_); });
 
     // 4. Contacts and joints → constraints; an awake body wakes the islands it touches
     //    (src/dynamics/contact_solver.cpp, src/dynamics/joints/joint.cpp, src/dynamics/islands.cpp)
-    runPlanned(Stage::PrepareConstraints, [&] {
+    runStage(Stage::PrepareConstraints, [&] {
         wakeTouchedIslands(bodies(), contacts_, links_);
         prepareContacts(bodies(), contacts_, h, settings_.warmStarting, solverWorkspace_);
         if (plan_.jointSolver.runs) prepareJoints(bodies(), joints_, settings_.warmStarting, jointWorkspace_);
@@ -225,17 +224,17 @@ void World::stepWithSequentialImpulses() {
 
     for (int substep = 0; substep < settings_.substeps; ++substep) {
         // 5. Free flight for h_s (src/integrators/*.cpp, kinematic_motion.cpp)
-        if (substep > 0) runPlanned(Stage::ApplyForces, [&] { forces(dynamics_); });
-        runPlanned(Stage::Integrate, [&] {
+        if (substep > 0) runStage(Stage::ApplyForces, [&] { forces(dynamics_); });
+        runStage(Stage::Integrate, [&] {
             // The solve measures separations from here (nothing to measure when it is skipped)
             if (plan_.runs(Stage::SolveConstraints)) recordPoses(bodies(), solverWorkspace_);
             integrate(hs, forces);
         });
-        runPlanned(Stage::MoveKinematics, [&] { moveKinematics(kinematics_, hs); });
+        runStage(Stage::MoveKinematics, [&] { moveKinematics(kinematics_, hs); });
 
         // 6. Warm start, soft solve (joints first, then contacts), and move by what the solve changed
         //    (src/dynamics/joints/*.cpp, src/dynamics/contact_solver.cpp, src/integrators/velocity_change_drift.cpp)
-        runPlanned(Stage::SolveConstraints, [&] {
+        runStage(Stage::SolveConstraints, [&] {
             recordVelocities(dynamics_, solverWorkspace_.velocityBefore, solverWorkspace_.angularVelocityBefore);
             if (plan_.jointSolver.runs) warmStartJoints(jointWorkspace_, solverWorkspace_.dynamicPoses);
             warmStartContacts(solverWorkspace_, settings_.accumulateImpulses);
@@ -250,7 +249,7 @@ void World::stepWithSequentialImpulses() {
         });
 
         // 7. Relax: the same passes without the push-out bias, so the push-out leaves no speed behind
-        runPlanned(Stage::RelaxConstraints, [&] {
+        runStage(Stage::RelaxConstraints, [&] {
             recordPoses(bodies(), solverWorkspace_);  // where the drift left them
             for (int pass = 0; pass < settings_.relaxIterations; ++pass) {
                 if (plan_.jointSolver.runs) {
@@ -263,7 +262,7 @@ void World::stepWithSequentialImpulses() {
 
     // 8. Bounces, once per step, from the approach speed at touch (src/dynamics/contact_solver.cpp);
     //    joints that pulled harder than their MaxForce break (src/dynamics/joints/joint.cpp)
-    runPlanned(Stage::Restitution, [&] {
+    runStage(Stage::Restitution, [&] {
         applyRestitution(solverWorkspace_);
         impulses_.resize(contacts_.size());
         storeContactImpulses(contacts_, solverWorkspace_, impulses_);
@@ -272,17 +271,13 @@ void World::stepWithSequentialImpulses() {
 
     // 9. Islands at rest fall asleep (src/dynamics/islands.cpp)
     if (settings_.sleeping) {
-        runPlanned(Stage::Sleep, [&] { updateSleep(bodies(), contacts_, links_, settings_, islandWorkspace_); });
+        runStage(Stage::Sleep, [&] { updateSleep(bodies(), contacts_, links_, settings_, islandWorkspace_); });
     }
 }
 
 template <class StageBody>
-void World::runPlanned(Stage stage, StageBody&& body) {
-    if (plan_.runs(stage)) runStage(stage, std::forward<StageBody>(body));
-}
-
-template <class StageBody>
 void World::runStage(Stage stage, StageBody&& body) {
+    if (!plan_.runs(stage)) return;  // the step plan skips what this scene cannot need (step_plan.hpp)
     using Clock = std::chrono::steady_clock;
     const auto start = Clock::now();
     body();

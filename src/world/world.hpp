@@ -85,12 +85,9 @@ public:
     std::optional<RayHit> raycast(const Vec3& origin, const Vec3& direction, Real maxDistance) const;
 
 private:
-    /// Runs one stage: times it, records it, then checks the state it left.
+    /// Runs one stage, unless the step plan skips it: times it, records it, then checks the state it left.
     template <class StageBody>
     void runStage(Stage stage, StageBody&& body);
-    /// Runs the stage only when the step plan says it runs (runStage() otherwise).
-    template <class StageBody>
-    void runPlanned(Stage stage, StageBody&& body);
     void replan();
     bool idle() const;
     void checkFinite(Stage stage) const;
