@@ -10,13 +10,17 @@
 #include <cstdlib>
 #include <new>
 
+#include "allocation_counter.hpp"
 #include "collision/broadphase.hpp"
 #include "test_support.hpp"
 
-namespace {
+// The one replacement of operator new in the test program; tests/allocation_counter.hpp shares its counters.
+namespace stepwise::test {
 std::atomic<bool> gCounting{false};
 std::atomic<std::size_t> gAllocations{0};
-}  // namespace
+}  // namespace stepwise::test
+using stepwise::test::gAllocations;
+using stepwise::test::gCounting;
 
 void* operator new(std::size_t size) {
     if (gCounting.load(std::memory_order_relaxed)) gAllocations.fetch_add(1, std::memory_order_relaxed);

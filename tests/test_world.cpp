@@ -19,6 +19,7 @@ TEST_CASE("Every stage runs once per step and the clock advances by h", "[world]
     for (SolverKind solver : {SolverKind::Impulse, SolverKind::SequentialImpulse}) {
         Scene scene = test::emptyScene();
         scene.settings.solver = solver;
+        scene.settings.stepPlan = false;  // the pipeline itself: with the plan, move-kinematics (no kinematics) is skipped
         scene.dynamics.push_back(test::sphere("ball", Vec3(0, 2, 0)));
         scene.planes.push_back(test::ground());
         World world(scene);

@@ -34,6 +34,7 @@ struct RunOptions {
     std::optional<std::uint64_t> steps;   ///< --steps N: number of steps (alternative to --duration).
     std::optional<std::string> csvPath;   ///< --csv PATH: write the trajectory here.
     std::uint64_t every = 1;              ///< --every K: write a CSV sample every K steps.
+    bool explain = false;                 ///< --explain: print the step plan first (with --steps 0, only that).
 };
 
 /// @brief Parses the arguments after `run`. @throws UsageError.

@@ -232,6 +232,11 @@ int runCommand(const RunOptions& options) {
     const std::vector<Expectation> expectations = scene->expectations;
 
     World world(std::move(*scene));
+    if (options.explain) {
+        std::printf("\n%s", describeStepPlan(world.plan()).c_str());
+        if (options.steps == std::uint64_t(0)) return kExitOk;  // --steps 0: the plan is all that was asked
+        std::printf("\n");
+    }
     // Observes between steps only: the trajectory is the same with or without Expect records.
     ExpectationMonitor monitor(world, expectations);
     monitor.observe(world);

@@ -13,7 +13,7 @@ const char* usageText() {
     return "Stepwise - a rigid-body physics engine for teaching\n"
            "\n"
            "Usage:\n"
-           "  stepwise run [FILE] [--duration S | --steps N] [--csv PATH] [--every K]\n"
+           "  stepwise run [FILE] [--duration S | --steps N] [--csv PATH] [--every K] [--explain]\n"
            "      Simulate the scene in FILE (the default scene when omitted) and print a\n"
            "      summary: objects, final state, energy, momentum, time per stage.\n"
            "      --duration S  simulated seconds (default: the scene's World Duration)\n"
@@ -22,6 +22,8 @@ const char* usageText() {
            "                    qw,qx,qy,qz,wx,wy,wz, one row per object per sample,\n"
            "                    starting with the initial state at time 0\n"
            "      --every K     write a CSV sample every K steps (default 1)\n"
+           "      --explain     print the step plan first: each stage, whether it runs\n"
+           "                    and why (with --steps 0, only the plan)\n"
            "  stepwise view [FILE] [--size WxH] [--log-events PATH]\n"
            "      Open a window onto the scene (H in the window lists the controls);\n"
            "      --log-events writes a line per mouse pick, push and release to PATH.\n"
@@ -175,7 +177,10 @@ RunOptions parseRunOptions(const std::vector<std::string>& args, const std::stri
         if (arg == "--duration") {
             options.duration = parsePositiveSeconds(arg, value());
         } else if (arg == "--steps") {
-            options.steps = parsePositiveCount(arg, value());
+            const std::string& text = value();
+            options.steps = text == "0" ? 0 : parsePositiveCount(arg, text);  // 0: with --explain, only the plan
+        } else if (arg == "--explain") {
+            options.explain = true;
         } else if (arg == "--csv") {
             options.csvPath = value();
         } else if (arg == "--every") {
@@ -190,6 +195,9 @@ RunOptions parseRunOptions(const std::vector<std::string>& args, const std::stri
         }
     }
     if (options.duration && options.steps) throw UsageError("give --duration or --steps, not both");
+    if (options.steps == std::uint64_t(0) && !options.explain) {
+        throw UsageError("--steps expects a whole number > 0, found '0' (--steps 0 goes with --explain)");
+    }
     if (!sceneGiven) options.scenePath = defaultScene;
     return options;
 }

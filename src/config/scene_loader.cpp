@@ -321,6 +321,7 @@ private:
         settings.sleepLinearSpeed = values.number("SleepLinearSpeed", defaults.sleepLinearSpeed);
         settings.sleepAngularSpeed = values.number("SleepAngularSpeed", defaults.sleepAngularSpeed);
         settings.timeToSleep = values.number("TimeToSleep", defaults.timeToSleep);
+        settings.stepPlan = values.choice<bool>("StepPlan", kBooleanChoices, defaults.stepPlan);
     }
 
     /// An Expect record (src/world/expectations.hpp): exactly one quantity,

@@ -116,6 +116,7 @@ constexpr FieldSpec kWorldFields[] = {
     {"SleepAngularSpeed",   FieldKind::Number,  kNamedOnly, Range::NonNegative},      // rad/s
     {"TimeToSleep",         FieldKind::Number,  kNamedOnly, Range::Positive, kTimeHint}, // s
     {"Broadphase",          FieldKind::Broadphase, kNamedOnly, Range::Any},       // docs/broadphase.md
+    {"StepPlan",            FieldKind::Boolean, kNamedOnly, Range::Any},          // src/world/step_plan.hpp
 };
 
 /// Expect: one checked outcome (src/world/expectations.hpp), named fields only.

@@ -51,6 +51,7 @@ void integrateExplicitEuler(std::span<DynamicObject> bodies, Real h) {
         // this line must come before the velocity update.
         body.position += h * body.velocity;
         body.velocity += h * body.acceleration;
+        if (skipsRotation(body)) continue;  // a still sphere: the update below would change nothing
 
         // Rotation, the same way round: turn by ω_n = I_world(q_n)⁻¹·L_n, computed
         // from the *old* orientation and momentum, then update L with τ_n.

@@ -63,6 +63,23 @@
 
 namespace stepwise {
 
+/// @brief Does @p body skip its angular update this step? Only when the step
+/// plan says nothing can turn it (DynamicObject::canTurn is false, src/world/step_plan.hpp),
+/// and it is a sphere whose L, ω and τ are exactly zero.
+///
+/// For a sphere the three moments are equal, so the full update with L = 0
+/// and τ = 0 turns the orientation by a zero angle (rotateByAngularVelocity()
+/// returns it unchanged), keeps L + h·0 = L and sets ω = I_world⁻¹·0 = 0:
+/// skipping it leaves the same state, without turning the inertia tensor
+/// into the world frame (a 3×3 rotation and two products) or the free-body
+/// rotation. The test is exact and made per body, so a body that something
+/// did push off its centre (the viewer's mouse, the rounding of a lever arm)
+/// still gets the full update.
+inline bool skipsRotation(const DynamicObject& body) {
+    return !body.canTurn && body.shape == Shape::Sphere && body.angularMomentum == Vec3(0) &&
+           body.angularVelocity == Vec3(0) && body.torque == Vec3(0);
+}
+
 /// @brief Explicit (forward) Euler: x ← x + h·v, v ← v + h·a, q ← turn(ω·h), L ← L + h·τ, all from the old state.
 void integrateExplicitEuler(std::span<DynamicObject> bodies, Real h);
 

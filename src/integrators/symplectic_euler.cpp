@@ -39,6 +39,7 @@ void integrateSymplecticEuler(std::span<DynamicObject> bodies, Real h) {
         if (body.asleep) continue;  // a sleeping body keeps its state until its island wakes
         body.velocity += h * body.acceleration;
         body.position += h * body.velocity;  // the new velocity: that is the whole difference
+        if (skipsRotation(body)) continue;   // a still sphere: the update below would change nothing
 
         body.angularMomentum += h * body.torque;  // kick: L_{n+1} = L_n + h·τ_n
         // Drift: the torque-free motion with the new L (normalised inside).

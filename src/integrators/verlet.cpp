@@ -43,6 +43,7 @@ void integrateVerlet(std::span<DynamicObject> bodies, Real h, const Acceleration
         body.position += h * body.velocity + halfHSquared * body.acceleration;
         // Half the velocity update now, with a_n; the other half needs a_{n+1}.
         body.velocity += Real(0.5) * h * body.acceleration;
+        if (skipsRotation(body)) continue;  // a still sphere: the update below would change nothing
 
         body.angularMomentum += Real(0.5) * h * body.torque;  // half kick with τ_n
         body.orientation = rotateTorqueFree(body.orientation, body.angularMomentum, body.inverseInertiaBody, h);
@@ -52,6 +53,7 @@ void integrateVerlet(std::span<DynamicObject> bodies, Real h, const Acceleration
     for (DynamicObject& body : bodies) {
         if (body.asleep) continue;  // a sleeping body keeps its state until its island wakes
         body.velocity += Real(0.5) * h * body.acceleration;
+        if (skipsRotation(body)) continue;  // τ_{n+1} = 0 and L = 0: nothing to kick
         body.angularMomentum += Real(0.5) * h * body.torque;  // the other half kick, with τ_{n+1}
         updateAngularVelocity(body);
     }

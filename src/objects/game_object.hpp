@@ -80,6 +80,10 @@ public:
     Vec3 inverseInertiaBody{1, 1, 1};///< Their reciprocals, 1/(kg·m²).
     Vec3 angularMomentum{0, 0, 0};   ///< L = I_world·ω about the centre of mass, world frame, kg·m²/s: the rotational state.
     Vec3 torque{0, 0, 0};            ///< Total torque about the centre of mass this step, world frame, N·m.
+    /// false when the World's step plan found that nothing in the scene can
+    /// turn this body (src/world/step_plan.hpp): the integrators then skip its
+    /// angular update while its L and τ are exactly zero (skipsRotation()).
+    bool canTurn = true;
 
     /// @brief Sets `mass` and keeps `inverseMass` consistent with it.
     /// @param kilograms mass in kg; the scene loader has checked it is > 0.

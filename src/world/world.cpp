@@ -70,6 +70,26 @@ World::World(Scene scene)
     }
     joints_ = makeJoints(scene.joints, dynamics_, settings_.solver);  // src/dynamics/joints/joint.cpp
     jointLinks(joints_, links_);
+    replan();
+}
+
+/// The step plan from what the World holds now (src/world/step_plan.cpp); it allocates nothing.
+void World::replan() {
+    plan_ = makeStepPlan({settings_, dynamics_, kinematics_, planes_, springs_, joints_});
+    for (DynamicObject& body : dynamics_) body.canTurn = plan_.rotation.runs;  // read by the integrators
+    planStale_ = false;
+}
+
+/// Nothing can change this step: no dynamic body is awake (a sleeper is only
+/// woken by an awake body or a moving kinematic one) and no kinematic body moves.
+bool World::idle() const {
+    for (const DynamicObject& body : dynamics_) {
+        if (!body.asleep) return false;
+    }
+    for (const KinematicsObject& body : kinematics_) {
+        if (body.velocity != Vec3(0) || body.angularVelocity != Vec3(0)) return false;
+    }
+    return true;
 }
 
 const DynamicObject* World::findDynamic(std::string_view name) const {
@@ -85,6 +105,17 @@ void World::step() {
     for (StageRecord& record : stageRecords_) {
         record.ranLastStep = false;
         record.lastSeconds = 0;
+    }
+    if (planStale_) replan();  // a body was handed out for writing since the last step
+    // The step plan's early-out (step_plan.hpp): with nothing awake and nothing moving, time alone advances.
+    if (plan_.idleSkip.runs && idle()) {
+        // What the skipped stages would have found: every pair is dropped (dropSleepingPairs), so nothing touches.
+        pairs_.clear();
+        contacts_.clear();
+        impulses_.clear();
+        time_ += settings_.timeStep;
+        ++stepCount_;
+        return;
     }
     switch (settings_.solver) {
         case SolverKind::Impulse: stepWithImpulses(); break;
@@ -177,7 +208,8 @@ void World::stepWithSequentialImpulses() {
     runStage(Stage::Broadphase, [&] {
         broadphase_.findPairs(settings_.broadphase, bodies(), pairs_);
         dropSleepingPairs(bodies(), pairs_);
-        dropJointedPairs(joints_, jointWorkspace_, pairs_);  // what a joint holds does not collide (joint.hpp)
+        // What a joint holds does not collide (joint.hpp)
+        if (plan_.jointSolver.runs) dropJointedPairs(joints_, jointWorkspace_, pairs_);
     });
 
     // 3. Which of them touch, or are about to (src/collision/narrowphase.cpp → *_*.cpp)
@@ -188,7 +220,7 @@ void World::stepWithSequentialImpulses() {
     runStage(Stage::PrepareConstraints, [&] {
         wakeTouchedIslands(bodies(), contacts_, links_);
         prepareContacts(bodies(), contacts_, h, settings_.warmStarting, solverWorkspace_);
-        prepareJoints(bodies(), joints_, settings_.warmStarting, jointWorkspace_);
+        if (plan_.jointSolver.runs) prepareJoints(bodies(), joints_, settings_.warmStarting, jointWorkspace_);
     });
 
     for (int substep = 0; substep < settings_.substeps; ++substep) {
@@ -196,7 +228,8 @@ void World::stepWithSequentialImpulses() {
         // 5. Free flight for h_s (src/integrators/*.cpp, kinematic_motion.cpp)
         if (substep > 0) runStage(Stage::ApplyForces, [&] { forces(dynamics_); });
         runStage(Stage::Integrate, [&] {
-            recordPoses(bodies(), solverWorkspace_);  // the solve measures separations from here
+            // The solve measures separations from here (nothing to measure when it is skipped)
+            if (plan_.runs(Stage::SolveConstraints)) recordPoses(bodies(), solverWorkspace_);
             integrate(hs, forces);
         });
         runStage(Stage::MoveKinematics, [&] { moveKinematics(kinematics_, hs); });
@@ -205,10 +238,12 @@ void World::stepWithSequentialImpulses() {
         //    (src/dynamics/joints/*.cpp, src/dynamics/contact_solver.cpp, src/integrators/velocity_change_drift.cpp)
         runStage(Stage::SolveConstraints, [&] {
             recordVelocities(dynamics_, solverWorkspace_.velocityBefore, solverWorkspace_.angularVelocityBefore);
-            warmStartJoints(jointWorkspace_, solverWorkspace_.dynamicPoses);
+            if (plan_.jointSolver.runs) warmStartJoints(jointWorkspace_, solverWorkspace_.dynamicPoses);
             warmStartContacts(solverWorkspace_, settings_.accumulateImpulses);
             for (int pass = 0; pass < settings_.velocityIterations; ++pass) {
-                solveJoints(jointWorkspace_, solverWorkspace_.dynamicPoses, jointSettings, true);
+                if (plan_.jointSolver.runs) {
+                    solveJoints(jointWorkspace_, solverWorkspace_.dynamicPoses, jointSettings, true);
+                }
                 solveContacts(solverWorkspace_, contactSettings, true);
             }
             driftByVelocityChange(dynamics_, solverWorkspace_.velocityBefore, solverWorkspace_.angularVelocityBefore, hs,
@@ -219,7 +254,9 @@ void World::stepWithSequentialImpulses() {
         runStage(Stage::RelaxConstraints, [&] {
             recordPoses(bodies(), solverWorkspace_);  // where the drift left them
             for (int pass = 0; pass < settings_.relaxIterations; ++pass) {
-                solveJoints(jointWorkspace_, solverWorkspace_.dynamicPoses, jointSettings, false);
+                if (plan_.jointSolver.runs) {
+                    solveJoints(jointWorkspace_, solverWorkspace_.dynamicPoses, jointSettings, false);
+                }
                 solveContacts(solverWorkspace_, contactSettings, false);
             }
         });
@@ -233,7 +270,7 @@ void World::stepWithSequentialImpulses() {
         applyRestitution(solverWorkspace_);
         impulses_.resize(contacts_.size());
         storeContactImpulses(contacts_, solverWorkspace_, impulses_);
-        finishJoints(jointWorkspace_, joints_, hs, stepCount_ + 1, time_ + h, links_);
+        if (plan_.jointSolver.runs) finishJoints(jointWorkspace_, joints_, hs, stepCount_ + 1, time_ + h, links_);
     });
 
     // 9. Islands at rest fall asleep (src/dynamics/islands.cpp)
@@ -244,6 +281,7 @@ void World::stepWithSequentialImpulses() {
 
 template <class StageBody>
 void World::runStage(Stage stage, StageBody&& body) {
+    if (!plan_.runs(stage)) return;  // the step plan skips what this scene cannot need (step_plan.hpp)
     using Clock = std::chrono::steady_clock;
     StageEvent event;
     if (observer_) {

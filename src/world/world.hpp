@@ -19,6 +19,7 @@
 #include "world/scene.hpp"
 #include "world/stages.hpp"
 #include "world/step_observer.hpp"
+#include "world/step_plan.hpp"
 #include "world/world_settings.hpp"
 
 namespace stepwise {
@@ -46,9 +47,17 @@ public:
     Real time() const { return time_; }                           ///< Simulated time, s.
     std::uint64_t stepCount() const { return stepCount_; }        ///< Steps taken so far.
 
-    std::vector<DynamicObject>& dynamics() { return dynamics_; }              ///< Simulated bodies.
+    /// @brief Simulated bodies, to change: the step plan is rebuilt before the next step.
+    std::vector<DynamicObject>& dynamics() {
+        planStale_ = true;
+        return dynamics_;
+    }
     const std::vector<DynamicObject>& dynamics() const { return dynamics_; }  ///< Simulated bodies.
-    std::vector<KinematicsObject>& kinematics() { return kinematics_; }       ///< Prescribed-motion bodies.
+    /// @brief Prescribed-motion bodies, to change: the step plan is rebuilt before the next step.
+    std::vector<KinematicsObject>& kinematics() {
+        planStale_ = true;
+        return kinematics_;
+    }
     const std::vector<KinematicsObject>& kinematics() const { return kinematics_; }  ///< Prescribed-motion bodies.
     const std::vector<CollisionPlane>& planes() const { return planes_; }     ///< Infinite planes.
     const std::vector<Spring>& springs() const { return springs_; }           ///< Springs (src/forces/spring.hpp).
@@ -66,6 +75,9 @@ public:
     /// @brief The sequential-impulse solver's constraints of the last step (effective masses, accumulated impulses).
     const std::vector<SolverContact>& solverContacts() const { return solverWorkspace_.contacts; }
     const Broadphase& broadphase() const { return broadphase_; }  ///< Stage 4's state: which kind ran, Auto's reason.
+    /// @brief What each step runs and why (src/world/step_plan.hpp), as of the last step
+    /// (or construction); `stepwise run --explain` prints it.
+    const StepPlan& plan() const { return plan_; }
 
     /// @brief The first body the ray from @p origin along @p direction meets within @p maxDistance
     /// (src/world/world_raycast.cpp); nothing when it meets none.
@@ -81,9 +93,11 @@ public:
     void setObserver(StepObserver* observer) { observer_ = observer; }
 
 private:
-    /// Runs one stage: times it, records it, then checks the state it left.
+    /// Runs one stage, unless the step plan skips it: times it, records it, then checks the state it left.
     template <class StageBody>
     void runStage(Stage stage, StageBody&& body);
+    void replan();
+    bool idle() const;
     void checkFinite(Stage stage) const;
     void stepWithImpulses();
     void measureSweeps(Real h);
@@ -109,6 +123,8 @@ private:
     JointWorkspace jointWorkspace_;
     std::vector<BodyLink> links_;  ///< Bodies held together by joints (for islands).
 
+    StepPlan plan_;
+    bool planStale_ = false;  ///< A body may have changed through dynamics() or kinematics(): replan before stepping.
     StageRecords stageRecords_{};
     StepObserver* observer_ = nullptr;
     int substep_ = -1;  ///< Substep being run, −1 outside the substep loop (for StageEvent).

@@ -106,6 +106,7 @@ struct WorldSettings {
     Real sleepAngularSpeed = kDefaultSleepAngularSpeed; ///< Still below this angular speed, rad/s.
     Real timeToSleep = kDefaultTimeToSleep;            ///< Still for this long → asleep, s.
     BroadphaseKind broadphase = BroadphaseKind::Auto;  ///< Which broadphase finds the candidate pairs.
+    bool stepPlan = true;                              ///< Skip the stages the scene cannot need (src/world/step_plan.hpp).
 };
 
 /// @brief The step the integrator takes, s: TimeStep, or TimeStep/Substeps under

@@ -1,0 +1,228 @@
+/// @file step_plan.cpp
+/// @brief The rules of the step plan (step_plan.hpp): one small function per decision.
+#include "world/step_plan.hpp"
+
+#include "collision/broadphase.hpp"
+
+namespace stepwise {
+
+namespace {
+
+/// A decision that runs, with its reason.
+constexpr PlanDecision run(const char* reason) { return {true, reason}; }
+/// A decision that is skipped, with its reason.
+constexpr PlanDecision skip(const char* reason) { return {false, reason}; }
+
+/// Two objects, one of them dynamic: the least a contact needs.
+PlanDecision collisionsOf(const PlanInputs& in) {
+    if (in.dynamics.empty()) return skip("skipped: no dynamic body, and nothing else moves under a contact");
+    if (in.dynamics.size() + in.kinematics.size() + in.planes.size() < 2) {
+        return skip("skipped: a single body and nothing to hit, so no pair can touch");
+    }
+    return run("runs: at least one dynamic body and something it can hit");
+}
+
+/// Box–box needs a dynamic box and a second box (dynamic or kinematic).
+PlanDecision boxBoxOf(const PlanInputs& in, bool clipping) {
+    std::size_t dynamicBoxes = 0;
+    for (const DynamicObject& body : in.dynamics) dynamicBoxes += body.shape == Shape::Box ? 1 : 0;
+    std::size_t kinematicBoxes = 0;
+    for (const KinematicsObject& body : in.kinematics) kinematicBoxes += body.shape == Shape::Box ? 1 : 0;
+    if (dynamicBoxes == 0 && kinematicBoxes == 0) {
+        return clipping ? skip("skipped: only spheres (and planes), whose contacts are single points: nothing to clip")
+                        : skip("skipped: no boxes in the scene, so no SAT");
+    }
+    if (dynamicBoxes == 0 || dynamicBoxes + kinematicBoxes < 2) {
+        return clipping ? skip("skipped: no two boxes can meet, so no face is clipped against another")
+                        : skip("skipped: no two boxes can meet (box-box needs a dynamic box and a second box)");
+    }
+    return clipping ? run("runs: touching boxes clip a face against the other box to find up to 8 points")
+                    : run("runs: two boxes can meet, and the narrowphase tests their 15 axes");
+}
+
+/// Can μ = μ_A·μ_B be non-zero for some pair that can touch?
+bool anyFriction(const PlanInputs& in) {
+    std::size_t rough = 0;  // dynamic bodies with μ ≠ 0
+    for (const DynamicObject& body : in.dynamics) rough += body.friction != 0 ? 1 : 0;
+    if (rough == 0) return false;
+    if (rough >= 2) return true;  // two rough dynamic bodies can touch each other
+    for (const KinematicsObject& body : in.kinematics) {
+        if (body.friction != 0) return true;
+    }
+    for (const CollisionPlane& plane : in.planes) {
+        if (plane.friction != 0) return true;
+    }
+    return false;  // the one rough body meets only frictionless things: every product is 0
+}
+
+/// Rotation is impossible when every force on every body acts through its centre.
+PlanDecision rotationOf(const PlanInputs& in) {
+    for (const DynamicObject& body : in.dynamics) {
+        if (body.shape == Shape::Box) return run("runs: boxes turn when a contact pushes a corner");
+    }
+    for (const DynamicObject& body : in.dynamics) {
+        if (body.angularVelocity != Vec3(0)) return run("runs: a sphere starts spinning (AngularVelocity is set)");
+    }
+    if (!in.joints.empty()) return run("runs: joints pull at anchors away from the centres");
+    for (const Spring& spring : in.springs) {
+        const bool offCentreB = spring.bodyB != kFixedInWorld && spring.anchorB != Vec3(0);
+        if (spring.anchorA != Vec3(0) || offCentreB) return run("runs: a spring is hooked off a body's centre");
+    }
+    if (anyFriction(in)) return run("runs: friction at a sphere's surface makes it roll");
+    if (in.dynamics.empty()) return skip("skipped: no dynamic body");
+    return skip("skipped: only spheres, no spin, no friction, no torque: still spheres skip the angular update");
+}
+
+PlanDecision jointSolverOf(const PlanInputs& in) {
+    if (in.settings.solver == SolverKind::Impulse) return skip("skipped: the Impulse solver has no joints");
+    if (in.joints.empty()) return skip("skipped: no joints in the scene");
+    return run("runs: the scene has joints");
+}
+
+PlanDecision idleSkipOf(const PlanInputs& in) {
+    if (in.settings.solver == SolverKind::Impulse) {
+        return run("on, rarely: the Impulse solver lets no body sleep, so only a world without an awake body is idle");
+    }
+    if (!in.settings.sleeping) return skip("off: Sleep=false, so bodies never fall asleep and every step is solved");
+    return run("on: a step with no dynamic body awake and no kinematic body moving returns at once");
+}
+
+static_assert(kAutoBruteForceBelow == 64, "the reason below quotes kAutoBruteForceBelow: update it");
+
+PlanDecision broadphaseOf(const PlanInputs& in) {
+    if (in.settings.broadphase != BroadphaseKind::Auto) return run("set by the scene (every broadphase finds the same pairs)");
+    if (in.dynamics.size() < kAutoBruteForceBelow) {
+        return run("Auto takes brute force, every pair, for fewer than 64 dynamic bodies");
+    }
+    return run("Auto chooses on the first step from sizes and speeds (stepwise run prints why)");
+}
+
+bool anyKinematicMoves(const PlanInputs& in) {
+    for (const KinematicsObject& body : in.kinematics) {
+        if (body.velocity != Vec3(0) || body.angularVelocity != Vec3(0)) return true;
+    }
+    return false;
+}
+
+/// "not in this pipeline": the stages of the other solver.
+constexpr const char* kOtherImpulse = "not in the SequentialImpulse pipeline (Solver=Impulse has it)";
+constexpr const char* kOtherSequential = "not in the Impulse pipeline (Solver=SequentialImpulse has it)";
+
+void planStages(const PlanInputs& in, StepPlan& plan) {
+    const bool sequential = in.settings.solver == SolverKind::SequentialImpulse;
+    auto set = [&](Stage stage, PlanDecision decision) { plan.stages[static_cast<std::size_t>(stage)] = decision; };
+
+    for (Stage stage : {Stage::ResolveImpulses, Stage::CorrectPositions}) {
+        if (sequential) set(stage, skip(kOtherImpulse));
+    }
+    for (Stage stage : {Stage::PrepareConstraints, Stage::SolveConstraints, Stage::RelaxConstraints,
+                        Stage::Restitution, Stage::Sleep}) {
+        if (!sequential) set(stage, skip(kOtherSequential));
+    }
+    if (sequential && !in.settings.sleeping) set(Stage::Sleep, skip("skipped: Sleep=false in the World record"));
+    if (!plan.enabled) return;  // StepPlan=Off: every stage of the pipeline runs
+
+    if (in.dynamics.empty()) {
+        set(Stage::ApplyForces, skip("skipped: no dynamic body to push"));
+        set(Stage::Integrate, skip("skipped: no dynamic body to move"));
+        if (sequential && in.settings.sleeping) set(Stage::Sleep, skip("skipped: no dynamic body to fall asleep"));
+    }
+    if (!anyKinematicMoves(in)) {
+        set(Stage::MoveKinematics, in.kinematics.empty()
+                                       ? skip("skipped: no kinematic bodies")
+                                       : skip("skipped: every kinematic body has zero velocity and angular velocity"));
+    }
+    if (!plan.collisions.runs) {
+        set(Stage::Broadphase, plan.collisions);
+        set(Stage::Narrowphase, plan.collisions);
+        if (!sequential) {
+            set(Stage::ResolveImpulses, skip("skipped: no contact can occur"));
+            set(Stage::CorrectPositions, skip("skipped: no contact can occur"));
+        }
+    }
+    if (sequential && !plan.collisions.runs && !plan.jointSolver.runs) {
+        for (Stage stage : {Stage::PrepareConstraints, Stage::SolveConstraints, Stage::RelaxConstraints,
+                            Stage::Restitution}) {
+            set(stage, skip("skipped: no contact can occur and there are no joints: nothing to solve"));
+        }
+    }
+}
+
+/// Why a stage runs, when no rule skipped it.
+const char* runReason(Stage stage, bool enabled) {
+    if (!enabled) return "runs: StepPlan=Off runs every stage of the pipeline";
+    switch (stage) {
+        case Stage::ApplyForces: return "runs: gravity, springs and attractors set every body's acceleration";
+        case Stage::Integrate: return "runs: dynamic bodies move";
+        case Stage::MoveKinematics: return "runs: a kinematic body moves";
+        case Stage::Broadphase: return "runs: objects can touch";
+        case Stage::Narrowphase: return "runs: candidate pairs need an exact test";
+        case Stage::ResolveImpulses: return "runs: contacts need impulses";
+        case Stage::CorrectPositions: return "runs: overlapping bodies are pushed apart";
+        case Stage::PrepareConstraints: return "runs: contacts or joints become constraints";
+        case Stage::SolveConstraints: return "runs: every substep solves the constraints";
+        case Stage::RelaxConstraints: return "runs: every substep relaxes the push-out";
+        case Stage::Restitution: return "runs: bounces, and joints that break";
+        case Stage::Sleep: return "runs: islands at rest fall asleep";
+        case Stage::Count: break;
+    }
+    return "runs";
+}
+
+}  // namespace
+
+StepPlan makeStepPlan(const PlanInputs& in) {
+    StepPlan plan;
+    plan.enabled = in.settings.stepPlan;
+    plan.broadphase = in.settings.broadphase;
+    plan.broadphaseChoice = broadphaseOf(in);
+    plan.jointSolver = jointSolverOf(in);
+    if (!plan.enabled) {
+        constexpr PlanDecision kOff = {true, "runs: StepPlan=Off"};
+        plan.collisions = kOff;
+        plan.boxBoxSat = boxBoxOf(in, false);  // what the narrowphase does, plan or not
+        plan.manifoldClipping = boxBoxOf(in, true);
+        plan.rotation = kOff;
+        if (in.settings.solver == SolverKind::SequentialImpulse) plan.jointSolver = kOff;
+        plan.idleSkip = skip("off: StepPlan=Off solves every step");
+    } else {
+        plan.collisions = collisionsOf(in);
+        plan.boxBoxSat = boxBoxOf(in, false);
+        plan.manifoldClipping = boxBoxOf(in, true);
+        plan.rotation = rotationOf(in);
+        plan.idleSkip = idleSkipOf(in);
+    }
+    for (std::size_t i = 0; i < kStageCount; ++i) plan.stages[i] = run(runReason(static_cast<Stage>(i), plan.enabled));
+    planStages(in, plan);
+    return plan;
+}
+
+std::string describeStepPlan(const StepPlan& plan) {
+    constexpr std::size_t kNameColumn = 22;  // wide enough for "prepare-constraints" and "box-box SAT"
+    std::string text = plan.enabled ? "Step plan (what each step runs, and why)\n"
+                                    : "Step plan: off (World, StepPlan=Off): every stage of the pipeline runs\n";
+    auto line = [&](const char* name, const PlanDecision& decision) {
+        const std::string label(name);
+        text += "  " + label + std::string(label.size() < kNameColumn ? kNameColumn - label.size() : 1, ' ');
+        text += decision.runs ? "yes  " : "no   ";
+        text += decision.reason;
+        text += '\n';
+    };
+    text += "Stages (src/world/stages.hpp):\n";
+    for (std::size_t i = 0; i < kStageCount; ++i) line(stageName(static_cast<Stage>(i)), plan.stages[i]);
+    text += "Inside the stages:\n";
+    line("collisions", plan.collisions);
+    line("box-box SAT", plan.boxBoxSat);
+    line("manifold clipping", plan.manifoldClipping);
+    line("rotation", plan.rotation);
+    line("joint solver", plan.jointSolver);
+    line("idle step skip", plan.idleSkip);
+    text += "  broadphase kind       ";
+    text += toString(plan.broadphase);
+    text += ": ";
+    text += plan.broadphaseChoice.reason;
+    text += '\n';
+    return text;
+}
+
+}  // namespace stepwise

@@ -1,0 +1,116 @@
+/// @file step_plan.hpp
+/// @brief The step plan: which stages and sub-steps a scene needs, decided once from what it holds.
+///
+/// A step runs the same fixed pipeline for every scene (src/world/world.cpp),
+/// but much of it has nothing to do in many scenes: a scene of spheres never
+/// needs the box–box separating-axis test, a lone planet with no floor never
+/// collides, a world where everything sleeps has nothing to integrate. Before
+/// the first step the World looks at its contents and writes down, stage by
+/// stage, whether each one runs and why, in a StepPlan; `stepwise run FILE
+/// --explain` prints it.
+///
+/// **Skipping never changes the result.** Each rule skips work only when the
+/// work provably leaves every body exactly as it was (a loop over an empty
+/// array, an impulse of zero, a rotation by zero), so the trajectory with the
+/// plan is bit for bit the one without it (`World, StepPlan=Off`; the test
+/// "[plan]" compares both on the scenes of config/). The rules are listed at
+/// makeStepPlan().
+#pragma once
+
+#include <array>
+#include <span>
+#include <string>
+
+#include "dynamics/joints/joint.hpp"
+#include "forces/spring.hpp"
+#include "objects/game_object.hpp"
+#include "world/stages.hpp"
+#include "world/world_settings.hpp"
+
+namespace stepwise {
+
+/// @brief One decision of the plan: does it run, and the one-line reason why (or why not).
+struct PlanDecision {
+    bool runs = true;        ///< true: the stage (or sub-step) runs every step.
+    const char* reason = ""; ///< One line for a person, e.g. "skipped: no boxes in the scene, so no SAT".
+};
+
+/// @brief What the World does in each step of this scene, and why (see makeStepPlan() for the rules).
+///
+/// The reasons are string literals, so building a plan allocates nothing:
+/// the World can rebuild it whenever a body may have been changed from
+/// outside (World::dynamics() gives write access) without breaking the rule
+/// that a step allocates no memory.
+struct StepPlan {
+    bool enabled = true;                          ///< false under `World, StepPlan=Off`: every stage of the pipeline runs.
+    std::array<PlanDecision, kStageCount> stages; ///< One per Stage, indexed by it.
+    PlanDecision collisions;       ///< Can any two objects touch at all (broadphase, narrowphase, contact solve)?
+    PlanDecision boxBoxSat;        ///< Will the narrowphase ever run the box–box separating-axis test?
+    PlanDecision manifoldClipping; ///< Will it clip a box face against another (the second half of box–box)?
+    PlanDecision rotation;         ///< Can any body start to turn? If not, still spheres skip the angular update.
+    PlanDecision jointSolver;      ///< Do the joint calls (prepare, warm start, solve, break) run?
+    PlanDecision idleSkip;         ///< Does a step with nothing awake and nothing moving return at once?
+    BroadphaseKind broadphase = BroadphaseKind::Auto; ///< The broadphase the scene asks for.
+    PlanDecision broadphaseChoice; ///< Which broadphase will run and why (Auto decides on the first step).
+
+    /// @brief The decision for @p stage.
+    const PlanDecision& stage(Stage stage) const { return stages[static_cast<std::size_t>(stage)]; }
+    /// @brief Does @p stage run in this scene?
+    bool runs(Stage stage) const { return this->stage(stage).runs; }
+};
+
+/// @brief What makeStepPlan() reads: the World's objects and settings.
+struct PlanInputs {
+    const WorldSettings& settings;                ///< The World record (solver, sleep, broadphase, StepPlan).
+    std::span<const DynamicObject> dynamics;      ///< Simulated bodies.
+    std::span<const KinematicsObject> kinematics; ///< Prescribed-motion bodies.
+    std::span<const CollisionPlane> planes;       ///< Infinite planes.
+    std::span<const Spring> springs;              ///< Springs (their anchors may apply torque).
+    std::span<const Joint> joints;                ///< Joints, broken ones included.
+};
+
+/// @brief Builds the plan: a pure function of the scene's contents, allocating nothing.
+///
+/// The rules, and why each cannot change the result:
+/// - **Collisions** need at least one dynamic body and some other object
+///   (dynamic, kinematic or plane). Without, the broadphase finds no pair,
+///   the narrowphase no contact, and every contact stage loops over nothing,
+///   so the broadphase, narrowphase and contact stages are skipped.
+/// - **Constraint stages** (sequential impulse: prepare, solve, relax,
+///   restitution) run when collisions are possible or there are joints.
+///   With neither, the solve changes no velocity, and driftByVelocityChange()
+///   leaves a body whose velocity did not change where the integrator put it.
+/// - **Box–box SAT and manifold clipping** need two boxes, one of them
+///   dynamic. The narrowphase picks the routine by the shape pair, so without
+///   two boxes it never reaches collideBoxBox(); the plan says so, it need not enforce it.
+/// - **Rotation** is impossible when every dynamic body is a sphere with no
+///   angular velocity, no contact has friction (μ = μ_A·μ_B = 0 for every
+///   pair that can touch), no spring is hooked off a body's centre and there
+///   are no joints: every force then acts through a sphere's centre, so
+///   L = 0 for ever. The integrators then skip a sphere's angular update
+///   (the inertia tensor turned into the world, the free-body rotation)
+///   whenever its L and τ are *exactly* zero, which is what the full update
+///   would leave untouched (a zero rotation returns the orientation as it
+///   is, and I⁻¹·0 = 0). Because that check is made per body, a push from
+///   outside (the viewer's mouse, which applies torque) or the rounding of
+///   a lever arm cannot be lost: such a body gets the full update.
+/// - **Joint solver**: with no joints, every joint call loops over nothing.
+/// - **Moving kinematic bodies**: a kinematic body with zero velocity and
+///   angular velocity moves by h·0 and turns by a zero rotation, so the stage is skipped.
+/// - **Idle steps** (`Sleep=true`): when no dynamic body is awake and no
+///   kinematic body moves, nothing can wake a sleeper (only an awake body or
+///   a moving kinematic body does), so the whole step is skipped; the clock
+///   still advances. Checked every step, since bodies wake and fall asleep.
+/// - **Broadphase**: `Auto` takes brute force below kAutoBruteForceBelow
+///   dynamic bodies (chooseBroadphase()); every broadphase returns the same
+///   pairs in the same order.
+///
+/// With `settings.stepPlan == false` every stage of the solver's pipeline
+/// runs and nothing is skipped, for comparison.
+StepPlan makeStepPlan(const PlanInputs& inputs);
+
+/// @brief The plan as text, one line per stage then one per sub-decision,
+/// each with its reason (what `stepwise run --explain` prints).
+std::string describeStepPlan(const StepPlan& plan);
+
+}  // namespace stepwise

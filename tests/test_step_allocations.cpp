@@ -1,0 +1,68 @@
+// No allocation in a running World: every global operator new is counted
+// during World::step() once a scene has warmed up (its arrays have grown to
+// their largest size). Tag: [allocations]. Not under AddressSanitizer, which
+// must keep its own operator new to track memory (allocation_counter.hpp).
+#include <catch2/catch.hpp>
+
+#if !defined(__SANITIZE_ADDRESS__)
+
+#include <string>
+
+#include "allocation_counter.hpp"
+#include "config/scene_loader.hpp"
+#include "test_support.hpp"
+
+using namespace stepwise;
+
+namespace {
+
+/// Steps run before counting: the arrays grow while contacts appear and the
+/// warm-start caches fill (two seconds at 60 steps per second).
+constexpr int kWarmUpSteps = 120;
+/// Steps counted.
+constexpr int kCountedSteps = 60;
+
+/// Allocations during kCountedSteps steps of @p scene after kWarmUpSteps, with @p stepPlan.
+std::size_t allocationsPerRun(Scene scene, bool stepPlan) {
+    scene.settings.stepPlan = stepPlan;
+    World world(std::move(scene));
+    // The first step does allocate (its arrays grow from empty): the counter must see that.
+    test::gAllocations = 0;
+    test::gCounting = true;
+    world.step();
+    test::gCounting = false;
+    if (world.contacts().size() + world.candidatePairs().size() > 0) CHECK(test::gAllocations > 0);
+    for (int i = 1; i < kWarmUpSteps; ++i) world.step();
+    test::gAllocations = 0;
+    for (int i = 0; i < kCountedSteps; ++i) {
+        test::gCounting = true;
+        world.step();
+        test::gCounting = false;
+    }
+    return test::gAllocations;
+}
+
+Scene configScene(const std::string& file) { return loadSceneFile(std::string(STEPWISE_SOURCE_DIR) + "/config/" + file); }
+
+}  // namespace
+
+TEST_CASE("World::step allocates nothing in steady state", "[allocations]") {
+    // Spheres and a paddle (sequential impulse); a box stack and a 20-box tower (sequential impulse);
+    // joints (pendulum, chain bridge); boxes and spheres on the Impulse solver.
+    const char* files[] = {"default.scene",        "lesson08_heavy_on_light.scene", "lesson08_tower.scene",
+                           "lesson08_pendulum.scene", "lesson08_bridge.scene",      "lesson08_hinge_motor.scene",
+                           "lesson03_collisions.scene", "lesson07_tipping.scene",   "lesson05_sat.scene"};
+    for (const char* file : files) {
+        for (const bool stepPlan : {true, false}) {
+            INFO(file << (stepPlan ? " with the plan" : " with StepPlan=Off"));
+            CHECK(allocationsPerRun(configScene(file), stepPlan) == 0);
+        }
+    }
+}
+
+TEST_CASE("A box pyramid allocates nothing per step once it has settled", "[allocations]") {
+    // The 210-box pyramid of lecture 8 (sequential impulse, the AABB tree chosen by Auto).
+    CHECK(allocationsPerRun(configScene("lesson08_pyramid.scene"), true) == 0);
+}
+
+#endif
