@@ -37,7 +37,9 @@ Scene fallingBall(SolverKind solver) {
 }  // namespace
 
 TEST_CASE("The observer sees the foundation's seven stages in pipeline order", "[observer]") {
-    World world(fallingBall(SolverKind::Impulse));
+    Scene scene = fallingBall(SolverKind::Impulse);
+    scene.settings.stepPlan = false;  // with the plan, move-kinematics is skipped: no kinematic bodies
+    World world(scene);
     Recorder recorder;
     world.setObserver(&recorder);
     world.step();
@@ -103,4 +105,15 @@ TEST_CASE("Watching a step does not change it", "[observer]") {
         CHECK(watched.dynamics()[i].orientation == unwatched.dynamics()[i].orientation);
     }
     CHECK(recorder.steps == 120);
+}
+
+TEST_CASE("The observer is not called for a stage the step plan skips", "[observer][plan]") {
+    // No kinematic bodies: the plan skips move-kinematics, so it never runs and is never reported.
+    World world(fallingBall(SolverKind::Impulse));
+    Recorder recorder;
+    world.setObserver(&recorder);
+    world.step();
+    REQUIRE_FALSE(world.plan().runs(Stage::MoveKinematics));
+    CHECK(recorder.after.size() == 6);
+    for (const StageEvent& event : recorder.after) CHECK(event.stage != Stage::MoveKinematics);
 }

@@ -115,6 +115,7 @@ void World::step() {
         impulses_.clear();
         time_ += settings_.timeStep;
         ++stepCount_;
+        if (observer_) observer_->afterStep(*this);
         return;
     }
     switch (settings_.solver) {
