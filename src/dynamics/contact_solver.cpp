@@ -100,11 +100,13 @@ void scatterVelocities(SolverWorkspace& w) {
     }
 }
 
-Vec3 relativeVelocity(const SolverContact& c, const std::vector<SolverBody>& bodies) {
+// Small enough to inline into every pass: a call would spill the pass's
+// registers (every vector register is caller-saved on x86-64).
+inline Vec3 relativeVelocity(const SolverContact& c, const std::vector<SolverBody>& bodies) {
     return relativeVelocity(bodies[c.bodyA], bodies[c.bodyB], c.rA, c.rB, c.staticVelocity);
 }
 
-void applyImpulse(const SolverContact& c, std::vector<SolverBody>& bodies, const Vec3& P) {
+inline void applyImpulse(const SolverContact& c, std::vector<SolverBody>& bodies, const Vec3 P) {
     applyImpulse(bodies[c.bodyA], bodies[c.bodyB], c.rA, c.rB, P);
 }
 

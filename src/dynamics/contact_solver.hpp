@@ -121,7 +121,8 @@ struct SolverWorkspace {
 };
 
 /// @brief Builds one SolverContact per contact: anchors, effective masses,
-/// bounce, and (with @p warmStart) last step's impulses.
+/// bounce, and (with @p warmStart) last step's impulses; and a SolverBody
+/// record for each dynamic body in a contact, with its world I⁻¹ for the step.
 ///
 /// The bounce: the relative normal velocity v_n (< 0 approaching) is taken
 /// before any impulse, at the start of the step, when the surfaces are a gap
@@ -147,6 +148,10 @@ void recordPoses(const BodySet& bodies, SolverWorkspace& workspace);
 
 /// @brief Applies every contact's accumulated impulses (the warm start), at the start of a substep.
 /// With @p accumulate off, instead starts each contact's impulses from zero.
+///
+/// Like solveContacts() and applyRestitution(), it copies the velocities of the
+/// bodies in contacts into their solver bodies first and back into the
+/// objects at the end (solver_body.hpp), so joints and integrators see them.
 void warmStartContacts(SolverWorkspace& workspace, bool accumulate);
 
 /// @brief One Gauss–Seidel pass over all contacts.
