@@ -246,8 +246,13 @@ void solveContacts(SolverWorkspace& workspace, const ContactSolverSettings& sett
         for (int k = 0; k < 2; ++k) total[k] = c.tangentImpulse[k] - c.tangentMass[k] * glm::dot(relative, c.tangent[k]);
         // Most points stick: a test on squares (no root) settles those; std::hypot
         // runs only on or near the circle, where the impulse is scaled back onto it.
+        // A point that is not pushing (λ_n = 0, a speculative gap) has no friction:
+        // the scale limit/|λ_t| is 0, without the root.
         const Real squared = total[0] * total[0] + total[1] * total[1];
-        if (!(squared < limit * limit * kSurelyInsideCircle)) {
+        if (limit == Real(0)) {
+            total[0] *= Real(0);
+            total[1] *= Real(0);
+        } else if (!(squared < limit * limit * kSurelyInsideCircle)) {
             const Real magnitude = std::hypot(total[0], total[1]);
             if (magnitude > limit) {
                 const Real scale = magnitude > 0 ? limit / magnitude : Real(0);
