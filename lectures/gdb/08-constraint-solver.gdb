@@ -44,7 +44,7 @@ end
 break stepwise::applyRestitution
 commands
 silent
-printf "end of step %d: lambda0 %.6f N s, lambda4 %.6f N s, heavy box y %.9f m, light box y %.9f m\n", $step, workspace.contacts._M_impl._M_start[0].normalImpulse, workspace.contacts._M_impl._M_start[4].normalImpulse, workspace.contacts._M_impl._M_start[0].b->position.y, workspace.contacts._M_impl._M_start[0].a->position.y
+printf "end of step %d: lambda0 %.6f N s, lambda4 %.6f N s, heavy box y %.9f m, light box y %.9f m\n", $step, workspace.contacts._M_impl._M_start[0].normalImpulse, workspace.contacts._M_impl._M_start[4].normalImpulse, workspace.dynamics._M_ptr[workspace.contacts._M_impl._M_start[0].refB.index].position.y, workspace.dynamics._M_ptr[workspace.contacts._M_impl._M_start[0].indexA].position.y
 continue
 end
 

@@ -7,6 +7,7 @@
 /// through these aliases.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 
 #define GLM_FORCE_XYZW_ONLY  // vectors have only x, y, z (no r, g, b aliases)
@@ -35,10 +36,15 @@ inline constexpr Real kStandardGravity = Real(9.81);
 /// π, spelled once.
 inline constexpr Real kPi = Real(3.14159265358979323846);
 
+// Inline: the World checks every body's state after every stage (World::checkFinite),
+// several times per substep, and a call per vector cost more than the test itself.
+
 /// @brief True when every component of @p v is a finite number (not NaN, not ±∞).
-bool isFinite(const Vec3& v);
+inline bool isFinite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 /// @brief True when every component of @p q is a finite number.
-bool isFinite(const Quat& q);
+inline bool isFinite(const Quat& q) {
+    return std::isfinite(q.w) && std::isfinite(q.x) && std::isfinite(q.y) && std::isfinite(q.z);
+}
 
 }  // namespace stepwise

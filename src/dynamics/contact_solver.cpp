@@ -4,14 +4,22 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "dynamics/contact_body.hpp"
 #include "dynamics/inertia.hpp"
-#include "dynamics/point_impulse.hpp"
 
 namespace stepwise {
 
 namespace {
+
+/// |λ_t|² < μ²λ_n²·(1 − 16ε) in floating point means |λ_t| < μλ_n exactly, so
+/// std::hypot would not have scaled: each product and sum rounds by at most
+/// ε/2 relative, and the margin covers them with room to spare (ε: Real's
+/// machine epsilon). A square that overflows fails the test and takes the
+/// exact path (the argument assumes no square underflows: impulses of
+/// 1e-154 N·s and below in double).
+constexpr Real kSurelyInsideCircle = Real(1) - Real(16) * std::numeric_limits<Real>::epsilon();
 
 Vec3 totalImpulse(const SolverContact& c) {
     return c.normalImpulse * c.normal + c.tangentImpulse[0] * c.tangent[0] + c.tangentImpulse[1] * c.tangent[1];
@@ -30,53 +38,116 @@ Vec3 anchorNow(const Vec3& centre, const Quat& orientation, const Vec3& local, c
 Real currentSeparation(const SolverContact& c, const SolverWorkspace& w) {
     const Pose& poseA = w.dynamicPoses[c.indexA];
     const Vec3 pA = anchorNow(poseA.position, poseA.orientation, c.localAnchorA, c.rA, c.anchorTurnsWithA);
-    Vec3 pB = c.startPointB;  // a plane never moves
+    Vec3 pB = c.startPoint;  // a plane never moves
     if (c.refB.kind != BodyKind::Plane) {
         const Pose& poseB = c.refB.kind == BodyKind::Dynamic ? w.dynamicPoses[c.refB.index] : w.kinematicPoses[c.refB.index];
         pB = anchorNow(poseB.position, poseB.orientation, c.localAnchorB, c.rB, c.anchorTurnsWithB);
     }
-    return c.startSeparation + glm::dot((pB - c.startPointB) - (pA - c.startPointA), c.normal);
+    return c.startSeparation + glm::dot((pB - c.startPoint) - (pA - c.startPoint), c.normal);
 }
 
-SolverContact prepareOne(const BodySet& bodies, const Contact& contact, Real h) {
+/// The solver-body record of dynamic body @p index, made on first use: its
+/// mass, and its world inverse inertia, once per body per step.
+std::uint32_t recordOf(SolverWorkspace& w, std::uint32_t index) {
+    std::uint32_t& record = w.bodyRecord[index];
+    if (record == kStaticSolverBody) {
+        const DynamicObject& body = w.dynamics[index];
+        record = static_cast<std::uint32_t>(w.bodies.size());
+        SolverBody& s = w.bodies.emplace_back();
+        s.velocity = body.velocity;
+        s.angularVelocity = body.angularVelocity;
+        s.angularMomentum = body.angularMomentum;
+        s.inverseInertia = worldInverseInertia(body.orientation, body.inverseInertiaBody);
+        s.inverseMass = body.inverseMass;
+        s.body = index;
+    }
+    return record;
+}
+
+/// 1/m_eff along unit direction d, J·M⁻¹·Jᵀ (the formula of point_impulse.hpp,
+/// in the same order; the static record adds zeros).
+Real inverseEffectiveMass(const SolverBody& a, const SolverBody& b, const Vec3& rA, const Vec3& rB, const Vec3& d) {
+    const Vec3 turnA = glm::cross(rA, d);
+    const Vec3 turnB = glm::cross(rB, d);
+    return a.inverseMass + b.inverseMass + glm::dot(turnA, a.inverseInertia * turnA) +
+           glm::dot(turnB, b.inverseInertia * turnB);
+}
+
+/// Gather: copies the velocities of the bodies in contacts from the World's
+/// objects into their records (a joint may have changed them since the last
+/// pass). The static record is reset: impulses leave its velocity at zero
+/// but do add to its angular momentum, which nothing reads.
+void gatherVelocities(SolverWorkspace& w) {
+    w.bodies[kStaticSolverBody].angularMomentum = Vec3(0);
+    for (std::size_t i = 1; i < w.bodies.size(); ++i) {
+        SolverBody& s = w.bodies[i];
+        const DynamicObject& body = w.dynamics[s.body];
+        s.velocity = body.velocity;
+        s.angularVelocity = body.angularVelocity;
+        s.angularMomentum = body.angularMomentum;
+    }
+}
+
+/// Scatter: writes the records' velocities back to the World's objects, for
+/// the joints, the drift and the integrator.
+void scatterVelocities(SolverWorkspace& w) {
+    for (std::size_t i = 1; i < w.bodies.size(); ++i) {
+        const SolverBody& s = w.bodies[i];
+        DynamicObject& body = w.dynamics[s.body];
+        body.velocity = s.velocity;
+        body.angularVelocity = s.angularVelocity;
+        body.angularMomentum = s.angularMomentum;
+    }
+}
+
+// Small enough to inline into every pass: a call would spill the pass's
+// registers (every vector register is caller-saved on x86-64).
+inline Vec3 relativeVelocity(const SolverContact& c, const std::vector<SolverBody>& bodies) {
+    return relativeVelocity(bodies[c.bodyA], bodies[c.bodyB], c.rA, c.rB, c.staticVelocity);
+}
+
+inline void applyImpulse(const SolverContact& c, std::vector<SolverBody>& bodies, const Vec3 P) {
+    applyImpulse(bodies[c.bodyA], bodies[c.bodyB], c.rA, c.rB, P);
+}
+
+SolverContact prepareOne(const BodySet& bodies, const Contact& contact, Real h, SolverWorkspace& w) {
     SolverContact c;
-    DynamicObject& a = bodies.dynamics[contact.a];
+    const DynamicObject& a = bodies.dynamics[contact.a];
     const ContactBody other = contactBody(bodies, contact.b, contact.point);
+    c.bodyA = recordOf(w, contact.a);
     c.indexA = contact.a;
     c.refB = contact.b;
-    c.a = &a;
-    c.b = other.dynamic;
-    c.staticVelocity = other.velocity;
-    c.inverseMassA = a.inverseMass;
-    c.inverseInertiaA = worldInverseInertia(a.orientation, a.inverseInertiaBody);
     c.rA = contact.point - a.position;
     c.localAnchorA = glm::conjugate(a.orientation) * c.rA;
     c.anchorTurnsWithA = a.shape != Shape::Sphere;
-    c.startPointA = contact.point;
-    c.startPointB = contact.point;
-    if (c.b) {
-        c.inverseMassB = c.b->inverseMass;
-        c.inverseInertiaB = worldInverseInertia(c.b->orientation, c.b->inverseInertiaBody);
-        c.rB = contact.point - c.b->position;
-        c.localAnchorB = glm::conjugate(c.b->orientation) * c.rB;
-        c.anchorTurnsWithB = c.b->shape != Shape::Sphere;
-    } else if (contact.b.kind == BodyKind::Kinematic) {
-        const KinematicsObject& k = bodies.kinematics[contact.b.index];
-        c.rB = contact.point - k.position;
-        c.localAnchorB = glm::conjugate(k.orientation) * c.rB;
-        c.anchorTurnsWithB = k.shape != Shape::Sphere;
+    c.startPoint = contact.point;
+    if (other.dynamic) {
+        c.bodyB = recordOf(w, contact.b.index);
+        c.rB = contact.point - other.dynamic->position;
+        c.localAnchorB = glm::conjugate(other.dynamic->orientation) * c.rB;
+        c.anchorTurnsWithB = other.dynamic->shape != Shape::Sphere;
+    } else {
+        c.staticVelocity = other.velocity;  // the surface of a kinematic B moves; a plane's does not
+        if (contact.b.kind == BodyKind::Kinematic) {
+            const KinematicsObject& k = bodies.kinematics[contact.b.index];
+            c.rB = contact.point - k.position;
+            c.localAnchorB = glm::conjugate(k.orientation) * c.rB;
+            c.anchorTurnsWithB = k.shape != Shape::Sphere;
+        }
     }
+    const SolverBody& bodyA = w.bodies[c.bodyA];
+    const SolverBody& bodyB = w.bodies[c.bodyB];
     c.startSeparation = -contact.depth;
     c.normal = contact.normal;
     tangentBasis(c.normal, c.tangent);
-    c.normalMass = Real(1) / inverseEffectiveMass(c, c.normal);
-    for (int k = 0; k < 2; ++k) c.tangentMass[k] = Real(1) / inverseEffectiveMass(c, c.tangent[k]);
+    c.normalMass = Real(1) / inverseEffectiveMass(bodyA, bodyB, c.rA, c.rB, c.normal);
+    for (int k = 0; k < 2; ++k) c.tangentMass[k] = Real(1) / inverseEffectiveMass(bodyA, bodyB, c.rA, c.rB, c.tangent[k]);
     c.friction = combineFriction(a.friction, other.friction);
 
     // The bounce, decided before any impulse (contact_solver.hpp): the
     // approach speed when the surfaces meet, v_c² = v_n² + 2·a·C, with a the
     // approach acceleration −(a_B − a_A)·n.
-    const Real vn = glm::dot(relativeVelocity(c), c.normal);
+    const Real vn = glm::dot(relativeVelocity(c, w.bodies), c.normal);
     const Real approachAcceleration = -glm::dot(other.acceleration - a.acceleration, c.normal);
     if (vn < 0) {
         c.approachAtTouch = std::sqrt(std::max(Real(0), vn * vn + Real(2) * approachAcceleration * c.startSeparation));
@@ -92,10 +163,15 @@ SolverContact prepareOne(const BodySet& bodies, const Contact& contact, Real h) 
 
 void prepareContacts(const BodySet& bodies, std::span<const Contact> contacts, Real h, bool warmStart,
                      SolverWorkspace& workspace) {
+    workspace.dynamics = bodies.dynamics;
+    // Records are made as the contacts first meet their bodies; last step's are dropped.
+    workspace.bodyRecord.assign(bodies.dynamics.size(), kStaticSolverBody);
+    workspace.bodies.clear();
+    workspace.bodies.emplace_back();  // record 0: the static body (m⁻¹ = 0, I⁻¹ = 0, at rest)
     workspace.contacts.resize(contacts.size());
     for (std::size_t i = 0; i < contacts.size(); ++i) {
         SolverContact& c = workspace.contacts[i];
-        c = prepareOne(bodies, contacts[i], h);
+        c = prepareOne(bodies, contacts[i], h, workspace);
         if (!warmStart) continue;
         if (const CachedImpulse* cached = findCachedImpulse(workspace.previousImpulses, keyOf(contacts[i]))) {
             c.normalImpulse = cached->normalImpulse;
@@ -127,11 +203,15 @@ void warmStartContacts(SolverWorkspace& workspace, bool accumulate) {
         }
         return;
     }
-    for (SolverContact& c : workspace.contacts) applyImpulse(c, totalImpulse(c));
+    gatherVelocities(workspace);
+    for (SolverContact& c : workspace.contacts) applyImpulse(c, workspace.bodies, totalImpulse(c));
+    scatterVelocities(workspace);
 }
 
 void solveContacts(SolverWorkspace& workspace, const ContactSolverSettings& settings, bool useBias) {
     const Real inverseSubstep = Real(1) / settings.substep;
+    std::vector<SolverBody>& bodies = workspace.bodies;
+    gatherVelocities(workspace);
     for (SolverContact& c : workspace.contacts) {
         // Normal: λ = −K⁻¹·s_m·(v_n + bias) − s_i·λ_acc (softness.hpp).
         const Real separation = currentSeparation(c, workspace);
@@ -145,7 +225,7 @@ void solveContacts(SolverWorkspace& workspace, const ContactSolverSettings& sett
             massScale = settings.softness.massScale;
             impulseScale = settings.softness.impulseScale;
         }
-        const Real vn = glm::dot(relativeVelocity(c), c.normal);
+        const Real vn = glm::dot(relativeVelocity(c, bodies), c.normal);
         const Real impulse = -c.normalMass * massScale * (vn + bias) - impulseScale * c.normalImpulse;
         Real applied = 0;
         if (settings.accumulate) {
@@ -157,36 +237,49 @@ void solveContacts(SolverWorkspace& workspace, const ContactSolverSettings& sett
             c.normalImpulse += applied;
         }
         c.maxNormalImpulse = std::max(c.maxNormalImpulse, c.normalImpulse);
-        applyImpulse(c, applied * c.normal);
+        applyImpulse(c, bodies, applied * c.normal);
 
         // Friction on what is left sliding, inside Coulomb's circle |λ_t| ≤ μ·λ_n.
-        const Vec3 relative = relativeVelocity(c);
+        const Vec3 relative = relativeVelocity(c, bodies);
         const Real limit = c.friction * c.normalImpulse;
         Real total[2];
         for (int k = 0; k < 2; ++k) total[k] = c.tangentImpulse[k] - c.tangentMass[k] * glm::dot(relative, c.tangent[k]);
-        const Real magnitude = std::hypot(total[0], total[1]);
-        if (magnitude > limit) {
-            const Real scale = magnitude > 0 ? limit / magnitude : Real(0);
-            total[0] *= scale;
-            total[1] *= scale;
+        // Most points stick: a test on squares (no root) settles those; std::hypot
+        // runs only on or near the circle, where the impulse is scaled back onto it.
+        // A point that is not pushing (λ_n = 0, a speculative gap) has no friction:
+        // the scale limit/|λ_t| is 0, without the root.
+        const Real squared = total[0] * total[0] + total[1] * total[1];
+        if (limit == Real(0)) {
+            total[0] *= Real(0);
+            total[1] *= Real(0);
+        } else if (!(squared < limit * limit * kSurelyInsideCircle)) {
+            const Real magnitude = std::hypot(total[0], total[1]);
+            if (magnitude > limit) {
+                const Real scale = magnitude > 0 ? limit / magnitude : Real(0);
+                total[0] *= scale;
+                total[1] *= scale;
+            }
         }
         const Vec3 change = (total[0] - c.tangentImpulse[0]) * c.tangent[0] + (total[1] - c.tangentImpulse[1]) * c.tangent[1];
         c.tangentImpulse[0] = total[0];
         c.tangentImpulse[1] = total[1];
-        applyImpulse(c, change);
+        applyImpulse(c, bodies, change);
     }
+    scatterVelocities(workspace);
 }
 
 void applyRestitution(SolverWorkspace& workspace) {
+    gatherVelocities(workspace);
     for (SolverContact& c : workspace.contacts) {
         if (c.restitution == Real(0) || c.maxNormalImpulse == Real(0)) continue;
         // Drive v_n to e·v_c (separating), never pulling: the accumulated λ stays ≥ 0.
-        const Real vn = glm::dot(relativeVelocity(c), c.normal);
+        const Real vn = glm::dot(relativeVelocity(c, workspace.bodies), c.normal);
         const Real impulse = c.normalMass * (c.restitution * c.approachAtTouch - vn);
         const Real total = std::max(c.normalImpulse + impulse, Real(0));
-        applyImpulse(c, (total - c.normalImpulse) * c.normal);
+        applyImpulse(c, workspace.bodies, (total - c.normalImpulse) * c.normal);
         c.normalImpulse = total;
     }
+    scatterVelocities(workspace);
 }
 
 void storeContactImpulses(std::span<const Contact> contacts, SolverWorkspace& workspace,
@@ -204,10 +297,8 @@ void storeContactImpulses(std::span<const Contact> contacts, SolverWorkspace& wo
               [](const CachedImpulse& x, const CachedImpulse& y) { return x.key < y.key; });
     std::swap(workspace.previousImpulses, workspace.currentImpulses);
     // ω was updated alongside L with the step's fixed I⁻¹; make them agree exactly again.
-    for (SolverContact& c : workspace.contacts) {
-        updateAngularVelocity(*c.a);
-        if (c.b) updateAngularVelocity(*c.b);
-    }
+    // Once per body in a contact: the result depends only on L and the orientation.
+    for (std::size_t i = 1; i < workspace.bodies.size(); ++i) updateAngularVelocity(workspace.dynamics[workspace.bodies[i].body]);
 }
 
 }  // namespace stepwise

@@ -48,6 +48,7 @@
 #include "collision/contact.hpp"
 #include "dynamics/impulse_resolver.hpp"
 #include "dynamics/softness.hpp"
+#include "dynamics/solver_body.hpp"
 #include "world/body_set.hpp"
 #include "world/world_settings.hpp"
 
@@ -65,35 +66,36 @@ struct Pose {
 };
 
 /// @brief One contact point held by the sequential-impulse solver through a step.
+///
+/// The fields a pass reads for every point come first, so they share cache
+/// lines; the bodies are named by their solver-body records (solver_body.hpp),
+/// not by pointers into the World's objects.
 struct SolverContact {
-    std::uint32_t indexA = 0;        ///< A's index in the dynamic array.
-    BodyRef refB;                    ///< B: its kind and index.
-    DynamicObject* a = nullptr;      ///< Body A (dynamic).
-    DynamicObject* b = nullptr;      ///< Body B when dynamic, else nullptr.
-    Vec3 staticVelocity{0, 0, 0};    ///< Velocity of a kinematic B's surface at the point, m/s (zero for a plane).
-    Mat3 inverseInertiaA{0};         ///< A's world inverse inertia at the start of the step, 1/(kg·m²).
-    Mat3 inverseInertiaB{0};         ///< B's, or zero.
-    Real inverseMassA = 0;           ///< 1/m_A, 1/kg.
-    Real inverseMassB = 0;           ///< 1/m_B, or zero.
-    Vec3 rA{0, 0, 0};                ///< Lever arm from A's centre to the point (world frame, start of step), m.
-    Vec3 rB{0, 0, 0};                ///< The same from B's centre (zero for a plane), m.
-    Vec3 localAnchorA{0, 0, 0};      ///< The point in A's body frame, m (a box's material point).
-    Vec3 localAnchorB{0, 0, 0};      ///< The point in B's body frame, m.
-    bool anchorTurnsWithA = true;    ///< False for a sphere: its contact point stays below the centre while it rolls.
-    bool anchorTurnsWithB = true;    ///< The same for B.
-    Vec3 startPointA{0, 0, 0};       ///< The anchor on A in the world at the start of the step, m.
-    Vec3 startPointB{0, 0, 0};       ///< The anchor on B, m.
-    Real startSeparation = 0;        ///< C at the start of the step: −Contact::depth, m (> 0: a gap).
+    std::uint32_t bodyA = 0;         ///< A's record in SolverWorkspace::bodies.
+    std::uint32_t bodyB = kStaticSolverBody; ///< B's record, or kStaticSolverBody for a plane or kinematic body.
     Vec3 normal{0, 1, 0};            ///< From A towards B, fixed for the step.
     Vec3 tangent[2];                 ///< Friction directions across the normal.
+    Vec3 rA{0, 0, 0};                ///< Lever arm from A's centre to the point (world frame, start of step), m.
+    Vec3 rB{0, 0, 0};                ///< The same from B's centre (zero for a plane), m.
+    Vec3 staticVelocity{0, 0, 0};    ///< Velocity of a kinematic B's surface at the point, m/s (zero for a plane or a dynamic B).
     Real normalMass = 0;             ///< K⁻¹ along n, kg.
     Real tangentMass[2] = {0, 0};    ///< K⁻¹ along each tangent, kg.
     Real friction = 0;               ///< μ of the pair.
-    Real restitution = 0;            ///< e of the pair (0 when the contact is resting).
-    Real approachAtTouch = 0;        ///< v_c: approach speed when the surfaces meet, m/s (≥ 0).
     Real normalImpulse = 0;          ///< Accumulated λ_n of the current substep, N·s.
     Real tangentImpulse[2] = {0, 0}; ///< Accumulated friction impulses, N·s.
     Real maxNormalImpulse = 0;       ///< Largest λ_n seen this step (0: never pushed), N·s.
+    // The separation at the recorded poses (currentSeparation() in contact_solver.cpp).
+    std::uint32_t indexA = 0;        ///< A's index in the dynamic array (its pose).
+    BodyRef refB;                    ///< B: its kind and index (its pose).
+    bool anchorTurnsWithA = true;    ///< False for a sphere: its contact point stays below the centre while it rolls.
+    bool anchorTurnsWithB = true;    ///< The same for B.
+    Vec3 localAnchorA{0, 0, 0};      ///< The point in A's body frame, m (a box's material point).
+    Vec3 localAnchorB{0, 0, 0};      ///< The point in B's body frame, m.
+    Vec3 startPoint{0, 0, 0};        ///< The contact point at the start of the step, where both anchors were, m.
+    Real startSeparation = 0;        ///< C at the start of the step: −Contact::depth, m (> 0: a gap).
+    // The bounce, once per step.
+    Real restitution = 0;            ///< e of the pair (0 when the contact is resting).
+    Real approachAtTouch = 0;        ///< v_c: approach speed when the surfaces meet, m/s (≥ 0).
 };
 
 /// @brief What the contact solver needs of the World's settings for one substep.
@@ -107,6 +109,9 @@ struct ContactSolverSettings {
 /// @brief Scratch arrays of the sequential-impulse contact solver, reused every step.
 struct SolverWorkspace {
     std::vector<SolverContact> contacts;         ///< One per contact point, this step.
+    std::vector<SolverBody> bodies;              ///< Record 0 static, then one per dynamic body in a contact (solver_body.hpp).
+    std::vector<std::uint32_t> bodyRecord;       ///< Per dynamic body: its record in `bodies`, or kStaticSolverBody if none.
+    std::span<DynamicObject> dynamics;           ///< The World's dynamic bodies, as prepareContacts() saw them (gather, scatter).
     std::vector<CachedImpulse> previousImpulses; ///< Last step's impulses, sorted by key.
     std::vector<CachedImpulse> currentImpulses;  ///< This step's, swapped in at the end.
     std::vector<Pose> dynamicPoses;              ///< Per dynamic body: the pose separations are measured at.
@@ -116,7 +121,8 @@ struct SolverWorkspace {
 };
 
 /// @brief Builds one SolverContact per contact: anchors, effective masses,
-/// bounce, and (with @p warmStart) last step's impulses.
+/// bounce, and (with @p warmStart) last step's impulses; and a SolverBody
+/// record for each dynamic body in a contact, with its world I⁻¹ for the step.
 ///
 /// The bounce: the relative normal velocity v_n (< 0 approaching) is taken
 /// before any impulse, at the start of the step, when the surfaces are a gap
@@ -142,6 +148,10 @@ void recordPoses(const BodySet& bodies, SolverWorkspace& workspace);
 
 /// @brief Applies every contact's accumulated impulses (the warm start), at the start of a substep.
 /// With @p accumulate off, instead starts each contact's impulses from zero.
+///
+/// Like solveContacts() and applyRestitution(), it copies the velocities of the
+/// bodies in contacts into their solver bodies first and back into the
+/// objects at the end (solver_body.hpp), so joints and integrators see them.
 void warmStartContacts(SolverWorkspace& workspace, bool accumulate);
 
 /// @brief One Gauss–Seidel pass over all contacts.
