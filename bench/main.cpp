@@ -4,8 +4,9 @@
 ///     stepwise-bench precision [--quick] [--repeats N] [--csv PATH] [--markdown PATH]
 ///                              [--config DIR] [--problems a,b,...]
 ///
-/// Subcommands to come: `stress` (stiff springs, deep stacks), `bullet`
-/// (fast bodies and thin walls).
+///     stepwise-bench scaling | bullet | rain-scene ...   (scaling_commands.cpp)
+///
+/// Subcommands to come: `stress` (stiff springs, deep stacks).
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
@@ -13,6 +14,7 @@
 #include <vector>
 
 #include "precision.hpp"
+#include "scaling_commands.hpp"
 
 namespace {
 
@@ -56,8 +58,12 @@ int main(int argc, char** argv) {
     const std::vector<std::string> args(argv + 1, argv + argc);
     if (args.empty() || args[0] == "--help" || args[0] == "-h") {
         std::fputs(kUsage, args.empty() ? stderr : stdout);
+        std::fputs(stepwise::bench::kScalingUsage, args.empty() ? stderr : stdout);
         return args.empty() ? kExitUsage : kExitOk;
     }
+    if (args[0] == "scaling") return stepwise::bench::scalingCommand({args.begin() + 1, args.end()});
+    if (args[0] == "bullet") return stepwise::bench::bulletCommand({args.begin() + 1, args.end()});
+    if (args[0] == "rain-scene") return stepwise::bench::rainSceneCommand({args.begin() + 1, args.end()});
     if (args[0] != "precision") return usageError("unknown subcommand '" + args[0] + "' (only 'precision' so far)");
 
     stepwise::bench::PrecisionOptions options;
