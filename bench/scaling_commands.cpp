@@ -19,7 +19,7 @@ namespace stepwise::bench {
 
 const char* const kScalingUsage =
     "       stepwise-bench scaling [--quick] [--sizes 1000,4000,16000,64000] [--pile-sizes 1000,4000,16000]\n"
-    "                              [--steps 600] [--large-steps 300] [--pile-steps 300] [--seed 1] [--markdown PATH]\n"
+    "                              [--steps 240] [--large-steps 240] [--pile-steps 120] [--seed 1] [--markdown PATH]\n"
     "       stepwise-bench bullet [--quick] [--sizes 1000,4000,16000] [--markdown PATH] [--config DIR]\n"
     "       stepwise-bench rain-scene --count N [--seed S] --out FILE\n"
     "\n"

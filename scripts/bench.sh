@@ -5,6 +5,8 @@
 #
 #   scripts/bench.sh                 the full sweep, 5 timed repetitions per point
 #   scripts/bench.sh --repeats 11    more repetitions (a noisy machine)
+#   scripts/bench.sh --scaling       also re-measure the Scaling section (scripts/bench_scaling.sh; about an hour)
+#   scripts/bench.sh --bullet        also re-measure the Side by side with Bullet section (installs Bullet)
 #
 # Writes
 #   docs/data/precision.csv          every measurement (stepwise-bench precision --csv)
@@ -18,10 +20,12 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 cd "$root"
 build_dir=build/release
 repeats=5
+extra_runs=()
 while [[ $# -gt 0 ]]; do
     case $1 in
         --repeats) repeats=${2:?--repeats needs a number}; shift 2 ;;
-        -h|--help) sed -n '2,14p' "$0"; exit 0 ;;
+        --scaling|--bullet) extra_runs+=("${1#--}"); shift ;;
+        -h|--help) sed -n '2,16p' "$0"; exit 0 ;;
         *) echo "bench.sh: unknown option '$1' (see --help)" >&2; exit 2 ;;
     esac
 done
@@ -34,6 +38,7 @@ fi
 cmake --build --preset release -j "${STEPWISE_JOBS:-2}" --target stepwise-bench >&2
 
 mkdir -p docs/data docs/images
+for what in "${extra_runs[@]}"; do bash scripts/bench_scaling.sh --run "$what"; done
 tables=$(mktemp)
 trap 'rm -f "$tables"' EXIT
 command=("$build_dir/bench/stepwise-bench" precision --repeats "$repeats" --csv docs/data/precision.csv
@@ -128,6 +133,9 @@ so their lines coincide.
 The same numbers, and every other measurement, are in
 [\`docs/data/precision.csv\`](data/precision.csv) (one row per problem,
 integrator, time step and metric).
+
 EOF
+    # Scaling and Bullet: the tables of their last measurement (docs/data/bench-*.txt).
+    bash scripts/bench_scaling.sh --sections
 } > docs/benchmarks.md
 echo "bench.sh: wrote docs/benchmarks.md, docs/data/precision.csv and docs/images/precision-*.png" >&2
