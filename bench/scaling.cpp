@@ -10,6 +10,7 @@
 /// tracker) run between the timed steps.
 #include "scaling.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <string>
 
@@ -154,13 +155,18 @@ int runScaling(const ScalingOptions& options) {
                 "the median is over the steps of one run\n");
     std::vector<Row> rows;
     bool agrees = true;
+    const auto wanted = [&](const char* name) {
+        return options.scenes.empty() || std::find(options.scenes.begin(), options.scenes.end(), name) != options.scenes.end();
+    };
     for (const std::size_t n : rainSizes) {
+        if (!wanted("sphere-rain")) break;
         int steps = n >= kLargeRain ? options.largeRainSteps : options.rainSteps;
         if (options.quick) steps = kQuickSteps;
         rows.push_back(runOne("sphere-rain", sphereRainSceneText(n, options.seed), steps, true, markdown, agrees));
     }
     for (const GeneratedScene scene : {GeneratedScene::BoxPile, GeneratedScene::Pyramids}) {
         for (const std::size_t n : pileSizes) {
+            if (!wanted(toString(scene))) break;
             GeneratorOptions generator;
             generator.scene = scene;
             generator.count = n;

@@ -21,6 +21,9 @@ struct ScalingOptions {
     int largeRainSteps = 240;                ///< --large-steps: steps of a rain of kLargeRain spheres or more.
     int pileSteps = 120;                     ///< --pile-steps: steps of a box-pile or pyramid run (2 s, as bench/broadphase).
     std::uint64_t seed = 1;                  ///< --seed: seed of every generated scene.
+    /// --scenes: which of sphere-rain, box-pile, pyramids to run (default all three; runs in
+    /// parallel processes share a busy machine better than one long run).
+    std::vector<std::string> scenes;
     std::optional<std::string> markdownPath; ///< --markdown PATH: the tables as Markdown (docs/benchmarks.md).
 };
 

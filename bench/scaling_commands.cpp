@@ -20,7 +20,9 @@ namespace stepwise::bench {
 const char* const kScalingUsage =
     "       stepwise-bench scaling [--quick] [--sizes 1000,4000,16000,64000] [--pile-sizes 1000,4000,16000]\n"
     "                              [--steps 240] [--large-steps 240] [--pile-steps 120] [--seed 1] [--markdown PATH]\n"
-    "       stepwise-bench bullet [--quick] [--sizes 1000,4000,16000] [--markdown PATH] [--config DIR]\n"
+    "                              [--scenes sphere-rain,box-pile,pyramids]\n"
+    "       stepwise-bench bullet [--quick] [--sizes 1000,4000,16000] [--steps 600] [--markdown PATH] [--config DIR]\n"
+    "                             [--scenarios rain,stacks,free-box,bounce,incline]\n"
     "       stepwise-bench rain-scene --count N [--seed S] --out FILE\n"
     "\n"
     "  scaling: Stepwise's ms/step and us per body per step on sphere rain (r = 0.5 m into an open\n"
@@ -59,6 +61,19 @@ std::optional<std::vector<std::size_t>> counts(const std::string& text) {
         start = comma + 1;
     }
     return values;
+}
+
+/// The comma-separated words of @p text.
+std::vector<std::string> names(const std::string& text) {
+    std::vector<std::string> words;
+    std::size_t start = 0;
+    while (start <= text.size()) {
+        const std::size_t comma = text.find(',', start);
+        words.push_back(text.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+        if (comma == std::string::npos) break;
+        start = comma + 1;
+    }
+    return words;
 }
 
 /// Walks @p args: flags call their handler; options take the next argument and
@@ -104,6 +119,7 @@ int scalingCommand(const std::vector<std::string>& args) {
                               {"--large-steps", steps(o.largeRainSteps)},
                               {"--pile-steps", steps(o.pileSteps)},
                               {"--seed", [&](const std::string& v) { o.seed = std::strtoull(v.c_str(), nullptr, 10); return true; }},
+                              {"--scenes", [&](const std::string& v) { o.scenes = names(v); return true; }},
                               {"--markdown", [&](const std::string& v) { o.markdownPath = v; return true; }}});
     return status ? status : runScaling(o);
 }
@@ -119,6 +135,12 @@ int bulletCommand([[maybe_unused]] const std::vector<std::string>& args) {
                                    return n.has_value();
                                }},
                               {"--config", [&](const std::string& v) { o.configDir = v; return true; }},
+                              {"--steps", [&](const std::string& v) {
+                                   const auto n = count(v);
+                                   if (n) o.rainSteps = static_cast<int>(*n);
+                                   return n.has_value();
+                               }},
+                              {"--scenarios", [&](const std::string& v) { o.scenarios = names(v); return true; }},
                               {"--markdown", [&](const std::string& v) { o.markdownPath = v; return true; }}});
     return status ? status : runSideBySide(o);
 #else

@@ -12,6 +12,7 @@
 
 #include <btBulletDynamicsCommon.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -112,9 +113,9 @@ int stepsOf(const Scene& scene, bool quick) {
     return quick ? std::min(steps, kQuickSteps) : steps;
 }
 
-Table sphereRain(std::size_t count, bool quick) {
+Table sphereRain(std::size_t count, int rainSteps, bool quick) {
     const Scene scene = parseScene(sphereRainSceneText(count, 1), "sphere-rain");
-    const int steps = quick ? kQuickSteps : kRainSteps;
+    const int steps = quick ? kQuickSteps : rainSteps;
     const Real h = scene.settings.timeStep;
     Table table{"Sphere rain, " + std::to_string(count) + " spheres of r = 0.5 m, " + std::to_string(steps) +
                 " steps of 1/60 s", {}};
@@ -282,13 +283,23 @@ int runSideBySide(const SideBySideOptions& options) {
         tables.push_back(std::move(table));
     };
     try {
-        for (const std::size_t n : sizes) show(sphereRain(n, options.quick));
-        show(stack(dir + "lesson08_pyramid.scene", "Pyramid of 210 boxes", options.quick));
-        show(stack(dir + "lesson08_tower.scene", "Tower of 20 boxes", options.quick));
-        show(freeBox(dir + "reference_free_box.scene", options.quick));
-        show(bounce(dir + "reference_bounce.scene", kDefaultTimeStep));
-        show(bounce(dir + "reference_bounce.scene", kFineTimeStep));
-        show(incline(dir + "lesson07_incline.scene"));
+        const auto wanted = [&](const char* name) {
+            return options.scenarios.empty() ||
+                   std::find(options.scenarios.begin(), options.scenarios.end(), name) != options.scenarios.end();
+        };
+        if (wanted("rain")) {
+            for (const std::size_t n : sizes) show(sphereRain(n, options.rainSteps, options.quick));
+        }
+        if (wanted("stacks")) {
+            show(stack(dir + "lesson08_pyramid.scene", "Pyramid of 210 boxes", options.quick));
+            show(stack(dir + "lesson08_tower.scene", "Tower of 20 boxes", options.quick));
+        }
+        if (wanted("free-box")) show(freeBox(dir + "reference_free_box.scene", options.quick));
+        if (wanted("bounce")) {
+            show(bounce(dir + "reference_bounce.scene", kDefaultTimeStep));
+            show(bounce(dir + "reference_bounce.scene", kFineTimeStep));
+        }
+        if (wanted("incline")) show(incline(dir + "lesson07_incline.scene"));
     } catch (const std::exception& error) {
         std::fprintf(stderr, "stepwise-bench bullet: %s\n", error.what());
         return 1;
