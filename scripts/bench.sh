@@ -5,7 +5,7 @@
 #
 #   scripts/bench.sh                 the full sweep, 5 timed repetitions per point
 #   scripts/bench.sh --repeats 11    more repetitions (a noisy machine)
-#   scripts/bench.sh --scaling       also re-measure the Scaling section (scripts/bench_scaling.sh; about an hour)
+#   scripts/bench.sh --scaling       also re-measure the Scaling section (scripts/bench_scaling.sh; tens of minutes)
 #   scripts/bench.sh --bullet        also re-measure the Side by side with Bullet section (installs Bullet)
 #
 # Writes

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The "Scaling" and "Side by side with Bullet" sections of docs/benchmarks.md (issues #6 and #7).
 #
-#   scripts/bench_scaling.sh --run scaling   runs `stepwise-bench scaling` (build/release; about an hour of
-#                                            CPU on 2 cores, mostly the 64k-sphere rain) into docs/data/bench-scaling.txt
+#   scripts/bench_scaling.sh --run scaling   runs `stepwise-bench scaling` (build/release; tens of minutes of
+#                                            CPU, most of it the 64k-sphere rain) into docs/data/bench-scaling.txt
 #   scripts/bench_scaling.sh --run bullet    runs `stepwise-bench bullet` (installs Bullet with
 #                                            `scripts/setup.sh --with-bullet`, builds build/bullet with
 #                                            -DSTEPWISE_WITH_BULLET=ON) into docs/data/bench-bullet.txt
@@ -66,9 +66,10 @@ growing size and times `World::step()` step by step:
   five planes open at the top, whose floor grows with N (so the pile is as
   deep at 1k as at 64k); bench/sphere_rain_scene.cpp writes it from a seed,
   and `config/bench_sphere_rain_1k.scene` is the 1000-sphere one
-  (`stepwise-bench rain-scene --count N --out FILE` writes any other). The
-  runs here are 240 steps (4 s: the fall and the first settling), not the
-  600 of the side-by-side, so that the 64k run takes minutes of CPU, not an hour;
+  (`stepwise-bench rain-scene --count N --out FILE` writes any other). By
+  default a rain runs 240 steps (4 s: the fall and the first settling), not
+  the 600 of the side-by-side, so that 64k spheres take minutes of CPU, not
+  an hour; the *steps* column says how many each row ran;
 - **box-pile** and **pyramids**: the scenes of `stepwise generate`
   (src/config/scene_generator.cpp), 120 steps (2 s, as bench/broadphase).
 

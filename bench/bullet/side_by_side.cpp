@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <functional>
 
 #include "../scenario_metrics.hpp"
@@ -76,13 +77,15 @@ struct Table {
     };
     std::vector<Row> rows;
 
-    /// A figure where smaller is better: the ratio column is bullet/stepwise.
+    /// A figure where smaller is better: the ratio column is bullet/stepwise, unless
+    /// Stepwise's figure prints as 0 (rounding error only: the ratio would be noise).
     void add(const std::string& figure, const char* fmt, double stepwise, double bullet) {
         std::string ratio = "—";
-        if (stepwise > 0 && bullet >= 0 && std::isfinite(stepwise) && std::isfinite(bullet)) {
+        const std::string shown = format(fmt, stepwise);
+        if (std::strtod(shown.c_str(), nullptr) > 0 && bullet >= 0 && std::isfinite(stepwise) && std::isfinite(bullet)) {
             ratio = format("%.2f", bullet / stepwise);
         }
-        rows.push_back({figure, format(fmt, stepwise), format(fmt, bullet), ratio});
+        rows.push_back({figure, shown, format(fmt, bullet), ratio});
     }
     /// A figure without a meaningful ratio.
     void addText(const std::string& figure, std::string stepwise, std::string bullet) {
