@@ -188,9 +188,9 @@ Table freeBox(const std::string& path, bool quick) {
     FreeBodyMeter theirMeter(initial[0]);
     runSteps(theirs, steps, h, [&](const auto& s, Real) { theirMeter.observe(s[0]); });
 
-    table.add("worst |L - L0| / |L0|", "%.2e", ourMeter.worstMomentumDrift(), theirMeter.worstMomentumDrift());
-    table.add("|L - L0| / |L0| at the end", "%.2e", ourMeter.finalMomentumDrift(), theirMeter.finalMomentumDrift());
-    table.add("worst |T - T0| / T0", "%.2e", ourMeter.worstEnergyDrift(), theirMeter.worstEnergyDrift());
+    table.add("worst ‖L − L0‖ / ‖L0‖", "%.2e", ourMeter.worstMomentumDrift(), theirMeter.worstMomentumDrift());
+    table.add("‖L − L0‖ / ‖L0‖ at the end", "%.2e", ourMeter.finalMomentumDrift(), theirMeter.finalMomentumDrift());
+    table.add("worst abs(T − T0) / T0", "%.2e", ourMeter.worstEnergyDrift(), theirMeter.worstEnergyDrift());
     table.addText("(T - T0) / T0 at the end", format("%+.2e", ourMeter.finalEnergyDrift()),
                   format("%+.2e", theirMeter.finalEnergyDrift()));
     return table;
@@ -265,7 +265,7 @@ Table incline(const std::string& path) {
         const double ours_a = measured(ourEnd), theirs_a = measured(theirEnd);
         table.addText(body.name + " (exact " + format("%.3f", expected) + ")", format("%.3f", ours_a),
                       format("%.3f", theirs_a));
-        table.add(body.name + ": |a - exact| (m/s^2)", "%.3f", std::abs(ours_a - expected),
+        table.add(body.name + ": error abs(a − exact), m/s²", "%.3f", std::abs(ours_a - expected),
                   std::abs(theirs_a - expected));
     }
     return table;
