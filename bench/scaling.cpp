@@ -33,9 +33,9 @@ constexpr int kTrackEvery = 10;
 /// Brute force, the tracker's reference, is O(n²): compared only up to this many bodies.
 constexpr std::size_t kLargestChecked = 20000;
 /// Quick mode: sizes and steps of a smoke test that takes seconds.
-constexpr std::size_t kQuickRain = 300;
+constexpr std::size_t kQuickRain = 200;
 constexpr std::size_t kQuickPile = 100;
-constexpr int kQuickSteps = 60;
+constexpr int kQuickSteps = 30;
 constexpr double kMillisecondsPerSecond = 1e3;
 constexpr double kMicrosecondsPerSecond = 1e6;
 constexpr double kMillimetresPerMetre = 1e3;

@@ -12,7 +12,7 @@ namespace stepwise::bench {
 
 /// @brief What `stepwise-bench scaling` runs.
 struct ScalingOptions {
-    bool quick = false;                      ///< --quick: one small run of each scene, 60 steps (CTest smoke test).
+    bool quick = false;                      ///< --quick: one small run of each scene, 30 steps (CTest smoke test).
     std::vector<std::size_t> rainSizes;      ///< --sizes: sphere-rain counts (default 1000, 4000, 16000, 64000).
     std::vector<std::size_t> pileSizes;      ///< --pile-sizes: box-pile and pyramid counts (default 1000, 4000, 16000).
     /// --steps: steps of a sphere-rain run below kLargeRain spheres: 240 (4 s, the fall and the
