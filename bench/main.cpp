@@ -5,7 +5,7 @@
 ///                              [--config DIR] [--problems a,b,...]
 ///     stepwise-bench stress [--quick] [--markdown PATH] [--config DIR] [--cases a,b,...]
 ///
-/// Subcommand to come: `bullet` (a comparison with the Bullet engine).
+///     stepwise-bench scaling | bullet | rain-scene ...   (scaling_commands.cpp)
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
@@ -14,6 +14,7 @@
 
 #include "precision.hpp"
 #include "stress.hpp"
+#include "scaling_commands.hpp"
 
 namespace {
 
@@ -89,9 +90,13 @@ int main(int argc, char** argv) {
     const std::vector<std::string> args(argv + 1, argv + argc);
     if (args.empty() || args[0] == "--help" || args[0] == "-h") {
         std::fputs(kUsage, args.empty() ? stderr : stdout);
+        std::fputs(stepwise::bench::kScalingUsage, args.empty() ? stderr : stdout);
         return args.empty() ? kExitUsage : kExitOk;
     }
     if (args[0] == "stress") return runStressCommand(args);
+    if (args[0] == "scaling") return stepwise::bench::scalingCommand({args.begin() + 1, args.end()});
+    if (args[0] == "bullet") return stepwise::bench::bulletCommand({args.begin() + 1, args.end()});
+    if (args[0] == "rain-scene") return stepwise::bench::rainSceneCommand({args.begin() + 1, args.end()});
     if (args[0] != "precision") return usageError("unknown subcommand '" + args[0] + "'");
 
     stepwise::bench::PrecisionOptions options;

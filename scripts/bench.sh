@@ -5,6 +5,8 @@
 #
 #   scripts/bench.sh                 the full sweep, 5 timed repetitions per point
 #   scripts/bench.sh --repeats 11    more repetitions (a noisy machine)
+#   scripts/bench.sh --scaling       also re-measure the Scaling section (scripts/bench_scaling.sh; tens of minutes)
+#   scripts/bench.sh --bullet        also re-measure the Side by side with Bullet section (installs Bullet)
 #
 # Writes
 #   docs/data/precision.csv          every measurement (stepwise-bench precision --csv)
@@ -20,9 +22,11 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 cd "$root"
 build_dir=build/release
 repeats=5
+extra_runs=()
 while [[ $# -gt 0 ]]; do
     case $1 in
         --repeats) repeats=${2:?--repeats needs a number}; shift 2 ;;
+        --scaling|--bullet) extra_runs+=("${1#--}"); shift ;;
         -h|--help) sed -n '2,16p' "$0"; exit 0 ;;
         *) echo "bench.sh: unknown option '$1' (see --help)" >&2; exit 2 ;;
     esac
@@ -36,6 +40,7 @@ fi
 cmake --build --preset release -j "${STEPWISE_JOBS:-2}" --target stepwise-bench >&2
 
 mkdir -p docs/data docs/images
+for what in "${extra_runs[@]}"; do bash scripts/bench_scaling.sh --run "$what"; done
 tables=$(mktemp)
 trap 'rm -f "$tables"' EXIT
 command=("$build_dir/bench/stepwise-bench" precision --repeats "$repeats" --csv docs/data/precision.csv
@@ -165,5 +170,7 @@ and exited with status ${stress_status} (1: a case failed).
 
 EOF
     cat "$stress_table"
+    # Scaling and Bullet: the tables of their last measurement (docs/data/bench-*.txt).
+    bash scripts/bench_scaling.sh --sections
 } > docs/benchmarks.md
 echo "bench.sh: wrote docs/benchmarks.md, docs/data/precision.csv and docs/images/precision-*.png" >&2

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian packages Stepwise needs to build, test and document itself.
 #
-#   scripts/setup.sh        safe to run any number of times
+#   scripts/setup.sh                  safe to run any number of times
+#   scripts/setup.sh --with-bullet    also Bullet 3, for `stepwise-bench bullet` (or STEPWISE_WITH_BULLET=1)
 #
 # Every package present: prints one line and exits 0.
 # Some missing, running as root: installs them with apt-get.
@@ -22,6 +23,19 @@ set -euo pipefail
 #   gnuplot-nox               the plots of docs/benchmarks.md (scripts/bench.sh draws them from
 #                             stepwise-bench's CSV); -nox: PNG and SVG output without X11
 packages=(cmake ninja-build g++ libglm-dev freeglut3-dev catch2 doxygen xvfb xauth xdotool gnuplot-nox)
+
+# Only when asked (CI does not need them):
+#   libbullet-dev, pkg-config   Bullet 3, the engine `stepwise-bench bullet` compares Stepwise with
+#                               (configure with -DSTEPWISE_WITH_BULLET=ON; CMake finds it with pkg-config)
+for arg in "$@"; do
+    case $arg in
+        --with-bullet) STEPWISE_WITH_BULLET=1 ;;
+        *) echo "setup: unknown option '$arg' (only --with-bullet)" >&2; exit 2 ;;
+    esac
+done
+if [[ ${STEPWISE_WITH_BULLET:-0} == 1 ]]; then
+    packages+=(libbullet-dev pkg-config)
+fi
 
 if ! command -v dpkg-query >/dev/null 2>&1; then
     echo "setup: dpkg-query not found: this script installs packages on Debian/Ubuntu only." >&2

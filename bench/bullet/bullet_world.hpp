@@ -1,0 +1,77 @@
+/// @file bullet_world.hpp
+/// @brief The same scene in Bullet 3: a btDiscreteDynamicsWorld built from a Stepwise Scene.
+///
+/// Only the benchmark uses Bullet (`stepwise-bench bullet`, built with
+/// -DSTEPWISE_WITH_BULLET=ON); the engine never does. The translation keeps
+/// Bullet's own defaults wherever the scene says nothing, so the comparison is
+/// with Bullet as people use it (docs/benchmarks.md, "Side by side with Bullet"):
+///
+/// | scene                     | Bullet                                                                 |
+/// |---------------------------|------------------------------------------------------------------------|
+/// | DynamicObject, Sphere     | btSphereShape(radius), one shape shared by every sphere of that radius |
+/// | DynamicObject, Box        | btBoxShape(scale/2) (default collision margin 0.04 m, inside the box)  |
+/// | CollisionPlane            | btStaticPlaneShape(n, n·p) on a static body                            |
+/// | Mass, inertia             | setMassProps(m, I) with Stepwise's principal moments (hollow spheres too) |
+/// | Elasticity, Friction      | setRestitution, setFriction: Bullet combines both by product, as Stepwise |
+/// | World TimeStep, Gravity   | stepSimulation(h, 1, h): exactly one fixed step per call; setGravity    |
+/// | World Sleep=false         | DISABLE_DEACTIVATION on every body; Sleep=true keeps Bullet's default sleeping |
+///
+/// Everything else is Bullet's default: btDbvtBroadphase, btSequentialImpulseConstraintSolver
+/// with 10 iterations, split impulse on, ERP 0.2, no continuous collision detection,
+/// implicit gyroscopic term on. Kinematic bodies, springs, joints, attractors and
+/// per-body accelerations are not translated (the constructor throws).
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "../scenario_metrics.hpp"
+#include "world/scene.hpp"
+
+class btCollisionShape;
+class btDefaultCollisionConfiguration;
+class btCollisionDispatcher;
+class btBroadphaseInterface;
+class btSequentialImpulseConstraintSolver;
+class btDiscreteDynamicsWorld;
+class btRigidBody;
+class btDefaultMotionState;
+
+namespace stepwise::bench {
+
+/// @brief A Bullet world holding the bodies and planes of a Stepwise scene.
+class BulletWorld {
+public:
+    /// @brief Builds the Bullet world from @p scene (as loaded from its file).
+    /// @throws std::invalid_argument when the scene holds something not translated (see the file comment).
+    explicit BulletWorld(const Scene& scene);
+    ~BulletWorld();
+    BulletWorld(const BulletWorld&) = delete;
+    BulletWorld& operator=(const BulletWorld&) = delete;
+
+    /// @brief One fixed step of the scene's time step.
+    void step();
+    /// @brief Copies the dynamic bodies' states into @p out, in the scene's order.
+    void states(std::vector<BodyState>& out) const;
+    /// @brief Number of dynamic bodies.
+    std::size_t bodyCount() const { return dynamics_.size(); }
+    /// @brief Bodies Bullet has put to sleep (ISLAND_SLEEPING) now.
+    std::size_t sleepingCount() const;
+    /// @brief Contact manifolds Bullet keeps now (each up to 4 points).
+    int manifoldCount() const;
+
+private:
+    double timeStep_;
+    std::unique_ptr<btDefaultCollisionConfiguration> configuration_;
+    std::unique_ptr<btCollisionDispatcher> dispatcher_;
+    std::unique_ptr<btBroadphaseInterface> broadphase_;
+    std::unique_ptr<btSequentialImpulseConstraintSolver> solver_;
+    std::unique_ptr<btDiscreteDynamicsWorld> world_;
+    std::vector<std::unique_ptr<btCollisionShape>> shapes_;
+    std::vector<std::unique_ptr<btDefaultMotionState>> motionStates_;
+    std::vector<std::unique_ptr<btRigidBody>> dynamics_;  ///< In the scene's order.
+    std::vector<std::unique_ptr<btRigidBody>> statics_;   ///< The planes.
+    std::vector<Vec3> inertiaBody_;                       ///< Principal moments, for L = I_world·ω.
+};
+
+}  // namespace stepwise::bench

@@ -1,0 +1,325 @@
+/// @file side_by_side.cpp
+/// @brief `stepwise-bench bullet`: Stepwise and Bullet 3 on the same scene files, one table per scenario.
+///
+/// Each scenario loads one scene file (or the generated sphere rain), builds
+/// a Stepwise World and a BulletWorld from the same Scene, steps each the
+/// same number of times with the same h, and measures both with the same
+/// meters (scenario_metrics.hpp) from their body states. Only the steps are
+/// timed (the median of the per-step times: the machine is shared). The
+/// last column is Bullet's figure divided by Stepwise's for figures where
+/// smaller is better (time, overlap, drift, error): above 1, Stepwise does better.
+#include "side_by_side.hpp"
+
+#include <btBulletDynamicsCommon.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
+
+#include "../scenario_metrics.hpp"
+#include "../sphere_rain_scene.hpp"
+#include "bullet_world.hpp"
+#include "config/scene_loader.hpp"
+#include "world/world.hpp"
+
+namespace stepwise::bench {
+
+namespace {
+
+constexpr int kQuickSteps = 60;             ///< Steps of every long run in --quick mode.
+constexpr std::size_t kQuickRain = 300;     ///< Spheres of the --quick rain.
+constexpr Real kFineTimeStep = Real(1) / Real(240);  ///< The bounce's second time step, s.
+constexpr Real kInclineTime = 2;            ///< Incline: accelerations measured over the first 2 s.
+constexpr int kApexesCompared = 4;          ///< Bounce: the first four apexes, e^(2n)·h₀, n = 1…4.
+constexpr double kMs = 1e3;                 ///< ms per s (and mm per m).
+
+/// Stepwise behind the same two calls as BulletWorld.
+struct StepwiseEngine {
+    World world;
+    void step() { world.step(); }
+    void states(std::vector<BodyState>& out) const { statesOf(world, out); }
+};
+
+/// Median times per step, s.
+struct Timing {
+    double cpu = 0;
+    double wall = 0;
+};
+
+/// Steps @p engine @p steps times, timing each step; calls @p observe(states, t) after each.
+template <class Engine>
+Timing runSteps(Engine& engine, int steps, Real h, const std::function<void(const std::vector<BodyState>&, Real)>& observe) {
+    std::vector<BodyState> states;
+    StepTimer timer(static_cast<std::size_t>(steps));
+    for (int i = 0; i < steps; ++i) {
+        timer.start();
+        engine.step();
+        timer.stop();
+        engine.states(states);
+        observe(states, Real(i + 1) * h);
+    }
+    return {timer.medianCpu(), timer.medianWall()};
+}
+
+std::string format(const char* fmt, double value) {
+    char text[64];
+    std::snprintf(text, sizeof text, fmt, value);
+    return text;
+}
+
+/// One table: a row per figure, Stepwise, Bullet and Bullet/Stepwise.
+struct Table {
+    std::string title;
+    struct Row {
+        std::string figure, stepwise, bullet, ratio;
+    };
+    std::vector<Row> rows;
+
+    /// A figure where smaller is better: the ratio column is bullet/stepwise, unless
+    /// Stepwise's figure prints as 0 (rounding error only: the ratio would be noise).
+    void add(const std::string& figure, const char* fmt, double stepwise, double bullet) {
+        std::string ratio = "—";
+        const std::string shown = format(fmt, stepwise);
+        if (std::strtod(shown.c_str(), nullptr) > 0 && bullet >= 0 && std::isfinite(stepwise) && std::isfinite(bullet)) {
+            ratio = format("%.2f", bullet / stepwise);
+        }
+        rows.push_back({figure, shown, format(fmt, bullet), ratio});
+    }
+    /// A figure without a meaningful ratio.
+    void addText(const std::string& figure, std::string stepwise, std::string bullet) {
+        rows.push_back({figure, std::move(stepwise), std::move(bullet), "—"});
+    }
+
+    void print(std::FILE* out, bool markdown) const {
+        if (markdown) {
+            std::fprintf(out, "\n**%s**\n\n| figure | Stepwise | Bullet | Bullet / Stepwise |\n|---|---:|---:|---:|\n",
+                         title.c_str());
+            for (const Row& r : rows) {
+                std::fprintf(out, "| %s | %s | %s | %s |\n", r.figure.c_str(), r.stepwise.c_str(), r.bullet.c_str(),
+                             r.ratio.c_str());
+            }
+            return;
+        }
+        std::fprintf(out, "\n%s\n  %-40s %14s %14s %18s\n", title.c_str(), "figure", "Stepwise", "Bullet",
+                     "Bullet / Stepwise");
+        for (const Row& r : rows) {
+            std::fprintf(out, "  %-40s %14s %14s %18s\n", r.figure.c_str(), r.stepwise.c_str(), r.bullet.c_str(),
+                         r.ratio.c_str());
+        }
+    }
+};
+
+int stepsOf(const Scene& scene, bool quick) {
+    const int steps = static_cast<int>(std::lround(scene.settings.duration / scene.settings.timeStep));
+    return quick ? std::min(steps, kQuickSteps) : steps;
+}
+
+Table sphereRain(std::size_t count, int rainSteps, bool quick) {
+    const Scene scene = parseScene(sphereRainSceneText(count, 1), "sphere-rain");
+    const int steps = quick ? kQuickSteps : rainSteps;
+    const Real h = scene.settings.timeStep;
+    Table table{"Sphere rain, " + std::to_string(count) + " spheres of r = 0.5 m, " + std::to_string(steps) +
+                " steps of 1/60 s", {}};
+
+    StepwiseEngine ours{World(scene)};
+    RainMeter ourMeter(scene.planes, kRainRadius);
+    const Timing ourSeconds = runSteps(ours, steps, h, [&](const auto& s, Real) { ourMeter.observe(s); });
+    std::vector<BodyState> ourEnd;
+    ours.states(ourEnd);
+
+    BulletWorld theirs(scene);
+    RainMeter theirMeter(scene.planes, kRainRadius);
+    const Timing theirSeconds = runSteps(theirs, steps, h, [&](const auto& s, Real) { theirMeter.observe(s); });
+    std::vector<BodyState> theirEnd;
+    theirs.states(theirEnd);
+
+    table.add("CPU ms/step (median)", "%.2f", kMs * ourSeconds.cpu, kMs * theirSeconds.cpu);
+    table.add("wall ms/step (median)", "%.2f", kMs * ourSeconds.wall, kMs * theirSeconds.wall);
+    table.add("worst overlap, any step (mm)", "%.1f", kMs * double(ourMeter.worstOverlap()),
+              kMs * double(theirMeter.worstOverlap()));
+    table.add("spheres out of the box at the end", "%.0f", double(ourMeter.escaped(ourEnd)),
+              double(theirMeter.escaped(theirEnd)));
+    std::size_t ourAsleep = 0;
+    for (const DynamicObject& b : ours.world.dynamics()) ourAsleep += b.asleep ? 1 : 0;
+    table.addText("asleep at the end", std::to_string(ourAsleep), std::to_string(theirs.sleepingCount()));
+    return table;
+}
+
+Table stack(const std::string& path, const std::string& title, bool quick) {
+    const Scene scene = loadSceneFile(path);
+    const int steps = stepsOf(scene, quick);
+    const Real h = scene.settings.timeStep;
+    Table table{title + " (" + path.substr(path.find_last_of('/') + 1) + "), " + std::to_string(steps) +
+                " steps, Sleep=" + (scene.settings.sleeping ? "true" : "false"), {}};
+    StepwiseEngine ours{World(scene)};
+    std::vector<BodyState> initial;
+    ours.states(initial);
+    StackMeter ourMeter(initial);
+    const Timing ourSeconds = runSteps(ours, steps, h, [&](const auto& s, Real t) { ourMeter.observe(s, t); });
+    BulletWorld theirs(scene);
+    StackMeter theirMeter(initial);
+    const Timing theirSeconds = runSteps(theirs, steps, h, [&](const auto& s, Real t) { theirMeter.observe(s, t); });
+
+    table.add("CPU ms/step (median)", "%.3f", kMs * ourSeconds.cpu, kMs * theirSeconds.cpu);
+    table.add("wall ms/step (median)", "%.3f", kMs * ourSeconds.wall, kMs * theirSeconds.wall);
+    table.add("largest displacement of a box (mm)", "%.1f", kMs * double(ourMeter.worstDrift()),
+              kMs * double(theirMeter.worstDrift()));
+    const auto fall = [](const StackMeter& m) {
+        return m.fallTime() ? format("%.2f s", double(*m.fallTime())) : std::string("stands");
+    };
+    table.addText("falls (a box moves > 0.5 m) at", fall(ourMeter), fall(theirMeter));
+    return table;
+}
+
+Table freeBox(const std::string& path, bool quick) {
+    const Scene scene = loadSceneFile(path);
+    const int steps = stepsOf(scene, quick);
+    const Real h = scene.settings.timeStep;
+    Table table{"Free box (reference_free_box.scene): torque-free tumbling, " + std::to_string(steps) + " steps of " +
+                format("%.4f", double(h)) + " s", {}};
+    StepwiseEngine ours{World(scene)};
+    std::vector<BodyState> initial;
+    ours.states(initial);
+    FreeBodyMeter ourMeter(initial[0]);
+    runSteps(ours, steps, h, [&](const auto& s, Real) { ourMeter.observe(s[0]); });
+    BulletWorld theirs(scene);
+    FreeBodyMeter theirMeter(initial[0]);
+    runSteps(theirs, steps, h, [&](const auto& s, Real) { theirMeter.observe(s[0]); });
+
+    table.add("worst ‖L − L0‖ / ‖L0‖", "%.2e", ourMeter.worstMomentumDrift(), theirMeter.worstMomentumDrift());
+    table.add("‖L − L0‖ / ‖L0‖ at the end", "%.2e", ourMeter.finalMomentumDrift(), theirMeter.finalMomentumDrift());
+    table.add("worst abs(T − T0) / T0", "%.2e", ourMeter.worstEnergyDrift(), theirMeter.worstEnergyDrift());
+    table.addText("(T - T0) / T0 at the end", format("%+.2e", ourMeter.finalEnergyDrift()),
+                  format("%+.2e", theirMeter.finalEnergyDrift()));
+    return table;
+}
+
+Table bounce(const std::string& path, Real h) {
+    Scene scene = loadSceneFile(path);
+    scene.settings.timeStep = h;
+    const int steps = stepsOf(scene, false);
+    const DynamicObject& ball = scene.dynamics.at(0);
+    const CollisionPlane& floor = scene.planes.at(0);
+    const Real floorY = floor.position.y;
+    const double e = double(ball.elasticity * floor.elasticity);  // the product rule, on both sides
+    const double drop = double(ball.position.y - ball.radius - floorY);
+    Table table{"Bounce (reference_bounce.scene), e = " + format("%.2f", e) + ", h = 1/" +
+                std::to_string(std::lround(1 / double(h))) + " s: apex heights against e^(2n)·" +
+                format("%.2f", drop) + " m", {}};
+    StepwiseEngine ours{World(scene)};
+    BounceMeter ourMeter(floorY, ball.radius);
+    runSteps(ours, steps, h, [&](const auto& s, Real) { ourMeter.observe(s[0]); });
+    BulletWorld theirs(scene);
+    BounceMeter theirMeter(floorY, ball.radius);
+    runSteps(theirs, steps, h, [&](const auto& s, Real) { theirMeter.observe(s[0]); });
+
+    double ourWorst = 0, theirWorst = 0;
+    for (int n = 1; n <= kApexesCompared; ++n) {
+        const double expected = std::pow(e, 2 * n) * drop;
+        const auto apex = [&](const BounceMeter& m, double& worst) {
+            if (m.apexes().size() < std::size_t(n)) {
+                worst = INFINITY;
+                return std::string("no bounce");
+            }
+            const double got = double(m.apexes()[std::size_t(n - 1)]);
+            worst = std::max(worst, std::abs(got - expected) / expected);
+            return format("%.4f m", got);
+        };
+        table.addText("apex " + std::to_string(n) + " (exact " + format("%.4f", expected) + " m)",
+                      apex(ourMeter, ourWorst), apex(theirMeter, theirWorst));
+    }
+    const auto percent = [](double v) { return std::isfinite(v) ? format("%.2f %%", 100 * v) : std::string("—"); };
+    table.rows.push_back({"worst apex error (relative)", percent(ourWorst), percent(theirWorst),
+                          std::isfinite(ourWorst) && std::isfinite(theirWorst) && ourWorst > 0
+                              ? format("%.2f", theirWorst / ourWorst)
+                              : std::string("—")});
+    return table;
+}
+
+Table incline(const std::string& path) {
+    const Scene scene = loadSceneFile(path);
+    const Real h = scene.settings.timeStep;
+    const int steps = static_cast<int>(std::lround(kInclineTime / h));
+    const CollisionPlane& slope = scene.planes.at(0);
+    const Vec3 down = downSlope(slope, scene.settings.gravity);
+    Table table{"Incline (lesson07_incline.scene): acceleration down the slope over the first " +
+                format("%.0f", double(kInclineTime)) + " s, a = (v·d)/t, in m/s²", {}};
+    StepwiseEngine ours{World(scene)};
+    std::vector<BodyState> initial;
+    ours.states(initial);
+    std::vector<BodyState> ourEnd, theirEnd;
+    runSteps(ours, steps, h, [&](const auto& s, Real) { ourEnd = s; });
+    BulletWorld theirs(scene);
+    runSteps(theirs, steps, h, [&](const auto& s, Real) { theirEnd = s; });
+    const double t = double(steps) * double(h);
+    for (std::size_t n = 0; n < scene.dynamics.size(); ++n) {
+        const DynamicObject& body = scene.dynamics[n];
+        const double expected = double(inclineAcceleration(body, slope, scene.settings.gravity));
+        // From the speed, not the distance: symplectic Euler's distance after
+        // n steps is ½·a·t²·(1 + 1/n), 0.8 % long at n = 120, its speed a·t exactly.
+        const auto measured = [&](const std::vector<BodyState>& end) {
+            return double(glm::dot(end[n].velocity - initial[n].velocity, down)) / t;
+        };
+        const double ours_a = measured(ourEnd), theirs_a = measured(theirEnd);
+        table.addText(body.name + " (exact " + format("%.3f", expected) + ")", format("%.3f", ours_a),
+                      format("%.3f", theirs_a));
+        table.add(body.name + ": error abs(a − exact), m/s²", "%.3f", std::abs(ours_a - expected),
+                  std::abs(theirs_a - expected));
+    }
+    return table;
+}
+
+}  // namespace
+
+int runSideBySide(const SideBySideOptions& options) {
+    std::vector<std::size_t> sizes = options.rainSizes;
+    if (sizes.empty()) sizes = options.quick ? std::vector<std::size_t>{kQuickRain} : std::vector<std::size_t>{1000, 4000, 16000};
+    const std::string dir = options.configDir + "/";
+    std::printf("stepwise-bench bullet: Stepwise against Bullet %d.%02d (btScalar = %s), same scene files\n",
+                BT_BULLET_VERSION / 100, BT_BULLET_VERSION % 100, sizeof(btScalar) == 8 ? "double" : "float");
+    std::vector<Table> tables;
+    const auto show = [&](Table table) {
+        table.print(stdout, false);
+        std::fflush(stdout);
+        tables.push_back(std::move(table));
+    };
+    try {
+        const auto wanted = [&](const char* name) {
+            return options.scenarios.empty() ||
+                   std::find(options.scenarios.begin(), options.scenarios.end(), name) != options.scenarios.end();
+        };
+        if (wanted("rain")) {
+            for (const std::size_t n : sizes) show(sphereRain(n, options.rainSteps, options.quick));
+        }
+        if (wanted("stacks")) {
+            show(stack(dir + "lesson08_pyramid.scene", "Pyramid of 210 boxes", options.quick));
+            show(stack(dir + "lesson08_tower.scene", "Tower of 20 boxes", options.quick));
+        }
+        if (wanted("free-box")) show(freeBox(dir + "reference_free_box.scene", options.quick));
+        if (wanted("bounce")) {
+            show(bounce(dir + "reference_bounce.scene", kDefaultTimeStep));
+            show(bounce(dir + "reference_bounce.scene", kFineTimeStep));
+        }
+        if (wanted("incline")) show(incline(dir + "lesson07_incline.scene"));
+    } catch (const std::exception& error) {
+        std::fprintf(stderr, "stepwise-bench bullet: %s\n", error.what());
+        return 1;
+    }
+    if (options.markdownPath) {
+        std::FILE* out = std::fopen(options.markdownPath->c_str(), "w");
+        if (!out) {
+            std::fprintf(stderr, "stepwise-bench: cannot write %s\n", options.markdownPath->c_str());
+            return 2;
+        }
+        std::fprintf(out, "Bullet %d.%02d (btScalar = %s); last column: Bullet's figure / Stepwise's "
+                          "(above 1: Stepwise better).\n", BT_BULLET_VERSION / 100, BT_BULLET_VERSION % 100,
+                     sizeof(btScalar) == 8 ? "double" : "float");
+        for (const Table& table : tables) table.print(out, true);
+        std::fclose(out);
+    }
+    return 0;
+}
+
+}  // namespace stepwise::bench

@@ -1,0 +1,174 @@
+/// @file scaling_commands.cpp
+/// @brief Parses the options of `stepwise-bench scaling`, `bullet` and `rain-scene`.
+#include "scaling_commands.hpp"
+
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <optional>
+
+#include "scaling.hpp"
+#include "sphere_rain_scene.hpp"
+#ifdef STEPWISE_HAVE_BULLET
+#include "bullet/side_by_side.hpp"
+#endif
+
+namespace stepwise::bench {
+
+const char* const kScalingUsage =
+    "       stepwise-bench scaling [--quick] [--sizes 1000,4000,16000,64000] [--pile-sizes 1000,4000,16000]\n"
+    "                              [--steps 240] [--large-steps 240] [--pile-steps 120] [--seed 1] [--markdown PATH]\n"
+    "                              [--scenes sphere-rain,box-pile,pyramids]\n"
+    "       stepwise-bench bullet [--quick] [--sizes 1000,4000,16000] [--steps 600] [--markdown PATH] [--config DIR]\n"
+    "                             [--scenarios rain,stacks,free-box,bounce,incline]\n"
+    "       stepwise-bench rain-scene --count N [--seed S] --out FILE\n"
+    "\n"
+    "  scaling: Stepwise's ms/step and us per body per step on sphere rain (r = 0.5 m into an open\n"
+    "  box), box piles and pyramids of growing size, and the broadphase tracker's table of each run.\n"
+    "  bullet: the same scene files in Stepwise and in Bullet 3, one table per scenario (sphere rain,\n"
+    "  pyramid, tower, free box, bounce at 1/60 and 1/240 s, incline); needs -DSTEPWISE_WITH_BULLET=ON.\n"
+    "  rain-scene: writes the sphere-rain scene of N spheres (config/bench_sphere_rain_1k.scene is N = 1000).\n";
+
+namespace {
+
+constexpr int kExitUsage = 2;
+
+int usage(const std::string& message) {
+    std::fprintf(stderr, "stepwise-bench: error: %s\n\nusage:\n%s", message.c_str(), kScalingUsage);
+    return kExitUsage;
+}
+
+/// Whole numbers from 1 to 10⁷, or nothing.
+std::optional<std::size_t> count(const std::string& text) {
+    char* end = nullptr;
+    const unsigned long long n = std::strtoull(text.c_str(), &end, 10);
+    constexpr unsigned long long kMost = 10'000'000;
+    if (text.empty() || *end != '\0' || n < 1 || n > kMost) return std::nullopt;
+    return static_cast<std::size_t>(n);
+}
+
+std::optional<std::vector<std::size_t>> counts(const std::string& text) {
+    std::vector<std::size_t> values;
+    std::size_t start = 0;
+    while (start <= text.size()) {
+        const std::size_t comma = text.find(',', start);
+        const auto n = count(text.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+        if (!n) return std::nullopt;
+        values.push_back(*n);
+        if (comma == std::string::npos) break;
+        start = comma + 1;
+    }
+    return values;
+}
+
+/// The comma-separated words of @p text.
+std::vector<std::string> names(const std::string& text) {
+    std::vector<std::string> words;
+    std::size_t start = 0;
+    while (start <= text.size()) {
+        const std::size_t comma = text.find(',', start);
+        words.push_back(text.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+        if (comma == std::string::npos) break;
+        start = comma + 1;
+    }
+    return words;
+}
+
+/// Walks @p args: flags call their handler; options take the next argument and
+/// their handler returns false when it is not valid.
+int parse(const std::vector<std::string>& args, const std::map<std::string, std::function<void()>>& flags,
+          const std::map<std::string, std::function<bool(const std::string&)>>& options) {
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        if (const auto flag = flags.find(args[i]); flag != flags.end()) {
+            flag->second();
+            continue;
+        }
+        const auto option = options.find(args[i]);
+        if (option == options.end()) return usage("unknown option '" + args[i] + "'");
+        if (i + 1 >= args.size()) return usage(args[i] + " needs a value");
+        if (!option->second(args[i + 1])) return usage("bad value '" + args[i + 1] + "' for " + args[i]);
+        ++i;
+    }
+    return 0;
+}
+
+}  // namespace
+
+int scalingCommand(const std::vector<std::string>& args) {
+    ScalingOptions o;
+    const auto steps = [](int& target) {
+        return [&target](const std::string& v) {
+            const auto n = count(v);
+            if (n) target = static_cast<int>(*n);
+            return n.has_value();
+        };
+    };
+    const auto list = [](std::vector<std::size_t>& target) {
+        return [&target](const std::string& v) {
+            const auto n = counts(v);
+            if (n) target = *n;
+            return n.has_value();
+        };
+    };
+    const int status = parse(args, {{"--quick", [&] { o.quick = true; }}},
+                             {{"--sizes", list(o.rainSizes)},
+                              {"--pile-sizes", list(o.pileSizes)},
+                              {"--steps", steps(o.rainSteps)},
+                              {"--large-steps", steps(o.largeRainSteps)},
+                              {"--pile-steps", steps(o.pileSteps)},
+                              {"--seed", [&](const std::string& v) { o.seed = std::strtoull(v.c_str(), nullptr, 10); return true; }},
+                              {"--scenes", [&](const std::string& v) { o.scenes = names(v); return true; }},
+                              {"--markdown", [&](const std::string& v) { o.markdownPath = v; return true; }}});
+    return status ? status : runScaling(o);
+}
+
+int bulletCommand([[maybe_unused]] const std::vector<std::string>& args) {
+#ifdef STEPWISE_HAVE_BULLET
+    SideBySideOptions o;
+    o.configDir = STEPWISE_CONFIG_DIR;
+    const int status = parse(args, {{"--quick", [&] { o.quick = true; }}},
+                             {{"--sizes", [&](const std::string& v) {
+                                   const auto n = counts(v);
+                                   if (n) o.rainSizes = *n;
+                                   return n.has_value();
+                               }},
+                              {"--config", [&](const std::string& v) { o.configDir = v; return true; }},
+                              {"--steps", [&](const std::string& v) {
+                                   const auto n = count(v);
+                                   if (n) o.rainSteps = static_cast<int>(*n);
+                                   return n.has_value();
+                               }},
+                              {"--scenarios", [&](const std::string& v) { o.scenarios = names(v); return true; }},
+                              {"--markdown", [&](const std::string& v) { o.markdownPath = v; return true; }}});
+    return status ? status : runSideBySide(o);
+#else
+    std::fprintf(stderr,
+                 "stepwise-bench: built without Bullet: install it (STEPWISE_WITH_BULLET=1 scripts/setup.sh, or\n"
+                 "apt-get install libbullet-dev pkg-config) and configure with -DSTEPWISE_WITH_BULLET=ON\n");
+    return kExitUsage;
+#endif
+}
+
+int rainSceneCommand(const std::vector<std::string>& args) {
+    std::optional<std::size_t> n;
+    std::uint64_t seed = 1;
+    std::string out;
+    const int status = parse(args, {},
+                             {{"--count", [&](const std::string& v) { n = count(v); return n.has_value(); }},
+                              {"--seed", [&](const std::string& v) { seed = std::strtoull(v.c_str(), nullptr, 10); return true; }},
+                              {"--out", [&](const std::string& v) { out = v; return true; }}});
+    if (status) return status;
+    if (!n || out.empty()) return usage("rain-scene needs --count N and --out FILE");
+    std::ofstream file(out);
+    file << sphereRainSceneText(*n, seed);
+    if (!file) {
+        std::fprintf(stderr, "stepwise-bench: cannot write %s\n", out.c_str());
+        return 1;
+    }
+    std::printf("wrote %s: %zu spheres, seed %llu\n", out.c_str(), *n, static_cast<unsigned long long>(seed));
+    return 0;
+}
+
+}  // namespace stepwise::bench

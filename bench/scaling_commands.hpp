@@ -1,0 +1,24 @@
+/// @file scaling_commands.hpp
+/// @brief The command lines of `stepwise-bench scaling`, `bullet` and `rain-scene` (bench/main.cpp dispatches).
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace stepwise::bench {
+
+/// @brief `stepwise-bench scaling [--quick] [--sizes LIST] [--pile-sizes LIST] [--steps N] [--large-steps N]
+/// [--pile-steps N] [--seed S] [--markdown PATH]`; @p args start after the subcommand. Returns the exit code.
+int scalingCommand(const std::vector<std::string>& args);
+
+/// @brief `stepwise-bench bullet [--quick] [--sizes LIST] [--markdown PATH] [--config DIR]`; exit code 2 with
+/// a message when the program was built without Bullet.
+int bulletCommand(const std::vector<std::string>& args);
+
+/// @brief `stepwise-bench rain-scene --count N [--seed S] --out FILE`: writes the sphere-rain scene.
+int rainSceneCommand(const std::vector<std::string>& args);
+
+/// @brief Usage of the three commands, for `stepwise-bench --help`.
+extern const char* const kScalingUsage;
+
+}  // namespace stepwise::bench

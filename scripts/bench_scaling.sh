@@ -1,0 +1,133 @@
+#!/usr/bin/env bash
+# The "Scaling" and "Side by side with Bullet" sections of docs/benchmarks.md (issues #6 and #7).
+#
+#   scripts/bench_scaling.sh --run scaling   runs `stepwise-bench scaling` (build/release; tens of minutes of
+#                                            CPU, most of it the 64k-sphere rain) into docs/data/bench-scaling.txt
+#   scripts/bench_scaling.sh --run bullet    runs `stepwise-bench bullet` (installs Bullet with
+#                                            `scripts/setup.sh --with-bullet`, builds build/bullet with
+#                                            -DSTEPWISE_WITH_BULLET=ON) into docs/data/bench-bullet.txt
+#   scripts/bench_scaling.sh --sections      prints both sections as Markdown, from those two files
+#
+# `scripts/bench.sh --scaling --bullet` runs both and rewrites the page; plain
+# `scripts/bench.sh` keeps the last measured tables. The data files are Markdown
+# kept as .txt so that Doxygen (which reads docs/**/*.md) does not make pages of them.
+set -euo pipefail
+
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+cd "$root"
+scaling_data=docs/data/bench-scaling.txt
+bullet_data=docs/data/bench-bullet.txt
+jobs=${STEPWISE_JOBS:-2}
+
+# How a table was made: enough to tell two machines' tables apart.
+provenance() {
+    local cpu commit
+    cpu=$(lscpu 2>/dev/null | sed -n 's/^Model name: *//p' | head -1)
+    commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
+    if [[ -n $(git status --porcelain -- src bench config 2>/dev/null) ]]; then commit+=" (with uncommitted changes)"; fi
+    echo "Measured on ${cpu:-unknown CPU}, $(nproc) cores, load average $(cut -d' ' -f1-3 /proc/loadavg) at the start;"
+    echo "$(date -u '+%Y-%m-%d %H:%M UTC'), commit ${commit}, $(c++ --version | head -1), Release (-O3, \`Real\` = double)."
+    echo "Command: \`$1\`."
+}
+
+run() {
+    local what=$1 build_dir tables
+    tables=$(mktemp)
+    trap 'rm -f "$tables"' RETURN
+    if [[ $what == bullet ]]; then
+        bash scripts/setup.sh --with-bullet >&2
+        build_dir=build/bullet
+        cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=Release -DSTEPWISE_WITH_BULLET=ON \
+              -DSTEPWISE_BUILD_TESTS=OFF -DSTEPWISE_VIEWER=OFF >&2
+    else
+        bash scripts/setup.sh >&2
+        build_dir=build/release
+        [[ -f $build_dir/build.ninja ]] || cmake --preset release >&2
+    fi
+    cmake --build "$build_dir" -j "$jobs" --target stepwise-bench >&2
+    local command=("$build_dir/bench/stepwise-bench" "$what" --markdown "$tables")
+    echo "bench_scaling.sh: ${command[*]}" >&2
+    local header
+    header=$(provenance "${command[*]/$tables/TABLES}")
+    "${command[@]}" >&2
+    { echo "$header"; echo; cat "$tables"; } > "docs/data/bench-$what.txt"
+    echo "bench_scaling.sh: wrote docs/data/bench-$what.txt" >&2
+}
+
+sections() {
+    cat <<'EOF'
+## Scaling {#benchmarks-scaling}
+
+`stepwise-bench scaling` (issue #6) runs Stepwise alone on three scenes of
+growing size and times `World::step()` step by step:
+
+- **sphere rain**: N spheres of radius 0.5 m (524 kg, elasticity 0.3,
+  friction 0.5) dropped from a jittered lattice of 16 layers into a box of
+  five planes open at the top, whose floor grows with N (so the pile is as
+  deep at 1k as at 64k); bench/sphere_rain_scene.cpp writes it from a seed,
+  and `config/bench_sphere_rain_1k.scene` is the 1000-sphere one
+  (`stepwise-bench rain-scene --count N --out FILE` writes any other). By
+  default a rain runs 240 steps (4 s: the fall and the first settling), not
+  the 600 of the side-by-side, so that 64k spheres take minutes of CPU, not
+  an hour; the *steps* column says how many each row ran;
+- **box-pile** and **pyramids**: the scenes of `stepwise generate`
+  (src/config/scene_generator.cpp), 120 steps (2 s, as bench/broadphase).
+
+A step of a good engine costs O(n), so *CPU µs per body per step* should
+stay flat as n grows. The time is the process's CPU time per step (median
+over the run): the machine is shared, and on it a step's wall-clock time
+counts the time other people's compilers held the core (the wall-clock median
+is in the table too). The worst overlap is the deepest sphere–sphere or
+sphere–plane overlap at any step; *escaped* counts the spheres whose centre
+ended behind a plane. Under the table, the broadphase tracker's table of
+each run (`stepwise bench broadphase`, docs/broadphase.md), observed on one
+step in 10.
+
+EOF
+    if [[ -f $scaling_data ]]; then cat "$scaling_data"; else
+        echo "Not measured yet: run \`scripts/bench_scaling.sh --run scaling\`."; fi
+    cat <<'EOF'
+
+## Side by side with Bullet {#benchmarks-bullet}
+
+`stepwise-bench bullet` (issue #7; built only with
+`-DSTEPWISE_WITH_BULLET=ON`, after `scripts/setup.sh --with-bullet`) loads
+each scene file once, builds a Stepwise `World` and a Bullet 3
+`btDiscreteDynamicsWorld` from the same `Scene` (bench/bullet/bullet_world.cpp
+maps spheres, boxes, planes, mass, inertia, elasticity and friction), steps
+both with the same h, and measures both with the same code from their body
+states (bench/scenario_metrics.cpp). The expected values are physics: apexes
+e^(2n)·h₀, incline accelerations g·sinθ/(1+k) or g·(sinθ − μ·cosθ), a
+constant angular momentum. The last column is Bullet's figure divided by
+Stepwise's, for figures where smaller is better: above 1, Stepwise does better.
+
+The settings on both sides, so that the comparison is fair:
+
+| | Stepwise | Bullet 3.24 (Debian `libbullet-dev`, `btScalar` = float) |
+|---|---|---|
+| solver | the scene's: `SequentialImpulse` by default (16 substeps, 1 velocity and 1 relax iteration each, soft contacts at 240 Hz, warm starting); the free box, bounce and incline scenes say `Solver=Impulse` (10 iterations) | `btSequentialImpulseConstraintSolver`, 10 iterations, warm starting, split impulse (below 4 cm of penetration), ERP 0.2 |
+| step | `World::step()`, h from the scene | `stepSimulation(h, 1, h)`: exactly one step of h |
+| broadphase | `Auto` (chooses from the scene) | `btDbvtBroadphase` |
+| sleeping | the scene's `Sleep` (default on: still under 0.05 m/s and 0.05 rad/s for 0.5 s); tower and pyramid say `Sleep=false` | `Sleep=false`: `DISABLE_DEACTIVATION` on every body; otherwise Bullet's default (under 0.8 m/s and 1 rad/s for 2 s) |
+| restitution | product e_A·e_B; a contact that arrives slower than gravity gives it in a few steps does not bounce | product (`btManifoldResult`); no bounce under `m_restitutionVelocityThreshold`, 0.2 m/s |
+| friction | product μ_A·μ_B, two tangent directions | product, clamped to 10; one friction direction, along the sliding velocity (the default solver mode has no second one) |
+| inertia | from the shape (hollow spheres ⅔·m·r²) | Stepwise's principal moments, given to `setMassProps` (so hollow spheres match) |
+| rotation | angular momentum L is the state: torque-free L is exact | ω is the state, implicit gyroscopic term (Bullet's default since 2.83) |
+| continuous collision | speculative contacts (the sweep of each body) | none (Bullet's default) |
+
+Both engines run single-threaded here. The scenario tables:
+
+EOF
+    if [[ -f $bullet_data ]]; then cat "$bullet_data"; else
+        echo "Not measured yet: run \`scripts/bench_scaling.sh --run bullet\`."; fi
+}
+
+case ${1:-} in
+    --run)
+        case ${2:-} in
+            scaling|bullet) run "$2" ;;
+            *) echo "bench_scaling.sh: --run needs scaling or bullet" >&2; exit 2 ;;
+        esac ;;
+    --sections) sections ;;
+    *) sed -n '2,13p' "$0"; exit 2 ;;
+esac
