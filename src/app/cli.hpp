@@ -34,6 +34,7 @@ struct RunOptions {
     std::optional<std::uint64_t> steps;   ///< --steps N: number of steps (alternative to --duration).
     std::optional<std::string> csvPath;   ///< --csv PATH: write the trajectory here.
     std::uint64_t every = 1;              ///< --every K: write a CSV sample every K steps.
+    std::optional<int> threads;           ///< --threads N: overrides the scene's World Threads (0: one per hardware thread).
 };
 
 /// @brief Parses the arguments after `run`. @throws UsageError.

@@ -231,6 +231,7 @@ int runCommand(const RunOptions& options) {
     printSceneHeader(options.scenePath, *scene);
     const std::vector<Expectation> expectations = scene->expectations;
 
+    if (options.threads) scene->settings.threads = *options.threads;
     World world(std::move(*scene));
     // Observes between steps only: the trajectory is the same with or without Expect records.
     ExpectationMonitor monitor(world, expectations);

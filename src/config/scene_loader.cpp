@@ -321,6 +321,9 @@ private:
         settings.sleepLinearSpeed = values.number("SleepLinearSpeed", defaults.sleepLinearSpeed);
         settings.sleepAngularSpeed = values.number("SleepAngularSpeed", defaults.sleepAngularSpeed);
         settings.timeToSleep = values.number("TimeToSleep", defaults.timeToSleep);
+        settings.continuousCollision =
+            values.choice<bool>("ContinuousCollision", kBooleanChoices, defaults.continuousCollision);
+        settings.threads = count("Threads", defaults.threads);
     }
 
     /// An Expect record (src/world/expectations.hpp): exactly one quantity,

@@ -116,6 +116,8 @@ constexpr FieldSpec kWorldFields[] = {
     {"SleepAngularSpeed",   FieldKind::Number,  kNamedOnly, Range::NonNegative},      // rad/s
     {"TimeToSleep",         FieldKind::Number,  kNamedOnly, Range::Positive, kTimeHint}, // s
     {"Broadphase",          FieldKind::Broadphase, kNamedOnly, Range::Any},       // docs/broadphase.md
+    {"ContinuousCollision", FieldKind::Boolean, kNamedOnly, Range::Any},              // src/collision/continuous.hpp
+    {"Threads",             FieldKind::Number,  kNamedOnly, Range::WholeNumber},      // 0: one per hardware thread
 };
 
 /// Expect: one checked outcome (src/world/expectations.hpp), named fields only.

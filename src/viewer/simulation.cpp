@@ -221,6 +221,9 @@ std::string Simulation::describeStage(Stage stage) const {
         case Stage::Sleep:
             text += "done";
             break;
+        case Stage::Continuous:
+            text += std::to_string(w.bodiesStoppedAtImpact()) + " fast bodies stopped at their time of impact";
+            break;
         case Stage::Count: break;
     }
     const StageRecord& record = w.stageRecords()[static_cast<std::size_t>(stage)];

@@ -2,6 +2,7 @@
 /// @brief The step pipeline, read top to bottom in World::step().
 #include "world/world.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <functional>
@@ -39,6 +40,9 @@ World::World(Scene scene)
     require(settings_.substeps >= 1, "World", "substeps must be at least 1");
     require(settings_.velocityIterations >= 1, "World", "iterations must be at least 1");
     require(settings_.relaxIterations >= 0, "World", "relax iterations must not be negative");
+    require(settings_.threads >= 0, "World", "threads must not be negative (0: one per hardware thread)");
+    threadPool_ = std::make_unique<ThreadPool>(settings_.threads == kAutoThreads ? autoThreadCount()
+                                                                                 : static_cast<unsigned>(settings_.threads));
     for (DynamicObject& body : dynamics_) {
         require(isFinite(body.mass) && body.mass > 0, body.name, "mass must be > 0 kg");
         require(isFinite(body.radius) && body.radius > 0, body.name, "radius must be > 0 m");
@@ -113,16 +117,27 @@ void World::stepWithImpulses() {
     runStage(Stage::ApplyForces, [&] { forces(dynamics_); });
 
     // 2. Advance dynamic bodies by h (src/integrators/*.cpp)
-    runStage(Stage::Integrate, [&] { integrate(h, forces); });
+    runStage(Stage::Integrate, [&] {
+        if (settings_.continuousCollision) recordStartPositions(bodies(), sweepWorkspace_);  // for stage 3b
+        integrate(h, forces);
+    });
 
     // 3. Advance kinematic bodies along their prescribed motion (src/integrators/kinematic_motion.cpp)
     runStage(Stage::MoveKinematics, [&] { moveKinematics(kinematics_, h); });
+
+    // 3b. A body that moved farther than its half-thickness goes back to where its path first
+    //     touched something, so it cannot pass through a wall (src/collision/continuous.cpp)
+    if (settings_.continuousCollision) {
+        runStage(Stage::Continuous, [&] { stopFastBodiesAtImpact(bodies(), sweepWorkspace_); });
+    }
 
     // 4. Which pairs might touch? (src/collision/broadphase.cpp → broadphase_*.cpp)
     runStage(Stage::Broadphase, [&] { broadphase_.findPairs(settings_.broadphase, bodies(), pairs_); });
 
     // 5. Which of them do, where, and how deep? (src/collision/narrowphase.cpp → sphere_*.cpp)
-    runStage(Stage::Narrowphase, [&] { findContacts(bodies(), pairs_, contacts_); });
+    runStage(Stage::Narrowphase, [&] {
+        findContacts(bodies(), pairs_, contacts_, *threadPool_, narrowphaseWorkspace_);
+    });
 
     // 6. Impulses: bounce and friction change velocities (src/dynamics/impulse_resolver.cpp)
     runStage(Stage::ResolveImpulses, [&] {
@@ -142,6 +157,8 @@ void World::measureSweeps(Real h) {
     for (DynamicObject& body : dynamics_) {
         body.sweep = body.asleep ? Real(0)
                                  : glm::length(body.velocity) * h + Real(0.5) * glm::length(body.acceleration) * h * h;
+        // Beyond this the continuous stage takes over, with the body's exact shape (continuous.hpp)
+        if (settings_.continuousCollision) body.sweep = std::min(body.sweep, speculativeReachLimit(body));
     }
     for (KinematicsObject& body : kinematics_) {
         const Real reach = body.shape == Shape::Sphere ? body.radius : glm::length(body.halfExtents());
@@ -169,6 +186,7 @@ void World::stepWithSequentialImpulses() {
     runStage(Stage::ApplyForces, [&] {
         forces(dynamics_);
         measureSweeps(h);
+        if (settings_.continuousCollision) recordStartPositions(bodies(), sweepWorkspace_);  // for stage 7b
     });
 
     // 2. Which pairs might touch? Sleepers against static objects cannot, jointed bodies do not.
@@ -180,7 +198,9 @@ void World::stepWithSequentialImpulses() {
     });
 
     // 3. Which of them touch, or are about to (src/collision/narrowphase.cpp → *_*.cpp)
-    runStage(Stage::Narrowphase, [&] { findContacts(bodies(), pairs_, contacts_); });
+    runStage(Stage::Narrowphase, [&] {
+        findContacts(bodies(), pairs_, contacts_, *threadPool_, narrowphaseWorkspace_);
+    });
 
     // 4. Contacts and joints → constraints; an awake body wakes the islands it touches
     //    (src/dynamics/contact_solver.cpp, src/dynamics/joints/joint.cpp, src/dynamics/islands.cpp)
@@ -221,6 +241,12 @@ void World::stepWithSequentialImpulses() {
                 solveContacts(solverWorkspace_, contactSettings, false);
             }
         });
+    }
+
+    // 7b. A body that moved farther than its half-thickness, through a wall no contact of this
+    //     step held, goes back to where its path first touched it (src/collision/continuous.cpp)
+    if (settings_.continuousCollision) {
+        runStage(Stage::Continuous, [&] { stopFastBodiesAtImpact(bodies(), sweepWorkspace_); });
     }
 
     // 8. Bounces, once per step, from the approach speed at touch (src/dynamics/contact_solver.cpp);
@@ -288,6 +314,7 @@ const char* stageName(Stage stage) {
         case Stage::RelaxConstraints: return "relax-constraints";
         case Stage::Restitution: return "restitution";
         case Stage::Sleep: return "sleep";
+        case Stage::Continuous: return "continuous";
         case Stage::Count: break;
     }
     return "?";

@@ -3,12 +3,16 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string_view>
 #include <vector>
 
 #include "collision/broadphase.hpp"
 #include "collision/contact.hpp"
+#include "collision/continuous.hpp"
+#include "collision/narrowphase.hpp"
+#include "core/thread_pool.hpp"
 #include "dynamics/contact_solver.hpp"
 #include "collision/raycast.hpp"
 #include "dynamics/impulse_resolver.hpp"
@@ -63,6 +67,10 @@ public:
     const std::vector<ImpulseReport>& impulses() const { return impulses_; }     ///< One per contact, last step.
     const StageRecords& stageRecords() const { return stageRecords_; }           ///< Per-stage timing.
     const Broadphase& broadphase() const { return broadphase_; }  ///< Stage 4's state: which kind ran, Auto's reason.
+    /// @brief Threads the narrowphase uses (the World's `Threads`, 0 resolved to the hardware's count).
+    unsigned threadCount() const { return threadPool_->threadCount(); }
+    /// @brief Fast bodies the continuous stage moved back to their time of impact in the last step.
+    std::size_t bodiesStoppedAtImpact() const { return sweepWorkspace_.lastClamped; }
 
     /// @brief The first body the ray from @p origin along @p direction meets within @p maxDistance
     /// (src/world/world_raycast.cpp); nothing when it meets none.
@@ -100,6 +108,10 @@ private:
     IslandWorkspace islandWorkspace_;
     JointWorkspace jointWorkspace_;
     std::vector<BodyLink> links_;  ///< Bodies held together by joints (for islands).
+
+    std::unique_ptr<ThreadPool> threadPool_;  ///< Created once here; a pointer so that the World can be moved.
+    NarrowphaseWorkspace narrowphaseWorkspace_;
+    SweepWorkspace sweepWorkspace_;
 
     StageRecords stageRecords_{};
     Real time_ = 0;
