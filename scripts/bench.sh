@@ -129,5 +129,11 @@ The same numbers, and every other measurement, are in
 [\`docs/data/precision.csv\`](data/precision.csv) (one row per problem,
 integrator, time step and metric).
 EOF
+    # Threads and continuous collision: measured by hand with stepwise_bench_threads (minutes
+    # at 16k bodies, so not part of this sweep); the section lives in docs/data/threads.md.
+    if [[ -f docs/data/threads.md ]]; then
+        echo
+        cat docs/data/threads.md
+    fi
 } > docs/benchmarks.md
 echo "bench.sh: wrote docs/benchmarks.md, docs/data/precision.csv and docs/images/precision-*.png" >&2

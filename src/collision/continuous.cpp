@@ -143,8 +143,6 @@ Real innerRadius(const DynamicObject& body) {
     return glm::min(e.x, glm::min(e.y, e.z));
 }
 
-Real speculativeReachLimit(const DynamicObject& body) { return kFastMotionFraction * innerRadius(body); }
-
 namespace {
 
 Aabb currentBounds(const Geometry& g) {
@@ -175,9 +173,8 @@ Real earliestImpact(const BodySet& bodies, std::size_t index, const Vec3& start)
         const Geometry other = geometryOf(body);
         if (swept.overlaps(currentBounds(other))) consider(other);
     }
-    for (const CollisionPlane& plane : bodies.planes) {
-        if (aabbTouchesPlane(swept, plane)) consider(geometryOf(plane));
-    }
+    // No planes: a plane bounds a solid half-space, as thick as can be, so however deep
+    // a step carries a body behind it, the push-out along its normal sends it back out.
     return earliest;
 }
 

@@ -40,9 +40,20 @@
 /// Catto's talk discusses the trade). Other bodies are taken where they are
 /// at the end of the step, so two fast bodies flying through each other can
 /// still miss. A pair that already touches at the start is left to the
-/// contact solver, which already holds it. Solver=SequentialImpulse finds a
-/// sphere's contacts ahead of it already (speculative contacts, sweep in
-/// narrowphase.cpp), so there this stage mostly stops fast boxes.
+/// contact solver, which already holds it. Planes are not swept against: a
+/// plane bounds a solid half-space, so a body carried however deep behind it
+/// is pushed back out along its normal (lecture 3's bounce at h = 1/15 s
+/// relies on it).
+///
+/// **With the sequential-impulse solver.** Its narrowphase finds a sphere's
+/// contacts as far ahead as the sphere can move (GameObject::sweep:
+/// *speculative* contacts). For a fast sphere that reach is long, and a
+/// contact found across it acts as a plane through the closest point: a ball
+/// passing a wall's edge 1 mm clear bounced off that plane (a *ghost
+/// collision*, Catto, GDC 2013). With this stage on, a sphere's reach towards
+/// another body is capped at kFastMotionFraction × its radius
+/// (findContacts(), narrowphase.cpp) and this stage follows the rest of the
+/// path with the exact shapes; towards a plane the full sweep is kept.
 ///
 /// **Cost.** One pass over the bodies comparing |Δ| with their size; only a
 /// fast body tests its swept bounding box against every other body (O(n)
@@ -73,17 +84,6 @@ inline constexpr Real kFastMotionFraction = Real(1);
 /// @brief A body's inner radius, m: a sphere's radius, a box's smallest half edge.
 Real innerRadius(const DynamicObject& body);
 
-/// @brief The farthest a body's contacts may be looked for ahead of it when
-/// continuous collision is on, m: kFastMotionFraction × innerRadius().
-///
-/// The sequential-impulse step finds a sphere's contacts as far ahead as it
-/// can move (GameObject::sweep, *speculative* contacts). For a fast sphere
-/// that reach is long, and a contact found across it is treated as a plane
-/// through the closest point: a ball passing a wall's edge 1 mm clear would
-/// bounce off that plane (a *ghost collision*, Catto, GDC 2013). With
-/// continuous collision on, the sweep is capped here and the stage in this
-/// file handles the rest of a fast body's path with its exact shape.
-Real speculativeReachLimit(const DynamicObject& body);
 
 /// Most separation tests per candidate pair. The tangent steps converge like
 /// Newton's method (a head-on approach in one step, an oblique one in a few);

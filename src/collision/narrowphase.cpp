@@ -8,6 +8,8 @@
 
 #include <algorithm>
 
+#include "collision/continuous.hpp"
+
 namespace stepwise {
 
 namespace {
@@ -78,7 +80,8 @@ Real sweepOf(const BodySet& bodies, const BodyRef& ref) {
 namespace {
 
 /// The exact test of one candidate pair; its contacts are appended to @p contacts.
-void collidePair(const BodySet& bodies, const CandidatePair& pair, std::vector<Contact>& contacts) {
+void collidePair(const BodySet& bodies, const CandidatePair& pair, bool continuousCollision,
+                 std::vector<Contact>& contacts) {
     Geometry a = geometryOf(bodies.dynamics[pair.a]);
     Geometry b = geometryOf(bodies, pair.b);
     // Every pair of shapes that can meet has a test; nullptr is left only
@@ -89,8 +92,13 @@ void collidePair(const BodySet& bodies, const CandidatePair& pair, std::vector<C
     // Sweep: a sphere's test reaches as far as the two bodies can close
     // this step (GameObject::sweep), found by testing a sphere grown by
     // that much; depths and points are then given back for the real one.
-    const Real reach = bodies.dynamics[pair.a].sweep + sweepOf(bodies, pair.b);
+    Real reach = bodies.dynamics[pair.a].sweep + sweepOf(bodies, pair.b);
     Geometry& grown = a.type == GeometryType::Sphere ? a : b;
+    // Past a fraction of the sphere's radius the continuous stage follows the path
+    // with the exact shapes; a plane cannot be tunnelled through (continuous.hpp).
+    if (continuousCollision && b.type != GeometryType::Plane) {
+        reach = std::min(reach, kFastMotionFraction * grown.radius);
+    }
     const bool grows = reach > 0 && grown.type == GeometryType::Sphere;
     if (grows) grown.radius += reach;
 
@@ -111,13 +119,15 @@ void collidePair(const BodySet& bodies, const CandidatePair& pair, std::vector<C
 
 void findContacts(const BodySet& bodies, const std::vector<CandidatePair>& pairs, std::vector<Contact>& contacts) {
     contacts.clear();
-    for (const CandidatePair& pair : pairs) collidePair(bodies, pair, contacts);
+    for (const CandidatePair& pair : pairs) collidePair(bodies, pair, false, contacts);
 }
 
 void findContacts(const BodySet& bodies, const std::vector<CandidatePair>& pairs, std::vector<Contact>& contacts,
-                  ThreadPool& pool, NarrowphaseWorkspace& workspace) {
+                  bool continuousCollision, ThreadPool& pool, NarrowphaseWorkspace& workspace) {
     if (pool.threadCount() == 1 || pairs.size() <= kPairsPerChunk) {
-        findContacts(bodies, pairs, contacts);  // one chunk: the merge below would only copy
+        // One chunk: the merge below would only copy.
+        contacts.clear();
+        for (const CandidatePair& pair : pairs) collidePair(bodies, pair, continuousCollision, contacts);
         return;
     }
     // Chunk c holds pairs [c·k, (c+1)·k), k = kPairsPerChunk, whatever the
@@ -130,7 +140,7 @@ void findContacts(const BodySet& bodies, const std::vector<CandidatePair>& pairs
         std::vector<Contact>& out = workspace.chunkContacts[c];
         out.clear();  // keeps its capacity: no allocation once the scene has settled
         const std::size_t end = std::min(pairs.size(), (c + 1) * kPairsPerChunk);
-        for (std::size_t i = c * kPairsPerChunk; i < end; ++i) collidePair(bodies, pairs[i], out);
+        for (std::size_t i = c * kPairsPerChunk; i < end; ++i) collidePair(bodies, pairs[i], continuousCollision, out);
     };
     pool.run(chunks, runChunk);
 

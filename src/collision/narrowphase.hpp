@@ -91,7 +91,10 @@ struct NarrowphaseWorkspace {
 /// kPairsPerChunk, each chunk's contacts go into its own list, and the lists are joined
 /// in chunk order, so @p contacts is bit-identical to the one-thread result.
 /// @param contacts output, cleared first
+/// @param continuousCollision true when the World's continuous stage runs: a sphere's
+///        contacts with another body are then looked for at most kFastMotionFraction × its radius
+///        ahead of it (src/collision/continuous.hpp explains why); planes keep the full sweep
 void findContacts(const BodySet& bodies, const std::vector<CandidatePair>& pairs, std::vector<Contact>& contacts,
-                  ThreadPool& pool, NarrowphaseWorkspace& workspace);
+                  bool continuousCollision, ThreadPool& pool, NarrowphaseWorkspace& workspace);
 
 }  // namespace stepwise

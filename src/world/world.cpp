@@ -2,7 +2,6 @@
 /// @brief The step pipeline, read top to bottom in World::step().
 #include "world/world.hpp"
 
-#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <functional>
@@ -136,7 +135,7 @@ void World::stepWithImpulses() {
 
     // 5. Which of them do, where, and how deep? (src/collision/narrowphase.cpp → sphere_*.cpp)
     runStage(Stage::Narrowphase, [&] {
-        findContacts(bodies(), pairs_, contacts_, *threadPool_, narrowphaseWorkspace_);
+        findContacts(bodies(), pairs_, contacts_, settings_.continuousCollision, *threadPool_, narrowphaseWorkspace_);
     });
 
     // 6. Impulses: bounce and friction change velocities (src/dynamics/impulse_resolver.cpp)
@@ -157,8 +156,6 @@ void World::measureSweeps(Real h) {
     for (DynamicObject& body : dynamics_) {
         body.sweep = body.asleep ? Real(0)
                                  : glm::length(body.velocity) * h + Real(0.5) * glm::length(body.acceleration) * h * h;
-        // Beyond this the continuous stage takes over, with the body's exact shape (continuous.hpp)
-        if (settings_.continuousCollision) body.sweep = std::min(body.sweep, speculativeReachLimit(body));
     }
     for (KinematicsObject& body : kinematics_) {
         const Real reach = body.shape == Shape::Sphere ? body.radius : glm::length(body.halfExtents());
@@ -199,7 +196,7 @@ void World::stepWithSequentialImpulses() {
 
     // 3. Which of them touch, or are about to (src/collision/narrowphase.cpp → *_*.cpp)
     runStage(Stage::Narrowphase, [&] {
-        findContacts(bodies(), pairs_, contacts_, *threadPool_, narrowphaseWorkspace_);
+        findContacts(bodies(), pairs_, contacts_, settings_.continuousCollision, *threadPool_, narrowphaseWorkspace_);
     });
 
     // 4. Contacts and joints → constraints; an awake body wakes the islands it touches
