@@ -130,10 +130,10 @@ The same numbers, and every other measurement, are in
 integrator, time step and metric).
 EOF
     # Threads and continuous collision: measured by hand with stepwise_bench_threads (minutes
-    # at 16k bodies, so not part of this sweep); the section lives in docs/data/threads.md.
-    if [[ -f docs/data/threads.md ]]; then
+    # at 16k bodies, so not part of this sweep); the section lives in docs/data/threads-section.txt.
+    if [[ -f docs/data/threads-section.txt ]]; then
         echo
-        cat docs/data/threads.md
+        cat docs/data/threads-section.txt
     fi
 } > docs/benchmarks.md
 echo "bench.sh: wrote docs/benchmarks.md, docs/data/precision.csv and docs/images/precision-*.png" >&2
