@@ -172,5 +172,11 @@ EOF
     cat "$stress_table"
     # Scaling and Bullet: the tables of their last measurement (docs/data/bench-*.txt).
     bash scripts/bench_scaling.sh --sections
+    # Threads and continuous collision: measured by hand with stepwise_bench_threads (minutes
+    # at 16k bodies, so not part of this sweep); the section lives in docs/data/threads-section.txt.
+    if [[ -f docs/data/threads-section.txt ]]; then
+        echo
+        cat docs/data/threads-section.txt
+    fi
 } > docs/benchmarks.md
 echo "bench.sh: wrote docs/benchmarks.md, docs/data/precision.csv and docs/images/precision-*.png" >&2

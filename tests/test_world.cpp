@@ -32,7 +32,7 @@ TEST_CASE("Every stage runs once per step and the clock advances by h", "[world]
             INFO(toString(solver) << ": " << stageName(stage));
             std::uint64_t perStep = 1;
             if (solver == SolverKind::Impulse) {
-                if (stage >= Stage::PrepareConstraints) perStep = 0;
+                if (stage >= Stage::PrepareConstraints && stage != Stage::Continuous) perStep = 0;
             } else if (stage == Stage::ResolveImpulses || stage == Stage::CorrectPositions) {
                 perStep = 0;
             } else if (stage == Stage::ApplyForces || stage == Stage::Integrate || stage == Stage::MoveKinematics ||

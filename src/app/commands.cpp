@@ -231,6 +231,7 @@ int runCommand(const RunOptions& options) {
     printSceneHeader(options.scenePath, *scene);
     const std::vector<Expectation> expectations = scene->expectations;
 
+    if (options.threads) scene->settings.threads = *options.threads;
     World world(std::move(*scene));
     if (options.explain) {
         std::printf("\n%s", describeStepPlan(world.plan()).c_str());

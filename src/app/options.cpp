@@ -14,6 +14,7 @@ const char* usageText() {
            "\n"
            "Usage:\n"
            "  stepwise run [FILE] [--duration S | --steps N] [--csv PATH] [--every K] [--explain]\n"
+           "               [--threads N]\n"
            "      Simulate the scene in FILE (the default scene when omitted) and print a\n"
            "      summary: objects, final state, energy, momentum, time per stage.\n"
            "      --duration S  simulated seconds (default: the scene's World Duration)\n"
@@ -24,6 +25,8 @@ const char* usageText() {
            "      --every K     write a CSV sample every K steps (default 1)\n"
            "      --explain     print the step plan first: each stage, whether it runs\n"
            "                    and why (with --steps 0, only the plan)\n"
+           "      --threads N   narrowphase threads, overriding the scene's World Threads\n"
+           "                    (0: one per hardware thread); the results do not change\n"
            "  stepwise view [FILE] [--size WxH] [--log-events PATH]\n"
            "      Open a window onto the scene (H in the window lists the controls);\n"
            "      --log-events writes a line per mouse pick, push and release to PATH.\n"
@@ -88,6 +91,21 @@ std::uint64_t parsePositiveCount(const std::string& option, const std::string& t
     const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
     if (text.empty() || error != std::errc() || end != text.data() + text.size() || value == 0) {
         throw UsageError(option + " expects a whole number > 0, found '" + text + "'");
+    }
+    return value;
+}
+
+/// Most threads --threads accepts: far more than any machine this runs on,
+/// small enough that a typo (--threads 10000) is an error, not 10 000 threads.
+constexpr int kMaxThreads = 256;
+
+/// "--threads N": 0 (one per hardware thread) to kMaxThreads.
+int parseThreadCount(const std::string& option, const std::string& text) {
+    int value = -1;
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (text.empty() || error != std::errc() || end != text.data() + text.size() || value < 0 || value > kMaxThreads) {
+        throw UsageError(option + " expects a whole number from 0 (one per hardware thread) to " +
+                         std::to_string(kMaxThreads) + ", found '" + text + "'");
     }
     return value;
 }
@@ -185,6 +203,8 @@ RunOptions parseRunOptions(const std::vector<std::string>& args, const std::stri
             options.csvPath = value();
         } else if (arg == "--every") {
             options.every = parsePositiveCount(arg, value());
+        } else if (arg == "--threads") {
+            options.threads = parseThreadCount(arg, value());
         } else if (arg.size() > 1 && arg[0] == '-') {
             throw UsageError("unknown option '" + arg + "' for 'run'");
         } else if (sceneGiven) {

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "collision/contact.hpp"
+#include "core/thread_pool.hpp"
 #include "world/body_set.hpp"
 
 namespace stepwise {
@@ -74,5 +75,26 @@ Geometry geometryOf(const BodySet& bodies, const BodyRef& ref);
 /// @brief Runs the exact test on every candidate pair and collects the contacts.
 /// @param contacts output, cleared first
 void findContacts(const BodySet& bodies, const std::vector<CandidatePair>& pairs, std::vector<Contact>& contacts);
+
+/// Candidate pairs per chunk of the threaded narrowphase. A pair test takes
+/// 0.1–1 µs, so a chunk is 50–500 µs of work: long enough that taking a chunk
+/// (one atomic add) costs nothing, short enough that a 4k-body pile (about
+/// 10k pairs) still makes twenty chunks to share out.
+inline constexpr std::size_t kPairsPerChunk = 512;
+
+/// @brief Per-chunk contact lists of the threaded findContacts(), kept between steps.
+struct NarrowphaseWorkspace {
+    std::vector<std::vector<Contact>> chunkContacts;  ///< Contacts of chunk c (pairs c·kPairsPerChunk …).
+};
+
+/// @brief findContacts() on the threads of @p pool: the pairs are cut into chunks of
+/// kPairsPerChunk, each chunk's contacts go into its own list, and the lists are joined
+/// in chunk order, so @p contacts is bit-identical to the one-thread result.
+/// @param contacts output, cleared first
+/// @param continuousCollision true when the World's continuous stage runs: a sphere's
+///        contacts with another body are then looked for at most kFastMotionFraction × its radius
+///        ahead of it (src/collision/continuous.hpp explains why); planes keep the full sweep
+void findContacts(const BodySet& bodies, const std::vector<CandidatePair>& pairs, std::vector<Contact>& contacts,
+                  bool continuousCollision, ThreadPool& pool, NarrowphaseWorkspace& workspace);
 
 }  // namespace stepwise

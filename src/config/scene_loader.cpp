@@ -322,6 +322,9 @@ private:
         settings.sleepAngularSpeed = values.number("SleepAngularSpeed", defaults.sleepAngularSpeed);
         settings.timeToSleep = values.number("TimeToSleep", defaults.timeToSleep);
         settings.stepPlan = values.choice<bool>("StepPlan", kBooleanChoices, defaults.stepPlan);
+        settings.continuousCollision =
+            values.choice<bool>("ContinuousCollision", kBooleanChoices, defaults.continuousCollision);
+        settings.threads = count("Threads", defaults.threads);
     }
 
     /// An Expect record (src/world/expectations.hpp): exactly one quantity,

@@ -117,6 +117,8 @@ constexpr FieldSpec kWorldFields[] = {
     {"TimeToSleep",         FieldKind::Number,  kNamedOnly, Range::Positive, kTimeHint}, // s
     {"Broadphase",          FieldKind::Broadphase, kNamedOnly, Range::Any},       // docs/broadphase.md
     {"StepPlan",            FieldKind::Boolean, kNamedOnly, Range::Any},          // src/world/step_plan.hpp
+    {"ContinuousCollision", FieldKind::Boolean, kNamedOnly, Range::Any},              // src/collision/continuous.hpp
+    {"Threads",             FieldKind::Number,  kNamedOnly, Range::WholeNumber},      // 0: one per hardware thread
 };
 
 /// Expect: one checked outcome (src/world/expectations.hpp), named fields only.

@@ -237,6 +237,9 @@ void TraceObserver::writeStage(const StageEvent& event, const World& world) {
             writeVelocityChanges(head, world);
             break;
         case Stage::Sleep: writeSleep(head, world); break;
+        case Stage::Continuous:
+            line(head, "fast bodies", "stopped at their time of impact: " + std::to_string(world.bodiesStoppedAtImpact()));
+            break;
         case Stage::Count: break;
     }
 }

@@ -262,6 +262,9 @@ void StageWalkthrough::describe(StageSnapshot& s, const World& world) const {
             line.add("%zu asleep, %zu awake", asleep, nd - asleep);
             break;
         }
+        case Stage::Continuous:
+            line.add("%zu fast bodies stopped at their time of impact", world.bodiesStoppedAtImpact());
+            break;
         case Stage::Count: break;
     }
     s.description.assign(line.text());  // keeps the string's storage from the last step

@@ -21,6 +21,7 @@ enum class Stage : std::uint8_t {
     RelaxConstraints,  ///< Sequential impulse, per substep: solve without the push-out bias.
     Restitution,       ///< Sequential impulse, after the substeps: bounces.
     Sleep,             ///< Islands; still islands fall asleep.
+    Continuous,        ///< Fast bodies moved back to their first time of impact (src/collision/continuous.cpp).
     Count              ///< Number of stages (not a stage).
 };
 

@@ -120,6 +120,9 @@ void planStages(const PlanInputs& in, StepPlan& plan) {
         if (!sequential) set(stage, skip(kOtherSequential));
     }
     if (sequential && !in.settings.sleeping) set(Stage::Sleep, skip("skipped: Sleep=false in the World record"));
+    if (!in.settings.continuousCollision) {
+        set(Stage::Continuous, skip("skipped: ContinuousCollision=false in the World record"));
+    }
     if (!plan.enabled) return;  // StepPlan=Off: every stage of the pipeline runs
 
     if (in.dynamics.empty()) {
@@ -139,6 +142,7 @@ void planStages(const PlanInputs& in, StepPlan& plan) {
             set(Stage::ResolveImpulses, skip("skipped: no contact can occur"));
             set(Stage::CorrectPositions, skip("skipped: no contact can occur"));
         }
+        if (in.settings.continuousCollision) set(Stage::Continuous, skip("skipped: no contact can occur"));
     }
     if (sequential && !plan.collisions.runs && !plan.jointSolver.runs) {
         for (Stage stage : {Stage::PrepareConstraints, Stage::SolveConstraints, Stage::RelaxConstraints,
@@ -164,6 +168,8 @@ const char* runReason(Stage stage, bool enabled) {
         case Stage::RelaxConstraints: return "runs: every substep relaxes the push-out";
         case Stage::Restitution: return "runs: bounces, and joints that break";
         case Stage::Sleep: return "runs: islands at rest fall asleep";
+        case Stage::Continuous:
+            return "runs: a body that moves farther than its inner radius in a step stops at its first touch";
         case Stage::Count: break;
     }
     return "runs";

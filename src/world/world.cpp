@@ -53,6 +53,9 @@ World::World(Scene scene)
     require(settings_.substeps >= 1, "World", "substeps must be at least 1");
     require(settings_.velocityIterations >= 1, "World", "iterations must be at least 1");
     require(settings_.relaxIterations >= 0, "World", "relax iterations must not be negative");
+    require(settings_.threads >= 0, "World", "threads must not be negative (0: one per hardware thread)");
+    threadPool_ = std::make_unique<ThreadPool>(settings_.threads == kAutoThreads ? autoThreadCount()
+                                                                                 : static_cast<unsigned>(settings_.threads));
     for (DynamicObject& body : dynamics_) {
         require(isFinite(body.mass) && body.mass > 0, body.name, "mass must be > 0 kg");
         require(isFinite(body.radius) && body.radius > 0, body.name, "radius must be > 0 m");
@@ -160,16 +163,27 @@ void World::stepWithImpulses() {
     runStage(Stage::ApplyForces, [&] { forces(dynamics_); });
 
     // 2. Advance dynamic bodies by h (src/integrators/*.cpp)
-    runStage(Stage::Integrate, [&] { integrate(h, forces); });
+    runStage(Stage::Integrate, [&] {
+        if (settings_.continuousCollision) recordStartPositions(bodies(), sweepWorkspace_);  // for stage 3b
+        integrate(h, forces);
+    });
 
     // 3. Advance kinematic bodies along their prescribed motion (src/integrators/kinematic_motion.cpp)
     runStage(Stage::MoveKinematics, [&] { moveKinematics(kinematics_, h); });
+
+    // 3b. A body that moved farther than its half-thickness goes back to where its path first
+    //     touched something, so it cannot pass through a wall (src/collision/continuous.cpp)
+    if (settings_.continuousCollision) {
+        runStage(Stage::Continuous, [&] { stopFastBodiesAtImpact(bodies(), sweepWorkspace_); });
+    }
 
     // 4. Which pairs might touch? (src/collision/broadphase.cpp → broadphase_*.cpp)
     runStage(Stage::Broadphase, [&] { broadphase_.findPairs(settings_.broadphase, bodies(), pairs_); });
 
     // 5. Which of them do, where, and how deep? (src/collision/narrowphase.cpp → sphere_*.cpp)
-    runStage(Stage::Narrowphase, [&] { findContacts(bodies(), pairs_, contacts_); });
+    runStage(Stage::Narrowphase, [&] {
+        findContacts(bodies(), pairs_, contacts_, settings_.continuousCollision, *threadPool_, narrowphaseWorkspace_);
+    });
 
     // 6. Impulses: bounce and friction change velocities (src/dynamics/impulse_resolver.cpp)
     runStage(Stage::ResolveImpulses, [&] {
@@ -216,6 +230,7 @@ void World::stepWithSequentialImpulses() {
     runStage(Stage::ApplyForces, [&] {
         forces(dynamics_);
         measureSweeps(h);
+        if (settings_.continuousCollision) recordStartPositions(bodies(), sweepWorkspace_);  // for stage 7b
     });
 
     // 2. Which pairs might touch? Sleepers against static objects cannot, jointed bodies do not.
@@ -228,7 +243,9 @@ void World::stepWithSequentialImpulses() {
     });
 
     // 3. Which of them touch, or are about to (src/collision/narrowphase.cpp → *_*.cpp)
-    runStage(Stage::Narrowphase, [&] { findContacts(bodies(), pairs_, contacts_); });
+    runStage(Stage::Narrowphase, [&] {
+        findContacts(bodies(), pairs_, contacts_, settings_.continuousCollision, *threadPool_, narrowphaseWorkspace_);
+    });
 
     // 4. Contacts and joints → constraints; an awake body wakes the islands it touches
     //    (src/dynamics/contact_solver.cpp, src/dynamics/joints/joint.cpp, src/dynamics/islands.cpp)
@@ -278,6 +295,11 @@ void World::stepWithSequentialImpulses() {
     }
 
     substep_ = -1;
+    // 7b. A body that moved farther than its half-thickness, through a wall no contact of this
+    //     step held, goes back to where its path first touched it (src/collision/continuous.cpp)
+    if (settings_.continuousCollision) {
+        runStage(Stage::Continuous, [&] { stopFastBodiesAtImpact(bodies(), sweepWorkspace_); });
+    }
 
     // 8. Bounces, once per step, from the approach speed at touch (src/dynamics/contact_solver.cpp);
     //    joints that pulled harder than their MaxForce break (src/dynamics/joints/joint.cpp)
@@ -361,6 +383,7 @@ const char* stageName(Stage stage) {
         case Stage::RelaxConstraints: return "relax-constraints";
         case Stage::Restitution: return "restitution";
         case Stage::Sleep: return "sleep";
+        case Stage::Continuous: return "continuous";
         case Stage::Count: break;
     }
     return "?";

@@ -3,12 +3,16 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string_view>
 #include <vector>
 
 #include "collision/broadphase.hpp"
 #include "collision/contact.hpp"
+#include "collision/continuous.hpp"
+#include "collision/narrowphase.hpp"
+#include "core/thread_pool.hpp"
 #include "dynamics/contact_solver.hpp"
 #include "collision/raycast.hpp"
 #include "dynamics/impulse_resolver.hpp"
@@ -78,6 +82,10 @@ public:
     /// @brief What each step runs and why (src/world/step_plan.hpp), as of the last step
     /// (or construction); `stepwise run --explain` prints it.
     const StepPlan& plan() const { return plan_; }
+    /// @brief Threads the narrowphase uses (the World's `Threads`, 0 resolved to the hardware's count).
+    unsigned threadCount() const { return threadPool_->threadCount(); }
+    /// @brief Fast bodies the continuous stage moved back to their time of impact in the last step.
+    std::size_t bodiesStoppedAtImpact() const { return sweepWorkspace_.lastClamped; }
 
     /// @brief The first body the ray from @p origin along @p direction meets within @p maxDistance
     /// (src/world/world_raycast.cpp); nothing when it meets none.
@@ -125,6 +133,10 @@ private:
 
     StepPlan plan_;
     bool planStale_ = false;  ///< A body may have changed through dynamics() or kinematics(): replan before stepping.
+    std::unique_ptr<ThreadPool> threadPool_;  ///< Created once here; a pointer so that the World can be moved.
+    NarrowphaseWorkspace narrowphaseWorkspace_;
+    SweepWorkspace sweepWorkspace_;
+
     StageRecords stageRecords_{};
     StepObserver* observer_ = nullptr;
     int substep_ = -1;  ///< Substep being run, −1 outside the substep loop (for StageEvent).

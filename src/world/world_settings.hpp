@@ -83,6 +83,11 @@ inline constexpr Real kDefaultSleepAngularSpeed = Real(0.05);
 /// @brief An island whose bodies have all been still this long, s, falls asleep.
 inline constexpr Real kDefaultTimeToSleep = Real(0.5);
 
+/// @brief `Threads=0`: as many threads as the machine has hardware threads
+/// (std::thread::hardware_concurrency). The results are bit-identical whatever
+/// the number, so only the time a step takes depends on it.
+inline constexpr int kAutoThreads = 0;
+
 /// @brief Global simulation settings: one per World.
 struct WorldSettings {
     Vec3 gravity{0, -kStandardGravity, 0};             ///< Uniform gravitational acceleration, m/s².
@@ -107,6 +112,8 @@ struct WorldSettings {
     Real timeToSleep = kDefaultTimeToSleep;            ///< Still for this long → asleep, s.
     BroadphaseKind broadphase = BroadphaseKind::Auto;  ///< Which broadphase finds the candidate pairs.
     bool stepPlan = true;                              ///< Skip the stages the scene cannot need (src/world/step_plan.hpp).
+    bool continuousCollision = true;                   ///< Fast bodies stop where their path first touches (src/collision/continuous.hpp).
+    int threads = kAutoThreads;                        ///< Threads for the narrowphase, ≥ 0 (kAutoThreads: one per hardware thread).
 };
 
 /// @brief The step the integrator takes, s: TimeStep, or TimeStep/Substeps under

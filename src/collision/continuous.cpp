@@ -1,0 +1,202 @@
+/// @file continuous.cpp
+/// @brief Time of impact by conservative advancement along the tangent of a convex separation.
+///
+/// For every pair the separation d and its growth direction u come from the
+/// same geometry as the narrowphase (Ericson, *Real-Time Collision
+/// Detection*: closest point on a box §5.1.4, plane distance §5.1.1,
+/// separating axes of two boxes §4.4.1). The advancement is in
+/// timeOfImpact(); the derivation is in continuous.hpp.
+#include "collision/continuous.hpp"
+
+#include <cmath>
+#include <limits>
+
+#include "collision/aabb.hpp"
+
+namespace stepwise {
+
+namespace {
+
+/// A cross product of two box axes shorter than this is two parallel edges:
+/// that axis is skipped (the face axes already cover it), as in box_box.cpp.
+constexpr Real kParallelAxesEpsilon = Real(1e-6);
+
+Separation sphereFromSphere(const Geometry& a, const Geometry& b) {
+    const Vec3 offset = a.centre - b.centre;
+    const Real length = glm::length(offset);
+    // Concentric spheres have no direction: any unit vector is a valid subgradient.
+    const Vec3 direction = length > Real(0) ? offset / length : Vec3(0, 1, 0);
+    return {length - a.radius - b.radius, direction};
+}
+
+Separation sphereFromPlane(const Geometry& sphere, const Geometry& plane) {
+    return {glm::dot(sphere.centre - plane.centre, plane.normal) - sphere.radius, plane.normal};
+}
+
+/// Sphere A against box B: the gap from the box's closest point (outside), or
+/// minus the way out through the nearest face (inside), as in sphere_box.cpp.
+Separation sphereFromBox(const Geometry& sphere, const Geometry& box) {
+    const Mat3 rotation = glm::mat3_cast(box.orientation);
+    const Vec3 local = glm::transpose(rotation) * (sphere.centre - box.centre);
+    const Vec3 offset = local - glm::clamp(local, -box.halfExtents, box.halfExtents);
+    const Real length = glm::length(offset);
+    if (length > Real(0)) return {length - sphere.radius, rotation * (offset / length)};
+    int axis = 0;
+    Real leastInside = box.halfExtents.x - std::abs(local.x);
+    for (int i = 1; i < 3; ++i) {
+        const Real inside = box.halfExtents[i] - std::abs(local[i]);
+        if (inside < leastInside) {
+            leastInside = inside;
+            axis = i;
+        }
+    }
+    Vec3 face(0);
+    face[axis] = local[axis] >= Real(0) ? Real(1) : Real(-1);
+    return {-leastInside - sphere.radius, rotation * face};
+}
+
+/// Box A against a plane: the deepest corner's height, n·(c − p) − Σ eᵢ|n·axisᵢ|.
+Separation boxFromPlane(const Geometry& box, const Geometry& plane) {
+    const Mat3 rotation = glm::mat3_cast(box.orientation);
+    Real reach = 0;
+    for (int i = 0; i < 3; ++i) reach += box.halfExtents[i] * std::abs(glm::dot(plane.normal, rotation[i]));
+    return {glm::dot(box.centre - plane.centre, plane.normal) - reach, plane.normal};
+}
+
+/// Box A against box B: the largest separation over the 15 candidate axes L,
+/// s(L) = |L·(c_A − c_B)| − Σ e_Ai|L·a_i| − Σ e_Bj|L·b_j|.
+Separation boxFromBox(const Geometry& a, const Geometry& b) {
+    const Mat3 ra = glm::mat3_cast(a.orientation);
+    const Mat3 rb = glm::mat3_cast(b.orientation);
+    const Vec3 offset = a.centre - b.centre;
+    Separation best{-std::numeric_limits<Real>::infinity(), Vec3(0, 1, 0)};
+    auto tryAxis = [&](const Vec3& axis) {
+        Real extent = 0;
+        for (int i = 0; i < 3; ++i) {
+            extent += a.halfExtents[i] * std::abs(glm::dot(axis, ra[i]));
+            extent += b.halfExtents[i] * std::abs(glm::dot(axis, rb[i]));
+        }
+        const Real along = glm::dot(axis, offset);
+        const Real gap = std::abs(along) - extent;
+        if (gap > best.distance) best = {gap, along >= Real(0) ? axis : -axis};
+    };
+    for (int i = 0; i < 3; ++i) tryAxis(ra[i]);
+    for (int j = 0; j < 3; ++j) tryAxis(rb[j]);
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) {
+            const Vec3 cross = glm::cross(ra[i], rb[j]);
+            const Real length = glm::length(cross);
+            if (length > kParallelAxesEpsilon) tryAxis(cross / length);
+        }
+    }
+    return best;
+}
+
+}  // namespace
+
+Separation separation(const Geometry& a, const Geometry& b) {
+    const bool aSphere = a.type == GeometryType::Sphere;
+    switch (b.type) {
+        case GeometryType::Sphere:
+            if (aSphere) return sphereFromSphere(a, b);
+            {
+                // Box A, sphere B: the sphere's separation from the box, seen from the other side.
+                const Separation s = sphereFromBox(b, a);
+                return {s.distance, -s.direction};
+            }
+        case GeometryType::Box: return aSphere ? sphereFromBox(a, b) : boxFromBox(a, b);
+        case GeometryType::Plane: return aSphere ? sphereFromPlane(a, b) : boxFromPlane(a, b);
+        case GeometryType::Count: break;
+    }
+    return {std::numeric_limits<Real>::infinity(), Vec3(0, 1, 0)};
+}
+
+std::optional<Real> timeOfImpact(const Geometry& a, const Vec3& start, const Geometry& b) {
+    const Vec3 motion = a.centre - start;  // Δ: A's centre is start + t·Δ
+    Geometry moving = a;
+    Real t = 0;
+    for (int iteration = 0; iteration < kMaxAdvancementIterations; ++iteration) {
+        moving.centre = start + t * motion;
+        const Separation s = separation(moving, b);
+        if (s.distance <= kTimeOfImpactTolerance) {
+            // Touching at t = 0: a resting or sliding contact the solver already holds.
+            if (iteration == 0 && s.distance <= kTouchTolerance) return std::nullopt;
+            return t;
+        }
+        const Real slope = glm::dot(s.direction, motion);  // d′(t) = u·Δ
+        if (slope >= Real(0)) return std::nullopt;        // convex d: it only grows from here
+        const Real next = t - s.distance / slope;         // the tangent's root: still before the impact
+        if (next >= Real(1)) return std::nullopt;          // the tangent, below d, stays positive to t = 1
+        t = next;
+    }
+    return t;  // not converged (grazing): stop here, still short of the impact
+}
+
+void recordStartPositions(const BodySet& bodies, SweepWorkspace& workspace) {
+    workspace.startPositions.resize(bodies.dynamics.size());  // allocates only when bodies are added
+    for (std::size_t i = 0; i < bodies.dynamics.size(); ++i) workspace.startPositions[i] = bodies.dynamics[i].position;
+}
+
+Real innerRadius(const DynamicObject& body) {
+    if (body.shape == Shape::Sphere) return body.radius;
+    const Vec3 e = body.halfExtents();
+    return glm::min(e.x, glm::min(e.y, e.z));
+}
+
+namespace {
+
+Aabb currentBounds(const Geometry& g) {
+    return g.type == GeometryType::Sphere ? sphereAabb(g.centre, g.radius)
+                                          : boxAabb(g.centre, g.orientation, g.halfExtents);
+}
+
+/// The earliest impact of body @p index's path against everything else, or 1 (none).
+Real earliestImpact(const BodySet& bodies, std::size_t index, const Vec3& start) {
+    const Geometry moving = geometryOf(bodies.dynamics[index]);
+    Geometry atStart = moving;
+    atStart.centre = start;
+    Aabb swept = merged(currentBounds(atStart), currentBounds(moving));  // everything the path passes through
+    swept.min -= Vec3(kTouchTolerance);
+    swept.max += Vec3(kTouchTolerance);
+
+    Real earliest = 1;
+    auto consider = [&](const Geometry& other) {
+        const std::optional<Real> t = timeOfImpact(moving, start, other);
+        if (t && *t < earliest) earliest = *t;
+    };
+    for (std::size_t j = 0; j < bodies.dynamics.size(); ++j) {
+        if (j == index) continue;
+        const Geometry other = geometryOf(bodies.dynamics[j]);
+        if (swept.overlaps(currentBounds(other))) consider(other);
+    }
+    for (const KinematicsObject& body : bodies.kinematics) {
+        const Geometry other = geometryOf(body);
+        if (swept.overlaps(currentBounds(other))) consider(other);
+    }
+    // No planes: a plane bounds a solid half-space, as thick as can be, so however deep
+    // a step carries a body behind it, the push-out along its normal sends it back out.
+    return earliest;
+}
+
+}  // namespace
+
+std::size_t stopFastBodiesAtImpact(const BodySet& bodies, SweepWorkspace& workspace) {
+    std::size_t clamped = 0;
+    // In index order, each against the others as they are now (some already
+    // moved back): the same scene gives the same result every run.
+    for (std::size_t i = 0; i < bodies.dynamics.size() && i < workspace.startPositions.size(); ++i) {
+        DynamicObject& body = bodies.dynamics[i];
+        const Vec3 start = workspace.startPositions[i];
+        const Real moved = glm::length(body.position - start);
+        if (moved <= kFastMotionFraction * innerRadius(body)) continue;  // slow: nothing can be skipped
+        const Real t = earliestImpact(bodies, i, start);
+        if (t < Real(1)) {
+            body.position = start + t * (body.position - start);
+            ++clamped;
+        }
+    }
+    workspace.lastClamped = clamped;
+    return clamped;
+}
+
+}  // namespace stepwise

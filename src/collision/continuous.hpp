@@ -1,0 +1,127 @@
+/// @file continuous.hpp
+/// @brief Continuous collision: a fast body is stopped where its path first touches something.
+///
+/// The stages find contacts at poses, once per step. A body that moves
+/// farther in one step than its own half-thickness can start a step in front
+/// of a thin wall and end it behind (or deep inside, past its middle, where
+/// the push-out goes the wrong way): *tunnelling*. This stage runs after the
+/// bodies have moved. For each *fast* body (one that moved more than
+/// kFastMotionFraction of its inner radius) it sweeps the body's shape along
+/// the straight line from its pose at the start of the step to its pose now,
+/// finds the first time of impact t ∈ [0, 1] against every other body and
+/// plane, and puts the body back at the pose of that time, touching. Its
+/// velocity is kept, so the next narrowphase finds a touching contact moving
+/// in, and the solver stops or bounces it as at any impact.
+///
+/// **The choice: conservative advancement on the exact shapes, translation only.**
+/// A box is swept as a box, not as its bounding sphere: a box stopped where
+/// its bounding sphere touches would still be a gap away from the wall, no
+/// contact would be found, and the next step would stop it again at the same
+/// place — held in the air at full speed. The time of impact comes from the
+/// separation d(t) of the two shapes when A is moved by t·Δ (Δ its motion
+/// this step) with its final orientation: each shape pair gives d and the
+/// direction u in which d grows (separation()), so d′(t) = u·Δ. With both
+/// shapes convex and A only translating, d(t) is convex in t, so its tangent
+/// lies below it and the tangent's root t − d/d′ never passes the first
+/// impact: advancing to it is *conservative advancement* (Mirtich 1996; Catto,
+/// "Continuous Collision", GDC 2013), here with the tangent as the bound
+/// instead of the maximum speed, so it converges like Newton's method. A slope
+/// d′ ≥ 0 means the gap can only grow from there on (convexity): no impact.
+/// Box against box uses the largest separation over the 15 separating axes
+/// (Ericson, *Real-Time Collision Detection*, §4.4): a lower bound on the
+/// distance that is 0 exactly when the boxes touch, and, a maximum of convex
+/// functions, still convex. Rotation during the step is not swept (the body
+/// turns as the integrator turned it, then slides along Δ), the usual
+/// simplification for linear casts (Ericson §5.5); a spinning thin plate can
+/// still clip a corner.
+///
+/// **Limits.** The time after the impact, (1 − t)·h, is lost: the body waits
+/// at the wall until the next step (Bullet's motion clamping does the same;
+/// Catto's talk discusses the trade). Other bodies are taken where they are
+/// at the end of the step, so two fast bodies flying through each other can
+/// still miss. A pair that already touches at the start is left to the
+/// contact solver, which already holds it. Planes are not swept against: a
+/// plane bounds a solid half-space, so a body carried however deep behind it
+/// is pushed back out along its normal (lecture 3's bounce at h = 1/15 s
+/// relies on it).
+///
+/// **With the sequential-impulse solver.** Its narrowphase finds a sphere's
+/// contacts as far ahead as the sphere can move (GameObject::sweep:
+/// *speculative* contacts). For a fast sphere that reach is long, and a
+/// contact found across it acts as a plane through the closest point: a ball
+/// passing a wall's edge 1 mm clear bounced off that plane (a *ghost
+/// collision*, Catto, GDC 2013). With this stage on, a sphere's reach towards
+/// another body is capped at kFastMotionFraction × its radius
+/// (findContacts(), narrowphase.cpp) and this stage follows the rest of the
+/// path with the exact shapes; towards a plane the full sweep is kept.
+///
+/// **Cost.** One pass over the bodies comparing |Δ| with their size; only a
+/// fast body tests its swept bounding box against every other body (O(n)
+/// each), then runs at most kMaxAdvancementIterations separation tests per
+/// overlapping candidate. With nothing fast the stage costs the copy of the
+/// start positions and that one pass (measured in docs/benchmarks.md).
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "collision/narrowphase.hpp"
+#include "world/body_set.hpp"
+
+namespace stepwise {
+
+/// A body is *fast* when it moved more than this fraction of its inner
+/// radius (a sphere's radius, a box's smallest half extent) in one step.
+/// Moved by less, it can sink into a surface it started in front of by less
+/// than its inner radius: its centre stays in front, and the narrowphase's
+/// push-out along the shortest way sends it back the way it came (lecture 3's
+/// bounce relies on this, with the speed at touching rebuilt from the depth).
+/// Moved by more, its centre can cross the surface and the push-out can go
+/// out the far side. At 1, a ball bouncing at lesson-3 speeds (4.4 m/s, 0.1 m:
+/// 0.07 m a step) is not fast, and its trajectory is untouched.
+inline constexpr Real kFastMotionFraction = Real(1);
+
+/// @brief A body's inner radius, m: a sphere's radius, a box's smallest half edge.
+Real innerRadius(const DynamicObject& body);
+
+
+/// Most separation tests per candidate pair. The tangent steps converge like
+/// Newton's method (a head-on approach in one step, an oblique one in a few);
+/// a grazing approach that has not converged is stopped at the last step,
+/// which is still before the impact, and goes on from there next step.
+inline constexpr int kMaxAdvancementIterations = 16;
+
+/// The advancement stops when the shapes are this close, m: half the
+/// narrowphase's touching tolerance, so the contact is surely found after
+/// rounding (kTouchTolerance, src/collision/contact.hpp).
+inline constexpr Real kTimeOfImpactTolerance = kTouchTolerance * Real(0.5);
+
+/// @brief How far apart two shapes are, and which way that grows.
+struct Separation {
+    Real distance = 0;      ///< Signed gap, m (negative: overlap). A lower bound for box–box.
+    Vec3 direction{0, 1, 0};///< Unit: moving A along it increases distance at rate 1 (for box–box, at that axis).
+};
+
+/// @brief The separation of shape A from shape B (A is a sphere or a box; B any shape).
+Separation separation(const Geometry& a, const Geometry& b);
+
+/// @brief First time t ∈ [0, 1] at which shape A, moved from centre @p start to its
+/// own centre (`a.centre`, the end of the step) with its final orientation, touches
+/// B held still; nothing when it does not, or when they already touch at t = 0.
+std::optional<Real> timeOfImpact(const Geometry& a, const Vec3& start, const Geometry& b);
+
+/// @brief The continuous-collision stage's state: the dynamic bodies' positions at the start of the step.
+struct SweepWorkspace {
+    std::vector<Vec3> startPositions;  ///< One per dynamic body, m.
+    std::size_t lastClamped = 0;       ///< Bodies put back at their time of impact in the last step.
+};
+
+/// @brief Records where every dynamic body is before it moves (call at the start of the step).
+void recordStartPositions(const BodySet& bodies, SweepWorkspace& workspace);
+
+/// @brief Moves every fast body back to its first time of impact along its path
+/// this step (velocities unchanged).
+/// @return the number of bodies moved back
+std::size_t stopFastBodiesAtImpact(const BodySet& bodies, SweepWorkspace& workspace);
+
+}  // namespace stepwise

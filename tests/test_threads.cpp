@@ -1,0 +1,127 @@
+// The thread pool (src/core/thread_pool.cpp) and the threaded narrowphase:
+// the same scene must give bit-identical contacts and trajectories with 1, 2
+// or 4 threads.
+#include <catch2/catch.hpp>
+
+#include <atomic>
+#include <string>
+#include <vector>
+
+#include "config/scene_generator.hpp"
+#include "config/scene_loader.hpp"
+#include "core/thread_pool.hpp"
+#include "test_support.hpp"
+
+using namespace stepwise;
+using namespace stepwise::test;
+
+namespace {
+
+const std::string kSourceDir = STEPWISE_SOURCE_DIR;
+
+/// Steps @p scene with @p threads and returns every body's final state, in order.
+std::vector<DynamicObject> runWith(Scene scene, int threads, int steps, std::size_t* mostPairs = nullptr) {
+    scene.settings.threads = threads;
+    World world(std::move(scene));
+    REQUIRE(world.threadCount() == static_cast<unsigned>(threads));
+    for (int step = 0; step < steps; ++step) {
+        world.step();
+        if (mostPairs) *mostPairs = std::max(*mostPairs, world.candidatePairs().size());
+    }
+    return world.dynamics();
+}
+
+/// Every number of the state, compared with == (bit-identical, not approximately equal).
+void requireIdentical(const std::vector<DynamicObject>& a, const std::vector<DynamicObject>& b) {
+    REQUIRE(a.size() == b.size());
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        INFO("body " << a[i].name);
+        REQUIRE(a[i].position == b[i].position);
+        REQUIRE(a[i].velocity == b[i].velocity);
+        REQUIRE(a[i].orientation == b[i].orientation);
+        REQUIRE(a[i].angularMomentum == b[i].angularMomentum);
+        REQUIRE(a[i].angularVelocity == b[i].angularVelocity);
+    }
+}
+
+}  // namespace
+
+TEST_CASE("The thread pool runs every chunk exactly once, job after job", "[threads]") {
+    const unsigned threads = GENERATE(1u, 2u, 4u);
+    ThreadPool pool(threads);
+    REQUIRE(pool.threadCount() == threads);
+    constexpr std::size_t kChunks = 1000;
+    std::vector<std::atomic<int>> runs(kChunks);
+    for (int job = 0; job < 50; ++job) {
+        auto chunk = [&](std::size_t i) { runs[i].fetch_add(1, std::memory_order_relaxed); };
+        pool.run(kChunks, chunk);
+    }
+    for (std::size_t i = 0; i < kChunks; ++i) REQUIRE(runs[i].load() == 50);
+}
+
+TEST_CASE("Threads=0 means one thread per hardware thread", "[threads]") {
+    Scene scene = emptyScene();
+    scene.settings.threads = kAutoThreads;
+    World world(std::move(scene));
+    CHECK(world.threadCount() == autoThreadCount());
+    CHECK(world.threadCount() >= 1);
+}
+
+TEST_CASE("The threaded narrowphase gives the one-thread contact list, bit for bit", "[threads]") {
+    // 800 falling spheres after 30 steps, landing in a heap: about 6000 candidate pairs, twelve chunks.
+    GeneratorOptions options;
+    options.scene = GeneratedScene::SphereRain;
+    options.count = 800;
+    Scene scene = parseScene(generateSceneText(options), "sphere-rain");
+    scene.settings.threads = 1;
+    World world(std::move(scene));
+    for (int step = 0; step < 30; ++step) world.step();
+    const std::vector<CandidatePair>& pairs = world.candidatePairs();
+    REQUIRE(pairs.size() > 4 * kPairsPerChunk);  // several chunks, or the test proves nothing
+
+    std::vector<Contact> serial;
+    const BodySet bodies{world.dynamics(), world.kinematics(), world.planes()};
+    findContacts(bodies, pairs, serial);
+    for (unsigned threads : {1u, 2u, 4u}) {
+        INFO(threads << " threads");
+        ThreadPool pool(threads);
+        NarrowphaseWorkspace workspace;
+        std::vector<Contact> threaded;
+        for (int repeat = 0; repeat < 3; ++repeat) {  // reused workspace, as from step to step
+            findContacts(bodies, pairs, threaded, false, pool, workspace);
+            REQUIRE(threaded.size() == serial.size());
+            for (std::size_t i = 0; i < serial.size(); ++i) {
+                REQUIRE(threaded[i].a == serial[i].a);
+                REQUIRE(threaded[i].b.kind == serial[i].b.kind);
+                REQUIRE(threaded[i].b.index == serial[i].b.index);
+                REQUIRE(threaded[i].normal == serial[i].normal);
+                REQUIRE(threaded[i].point == serial[i].point);
+                REQUIRE(threaded[i].depth == serial[i].depth);
+                REQUIRE(threaded[i].featureId == serial[i].featureId);
+            }
+        }
+    }
+}
+
+TEST_CASE("A sphere pile runs bit-identically with 1, 2 and 4 threads", "[threads]") {
+    // 800 spheres falling into a heap for 45 steps: thousands of pairs, and fast
+    // spheres stopped by continuous collision as they land (both stages in play).
+    GeneratorOptions options;
+    options.scene = GeneratedScene::SphereRain;
+    options.count = 800;
+    const Scene scene = parseScene(generateSceneText(options), "sphere-rain");
+    std::size_t mostPairs = 0;
+    const std::vector<DynamicObject> one = runWith(scene, 1, 45, &mostPairs);
+    REQUIRE(mostPairs > 4 * kPairsPerChunk);  // the threaded path really ran
+    requireIdentical(one, runWith(scene, 2, 45));
+    requireIdentical(one, runWith(scene, 4, 45));
+}
+
+TEST_CASE("The 210-box pyramid runs bit-identically with 1, 2 and 4 threads", "[threads]") {
+    const Scene scene = loadSceneFile(kSourceDir + "/config/lesson08_pyramid.scene");
+    std::size_t mostPairs = 0;
+    const std::vector<DynamicObject> one = runWith(scene, 1, 30, &mostPairs);
+    REQUIRE(mostPairs > kPairsPerChunk);
+    requireIdentical(one, runWith(scene, 2, 30));
+    requireIdentical(one, runWith(scene, 4, 30));
+}
