@@ -6,7 +6,9 @@
 #   3. ci tests     ctest --preset ci (the viewer's screenshot tests run under xvfb-run)
 #   4. docs         Doxygen API reference into build/ci/docs/html; any warning fails
 #   5. asan build   configure + build the `asan` preset (Debug, ASan + UBSan, warnings are errors)
-#   6. asan tests   ctest --preset asan
+#   6. asan tests   ctest --preset asan (without the tests labelled slow, e.g. the 210-box
+#                   pyramid's 10 s: the ci tests run them; under the sanitizers they take
+#                   over 15 minutes on 2 cores and check no code the shorter tests miss)
 #
 # Prints a header "==> [N/6] part: command" before each part, "--> part: OK"
 # or "--> part: FAILED" after it, and a one-line summary at the end; exits
