@@ -375,6 +375,18 @@ void TraceObserver::writePreparedConstraints(const std::string& head, const Worl
 }
 
 /// Per constraint: accumulated impulses and v_n (derived) after the pass; per body: velocity before → after.
+namespace {
+
+/// Velocity of B's material point at the contact, m/s: a dynamic B's v + ω × r_B,
+/// else the kinematic surface velocity the solver recorded (zero for a plane).
+Vec3 surfaceVelocityOfB(const World& world, const SolverContact& c) {
+    if (c.refB.kind != BodyKind::Dynamic) return c.staticVelocity;
+    const DynamicObject& b = world.dynamics()[c.refB.index];
+    return b.velocity + glm::cross(b.angularVelocity, c.rB);
+}
+
+}  // namespace
+
 void TraceObserver::writeSolve(const std::string& head, const World& world) {
     const auto& bodies = world.dynamics();
     for (const SolverContact& c : world.solverContacts()) {
@@ -383,7 +395,7 @@ void TraceObserver::writeSolve(const std::string& head, const World& world) {
         if (!objectSelected(a) && !objectSelected(b)) continue;
         const DynamicObject& bodyA = bodies[c.indexA];
         const Vec3 vA = bodyA.velocity + glm::cross(bodyA.angularVelocity, c.rA);
-        const Vec3 vB = c.b ? c.b->velocity + glm::cross(c.b->angularVelocity, c.rB) : c.staticVelocity;
+        const Vec3 vB = surfaceVelocityOfB(world, c);
         line(head, a + "|" + b,
              "j " + num(c.normalImpulse) + " N*s  j_t " + num(std::hypot(c.tangentImpulse[0], c.tangentImpulse[1])) +
                  " N*s  j_max " + num(c.maxNormalImpulse) + " N*s  v_n " + num(glm::dot(vB - vA, c.normal)) + " m/s");
@@ -413,7 +425,7 @@ void TraceObserver::writeRestitution(const std::string& head, const World& world
                                                        : "yes";
         const DynamicObject& bodyA = bodies[c.indexA];
         const Vec3 vA = bodyA.velocity + glm::cross(bodyA.angularVelocity, c.rA);
-        const Vec3 vB = c.b ? c.b->velocity + glm::cross(c.b->angularVelocity, c.rB) : c.staticVelocity;
+        const Vec3 vB = surfaceVelocityOfB(world, c);
         line(head, a + "|" + b,
              "v_c " + num(c.approachAtTouch) + " m/s  e " + num(c.restitution) + "  bounce " + decision + "  j " +
                  num(c.normalImpulse) + " N*s  j_max " + num(c.maxNormalImpulse) + " N*s  v_n " + num(glm::dot(vB - vA, c.normal)) + " m/s");
