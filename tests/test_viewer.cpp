@@ -892,7 +892,7 @@ TEST_CASE("A screenshot with the overlays shows the heads-up display's text", "[
     CHECK(white > 200);
 }
 
-TEST_CASE("--stage K draws the bodies where the K-th stage run of the step left them", "[viewer][xvfb]") {
+TEST_CASE("The option --stage K draws the bodies where the K-th stage run of the step left them", "[viewer][xvfb]") {
     // Lesson 3's ball in step 28: after integrate (stage run 2) its centre is
     // 68 mm below its radius, the ball half in the floor; after
     // correct-positions (run 6: the plan skips move-kinematics) it rests on the floor, centre at y = r. A
