@@ -10,6 +10,7 @@
 #   docs/data/precision.csv          every measurement (stepwise-bench precision --csv)
 #   docs/images/precision-*.png      one work-precision figure per reference problem, and the energy figure
 #   docs/benchmarks.md               the page: how it was made, the figures, the tables
+#                                    (and, as written, bench/solver_performance.md)
 # Build: the `release` preset (build/release/), target stepwise-bench only.
 # Takes about half a minute. Setup and build messages go to stderr.
 set -euo pipefail
@@ -129,5 +130,7 @@ The same numbers, and every other measurement, are in
 [\`docs/data/precision.csv\`](data/precision.csv) (one row per problem,
 integrator, time step and metric).
 EOF
+    # Measured by hand (stepwise run, callgrind), not by this script: kept as written.
+    cat bench/solver_performance.md
 } > docs/benchmarks.md
 echo "bench.sh: wrote docs/benchmarks.md, docs/data/precision.csv and docs/images/precision-*.png" >&2
