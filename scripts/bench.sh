@@ -12,7 +12,9 @@
 #   docs/data/precision.csv          every measurement (stepwise-bench precision --csv)
 #   docs/images/precision-*.png      one work-precision figure per reference problem, and the energy figure
 #   docs/benchmarks.md               the page: how it was made, the figures, the tables,
-#                                    and the stress suite's table (stepwise-bench stress)
+#                                    the stress suite's table (stepwise-bench stress), and the
+#                                    sections measured by hand (bench/solver_performance.md,
+#                                    docs/data/bench-*.txt, docs/data/threads-section.txt)
 # Build: the `release` preset (build/release/), target stepwise-bench only.
 # Takes a few minutes: the stress suite alone needs 1.5 min of CPU (4.6 min of
 # wall time on a busy shared 2-core machine). Setup and build messages go to stderr.
@@ -178,5 +180,8 @@ EOF
         echo
         cat docs/data/threads-section.txt
     fi
+    echo
+    # Measured by hand (stepwise run, callgrind), not by this script: kept as written.
+    cat bench/solver_performance.md
 } > docs/benchmarks.md
 echo "bench.sh: wrote docs/benchmarks.md, docs/data/precision.csv and docs/images/precision-*.png" >&2
