@@ -770,13 +770,13 @@ TEST_CASE("The walk-through has one snapshot per stage run, and leaving it keeps
 
 TEST_CASE("The walk-through's arrays stop growing after the first recorded step", "[viewer]") {
     // The bouncing ball has at most one pair and one contact in any step, and
-    // every step has the same six stage runs (seven stages, less
-    // move-kinematics, which the step plan skips: no kinematic bodies): after the step with the
+    // every step has the same seven stage runs (the foundation's seven and
+    // continuous, less move-kinematics, which the step plan skips: no kinematic bodies): after the step with the
     // contact, no recording needs more room.
     Simulation sim(kBounceScene);
     sim.stepTo(kBeforeImpact);
     sim.showStageRun(0);
-    REQUIRE(sim.walkthrough().size() == 6);
+    REQUIRE(sim.walkthrough().size() == 7);
     const std::size_t first = sim.walkthrough().memoryBytes();
     CHECK(first > 0);
     for (int step = 0; step < 20; ++step) {
@@ -895,7 +895,7 @@ TEST_CASE("A screenshot with the overlays shows the heads-up display's text", "[
 TEST_CASE("The option --stage K draws the bodies where the K-th stage run of the step left them", "[viewer][xvfb]") {
     // Lesson 3's ball in step 28: after integrate (stage run 2) its centre is
     // 68 mm below its radius, the ball half in the floor; after
-    // correct-positions (run 6: the plan skips move-kinematics) it rests on the floor, centre at y = r. A
+    // correct-positions (run 7: continuous runs, move-kinematics is skipped) it rests on the floor, centre at y = r. A
     // point r/2 above the resting centre is inside the resting ball but above
     // the sunken one: red only in the second picture.
     if (!canTakeScreenshots()) return;
@@ -916,11 +916,11 @@ TEST_CASE("The option --stage K draws the bodies where the K-th stage run of the
         return dominant(image.at(static_cast<int>(probe.x), static_cast<int>(probe.y)));
     };
     CHECK(shoot(2) != 'r');
-    CHECK(shoot(6) == 'r');
-    const TempFile unused("stage-7.png");
-    const Result tooFar = viewUnderXvfb("'" + kBounceScene + "' --screenshot " + unused.quoted() + " --at 0.45 --stage 7");
+    CHECK(shoot(7) == 'r');
+    const TempFile unused("stage-8.png");
+    const Result tooFar = viewUnderXvfb("'" + kBounceScene + "' --screenshot " + unused.quoted() + " --at 0.45 --stage 8");
     CHECK(tooFar.exitCode == 2);
-    CHECK_THAT(tooFar.output, Contains("6 stage runs"));
+    CHECK_THAT(tooFar.output, Contains("7 stage runs"));
 }
 
 TEST_CASE("In the window, the mouse picks, highlights, pushes and pulls the body under the cursor",
