@@ -167,8 +167,8 @@ gas and the random scenes, which are generated from a seed
 
 Command: \`${stress_command[*]/$stress_table/STRESS.md}\`; it took ${stress_seconds} s
 and exited with status ${stress_status} (1: a case failed).
-\`stepwise-bench stress --quick\` (shorter runs, fewer bodies, without
-\`bullet-box\`) is the CTest test \`bench_stress_quick\`.
+\`stepwise-bench stress --quick\` (shorter runs, fewer bodies, every case)
+is the CTest test \`bench_stress_quick\`.
 
 EOF
     cat "$stress_table"
