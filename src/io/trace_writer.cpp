@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "world/world.hpp"
+#include "world/object_name.hpp"
 
 namespace stepwise {
 
@@ -36,15 +37,6 @@ std::string validStageNames() {
     return names;
 }
 
-/// Name of the object @p ref of @p world: a dynamic or kinematic body, or a plane.
-const std::string& nameOf(const World& world, const BodyRef& ref) {
-    switch (ref.kind) {
-        case BodyKind::Dynamic: return world.dynamics()[ref.index].name;
-        case BodyKind::Kinematic: return world.kinematics()[ref.index].name;
-        case BodyKind::Plane: break;
-    }
-    return world.planes()[ref.index].name;
-}
 
 /// Velocity of B's material point at @p point, m/s: v + ω × (p − x); a plane does not move.
 Vec3 pointVelocity(const World& world, const BodyRef& ref, const Vec3& point) {
@@ -298,7 +290,7 @@ void TraceObserver::writePairs(const std::string& head, const World& world) {
     line(head, "all", "pairs " + std::to_string(world.candidatePairs().size()));
     for (const CandidatePair& pair : world.candidatePairs()) {
         const std::string& a = world.dynamics()[pair.a].name;
-        const std::string& b = nameOf(world, pair.b);
+        const std::string& b = objectName(world, pair.b);
         if (objectSelected(a) || objectSelected(b)) line(head, a + "|" + b, "candidate");
     }
 }
@@ -307,7 +299,7 @@ void TraceObserver::writeContacts(const std::string& head, const World& world) {
     line(head, "all", "contacts " + std::to_string(world.contacts().size()));
     for (const Contact& c : world.contacts()) {
         const std::string& a = world.dynamics()[c.a].name;
-        const std::string& b = nameOf(world, c.b);
+        const std::string& b = objectName(world, c.b);
         if (!objectSelected(a) && !objectSelected(b)) continue;
         line(head, a + "|" + b, "point " + vec(c.point) + " m  normal " + vec(c.normal) + "  depth " + num(c.depth) +
                                     " m  feature " + std::to_string(c.featureId));
@@ -324,7 +316,7 @@ void TraceObserver::writeImpulses(const std::string& head, const World& world) {
         const Contact& c = contacts[i];
         const ImpulseReport& r = reports[i];
         const std::string& a = world.dynamics()[c.a].name;
-        const std::string& b = nameOf(world, c.b);
+        const std::string& b = objectName(world, c.b);
         if (!objectSelected(a) && !objectSelected(b)) continue;
         const Vec3 rA = c.point - positionBefore_[c.a];
         const Vec3 vA0 = velocityBefore_[c.a] + glm::cross(angularBefore_[c.a], rA);
@@ -366,7 +358,7 @@ void TraceObserver::writePreparedConstraints(const std::string& head, const Worl
     }
     for (const SolverContact& c : world.solverContacts()) {
         const std::string& a = bodies[c.indexA].name;
-        const std::string& b = nameOf(world, c.refB);
+        const std::string& b = objectName(world, c.refB);
         if (!objectSelected(a) && !objectSelected(b)) continue;
         line(head, a + "|" + b,
              "m_eff " + num(c.normalMass) + " kg  C0 " + num(c.startSeparation) + " m  v_c " + num(c.approachAtTouch) +
@@ -391,7 +383,7 @@ void TraceObserver::writeSolve(const std::string& head, const World& world) {
     const auto& bodies = world.dynamics();
     for (const SolverContact& c : world.solverContacts()) {
         const std::string& a = bodies[c.indexA].name;
-        const std::string& b = nameOf(world, c.refB);
+        const std::string& b = objectName(world, c.refB);
         if (!objectSelected(a) && !objectSelected(b)) continue;
         const DynamicObject& bodyA = bodies[c.indexA];
         const Vec3 vA = bodyA.velocity + glm::cross(bodyA.angularVelocity, c.rA);
@@ -418,7 +410,7 @@ void TraceObserver::writeRestitution(const std::string& head, const World& world
     const auto& bodies = world.dynamics();
     for (const SolverContact& c : world.solverContacts()) {
         const std::string& a = bodies[c.indexA].name;
-        const std::string& b = nameOf(world, c.refB);
+        const std::string& b = objectName(world, c.refB);
         if (!objectSelected(a) && !objectSelected(b)) continue;
         const char* decision = c.maxNormalImpulse <= 0 ? "no (never pushed)"
                                : c.restitution <= 0    ? "no (resting, or e = 0)"

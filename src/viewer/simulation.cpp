@@ -12,6 +12,7 @@
 #include "config/scene_loader.hpp"
 #include "core/errors.hpp"
 #include "io/trajectory_csv.hpp"
+#include "world/object_name.hpp"
 
 namespace stepwise::viewer {
 
@@ -25,14 +26,7 @@ std::unique_ptr<World> loadWorld(const std::string& path) {
 
 }  // namespace
 
-std::string bodyName(const World& world, const BodyRef& ref) {
-    switch (ref.kind) {
-        case BodyKind::Dynamic: return world.dynamics()[ref.index].name;
-        case BodyKind::Kinematic: return world.kinematics()[ref.index].name;
-        case BodyKind::Plane: return world.planes()[ref.index].name;
-    }
-    return "?";
-}
+std::string bodyName(const World& world, const BodyRef& ref) { return objectName(world, ref); }
 
 Simulation::Simulation(std::string scenePath)
     : path_(std::move(scenePath)), world_(loadWorld(path_)), clock_(double(world_->settings().timeStep)),

@@ -6,6 +6,8 @@
 #include <cstdarg>
 #include <cstdio>
 
+#include "world/object_name.hpp"
+
 namespace stepwise::viewer {
 
 namespace {
@@ -34,14 +36,6 @@ private:
     std::size_t used_ = 0;
 };
 
-const std::string& nameOf(const World& world, const BodyRef& ref) {
-    switch (ref.kind) {
-        case BodyKind::Dynamic: return world.dynamics()[ref.index].name;
-        case BodyKind::Kinematic: return world.kinematics()[ref.index].name;
-        case BodyKind::Plane: break;
-    }
-    return world.planes()[ref.index].name;
-}
 
 const char* plural(std::size_t n) { return n == 1 ? "" : "s"; }
 
@@ -201,7 +195,7 @@ void StageWalkthrough::describe(StageSnapshot& s, const World& world) const {
             line.add("%zu candidate pair%s (bounding boxes overlap)", pairs.size(), plural(pairs.size()));
             if (!pairs.empty()) {
                 line.add(", e.g. %s - %s", world.dynamics()[pairs[0].a].name.c_str(),
-                         nameOf(world, pairs[0].b).c_str());
+                         objectName(world, pairs[0].b).c_str());
             }
             break;
         }
@@ -214,7 +208,7 @@ void StageWalkthrough::describe(StageSnapshot& s, const World& world) const {
                 const double depth = kMillimetres * double(deepest->depth);
                 if (depth >= 0) line.add(", deepest %.3g mm", depth);
                 else line.add(", closest gap %.3g mm (speculative)", -depth);
-                line.add(" (%s - %s)", world.dynamics()[deepest->a].name.c_str(), nameOf(world, deepest->b).c_str());
+                line.add(" (%s - %s)", world.dynamics()[deepest->a].name.c_str(), objectName(world, deepest->b).c_str());
             }
             break;
         }
