@@ -56,21 +56,34 @@ std::string cli() { return std::string("'") + STEPWISE_CLI_PATH + "'"; }
 /// leaks inside Mesa's driver, listed in src/viewer/lsan_suppressions.txt;
 /// leaks in Stepwise's own code still fail.
 ///
-/// `xvfb-run -a` picks the first free display number, but two started at
-/// the same moment (CTest runs tests in parallel) can pick the same one, and
-/// the loser's server fails to start. That is retried, a few times, after a
-/// pause; any other failure is returned as it is.
+/// Two things about xvfb-run are worked around here:
+/// - `xvfb-run -a` picks the first free display number, but two started at
+///   the same moment (CTest runs tests in parallel) can pick the same one,
+///   and the loser's server fails to start. That is retried, a few times,
+///   after a pause.
+/// - xvfb-run's own exit status replaces the command's when its clean-up
+///   fails ("problem while cleaning up temporary directory", status 5, seen
+///   on a loaded CI machine). So the command's status is printed after it
+///   runs, behind a marker, and taken from there.
 Result underXvfb(const std::string& command) {
+    static const std::string kMarker = "stepwise-test-exit-status=";
+    std::string quoted;  // command inside sh -c '…': each ' becomes '\''
+    for (char c : command) quoted += (c == '\'' ? std::string("'\\''") : std::string(1, c));
     Result result;
     for (int attempt = 0; attempt < 4; ++attempt) {
         if (attempt > 0) ::usleep(static_cast<useconds_t>(300000 + 400000 * attempt + (::getpid() % 7) * 50000));
         result = shell("LSAN_OPTIONS=print_suppressions=0:suppressions='" + kSourceDir +
-                       "/src/viewer/lsan_suppressions.txt' xvfb-run -a " + command);
-        const bool serverClash = result.exitCode != 0 &&
-                                 (result.output.find("Xvfb failed to start") != std::string::npos ||
-                                  result.output.find("already active") != std::string::npos ||
-                                  result.output.find("cannot open the X display") != std::string::npos ||
-                                  result.output.find("failed to open display") != std::string::npos);
+                       "/src/viewer/lsan_suppressions.txt' xvfb-run -a sh -c '" + quoted + "; echo " + kMarker +
+                       "$?'");
+        const std::size_t marker = result.output.rfind(kMarker);
+        if (marker != std::string::npos) {  // the command ran: its status, not xvfb-run's
+            result.exitCode = std::atoi(result.output.c_str() + marker + kMarker.size());
+            result.output.erase(marker, result.output.find('\n', marker) - marker);
+        }
+        const bool serverClash = result.exitCode != 0 && (result.output.find("Xvfb failed to start") != std::string::npos ||
+                                 result.output.find("already active") != std::string::npos ||
+                                 result.output.find("cannot open the X display") != std::string::npos ||
+                                 result.output.find("failed to open display") != std::string::npos);
         if (!serverClash) break;
     }
     return result;
