@@ -88,7 +88,7 @@ TEST_CASE("The threaded narrowphase gives the one-thread contact list, bit for b
         NarrowphaseWorkspace workspace;
         std::vector<Contact> threaded;
         for (int repeat = 0; repeat < 3; ++repeat) {  // reused workspace, as from step to step
-            findContacts(bodies, pairs, threaded, false, pool, workspace);
+            findContacts(bodies, pairs, threaded, false, 0, pool, workspace);
             REQUIRE(threaded.size() == serial.size());
             for (std::size_t i = 0; i < serial.size(); ++i) {
                 REQUIRE(threaded[i].a == serial[i].a);

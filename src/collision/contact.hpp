@@ -20,7 +20,8 @@ inline constexpr Real kTouchTolerance = Real(1e-6);
 /// The impulse stage lets a slow (resting) approach close such a gap within
 /// the step but no further, and ignores gaps on fast approaches, so impacts
 /// and bounces are unchanged. (Box2D keeps points within a few linear slops
-/// for the same reason.)
+/// for the same reason.) The sequential-impulse solver also asks the sphere
+/// tests for contacts this far apart (findContacts() in narrowphase.hpp says why).
 inline constexpr Real kSpeculativeDistance = Real(0.01);
 
 /// @brief Which array a body lives in.

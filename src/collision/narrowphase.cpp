@@ -81,7 +81,7 @@ namespace {
 
 /// The exact test of one candidate pair; its contacts are appended to @p contacts.
 void collidePair(const BodySet& bodies, const CandidatePair& pair, bool continuousCollision,
-                 std::vector<Contact>& contacts) {
+                 Real speculativeDistance, std::vector<Contact>& contacts) {
     Geometry a = geometryOf(bodies.dynamics[pair.a]);
     Geometry b = geometryOf(bodies, pair.b);
     // Every pair of shapes that can meet has a test; nullptr is left only
@@ -99,6 +99,8 @@ void collidePair(const BodySet& bodies, const CandidatePair& pair, bool continuo
     if (continuousCollision && b.type != GeometryType::Plane) {
         reach = std::min(reach, kFastMotionFraction * grown.radius);
     }
+    // Plus a fixed margin, when the solver asks for one (findContacts() in narrowphase.hpp says why).
+    reach += speculativeDistance;
     const bool grows = reach > 0 && grown.type == GeometryType::Sphere;
     if (grows) grown.radius += reach;
 
@@ -119,15 +121,16 @@ void collidePair(const BodySet& bodies, const CandidatePair& pair, bool continuo
 
 void findContacts(const BodySet& bodies, const std::vector<CandidatePair>& pairs, std::vector<Contact>& contacts) {
     contacts.clear();
-    for (const CandidatePair& pair : pairs) collidePair(bodies, pair, false, contacts);
+    for (const CandidatePair& pair : pairs) collidePair(bodies, pair, false, 0, contacts);
 }
 
 void findContacts(const BodySet& bodies, const std::vector<CandidatePair>& pairs, std::vector<Contact>& contacts,
-                  bool continuousCollision, ThreadPool& pool, NarrowphaseWorkspace& workspace) {
+                  bool continuousCollision, Real speculativeDistance, ThreadPool& pool,
+                  NarrowphaseWorkspace& workspace) {
     if (pool.threadCount() == 1 || pairs.size() <= kPairsPerChunk) {
         // One chunk: the merge below would only copy.
         contacts.clear();
-        for (const CandidatePair& pair : pairs) collidePair(bodies, pair, continuousCollision, contacts);
+        for (const CandidatePair& pair : pairs) collidePair(bodies, pair, continuousCollision, speculativeDistance, contacts);
         return;
     }
     // Chunk c holds pairs [c·k, (c+1)·k), k = kPairsPerChunk, whatever the
@@ -140,7 +143,7 @@ void findContacts(const BodySet& bodies, const std::vector<CandidatePair>& pairs
         std::vector<Contact>& out = workspace.chunkContacts[c];
         out.clear();  // keeps its capacity: no allocation once the scene has settled
         const std::size_t end = std::min(pairs.size(), (c + 1) * kPairsPerChunk);
-        for (std::size_t i = c * kPairsPerChunk; i < end; ++i) collidePair(bodies, pairs[i], continuousCollision, out);
+        for (std::size_t i = c * kPairsPerChunk; i < end; ++i) collidePair(bodies, pairs[i], continuousCollision, speculativeDistance, out);
     };
     pool.run(chunks, runChunk);
 
