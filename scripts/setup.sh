@@ -22,7 +22,9 @@ set -euo pipefail
 #                             picking test drives the real window (tests/test_viewer.cpp)
 #   gnuplot-nox               the plots of docs/benchmarks.md (scripts/bench.sh draws them from
 #                             stepwise-bench's CSV); -nox: PNG and SVG output without X11
-packages=(cmake ninja-build g++ libglm-dev freeglut3-dev catch2 doxygen xvfb xauth xdotool gnuplot-nox)
+#   gdb                       the lectures' step-through sessions (lectures/gdb/, with Python for
+#                             stepwise.py's break-at), and the [gdb] test that runs one of them
+packages=(cmake ninja-build g++ libglm-dev freeglut3-dev catch2 doxygen xvfb xauth xdotool gnuplot-nox gdb)
 
 # Only when asked (CI does not need them):
 #   libbullet-dev, pkg-config   Bullet 3, the engine `stepwise-bench bullet` compares Stepwise with

@@ -1,8 +1,10 @@
 # Lecture 1, exercise 4: the first step that starts below y = 0.
-# Line numbers are those of the commit named in the lecture; check them if the file has changed.
+# Breakpoints inside a function are named by the code at the line (break-at FILE "TEXT", from
+# lectures/gdb/stepwise.py), so they follow the code when lines move; run from the repository root.
 #   interactive:  gdb -x lectures/gdb/01-below-zero.gdb --args build/debug/stepwise run config/lesson01_explicit_euler.scene
 #   all at once:  gdb -q -batch -x lectures/gdb/01-below-zero.gdb --args build/debug/stepwise run config/lesson01_explicit_euler.scene
-break explicit_euler.cpp:51 if body.position.y < 0
+source lectures/gdb/stepwise.py
+break-at explicit_euler.cpp "body.position += h * body.velocity;" if body.position.y < 0
 run
 p body.position
 p body.velocity

@@ -1,5 +1,5 @@
 # Lecture 1, session A: two whole explicit Euler steps.
-# Line numbers are those of the commit named in the lecture; check them if the file has changed.
+# Breakpoints by function name, so they do not move when lines do.
 #   interactive:  gdb -x lectures/gdb/01-explicit-euler.gdb --args build/debug/stepwise run config/lesson01_explicit_euler.scene
 #   all at once:  gdb -q -batch -x lectures/gdb/01-explicit-euler.gdb --args build/debug/stepwise run config/lesson01_explicit_euler.scene
 break stepwise::integrateExplicitEuler

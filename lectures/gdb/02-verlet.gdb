@@ -1,14 +1,16 @@
 # Lecture 2, session A: velocity Verlet and its second call of the force model.
-# Line numbers are those of the commit named in the lecture; check them if the file has changed.
+# Breakpoints inside a function are named by the code at the line (break-at FILE "TEXT", from
+# lectures/gdb/stepwise.py), so they follow the code when lines move; run from the repository root.
 #   interactive:  gdb -x lectures/gdb/02-verlet.gdb --args build/debug/stepwise run config/lesson02_verlet.scene
 #   all at once:  gdb -q -batch -x lectures/gdb/02-verlet.gdb --args build/debug/stepwise run config/lesson02_verlet.scene
+source lectures/gdb/stepwise.py
 break stepwise::integrateVerlet
 run
 p h
 p bodies._M_ptr[0].position
 p bodies._M_ptr[0].velocity
 p bodies._M_ptr[0].acceleration
-break verlet.cpp:50
+break-at verlet.cpp "accelerations(bodies);"
 continue
 p halfHSquared
 p bodies._M_ptr[0].position

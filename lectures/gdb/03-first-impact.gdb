@@ -1,8 +1,10 @@
 # Lecture 3: the first impact of the bouncing ball, from prepare() to correctPositions().
-# Line numbers are those of the commit named in the lecture; check them if the file has changed.
+# Breakpoints inside a function are named by the code at the line (break-at FILE "TEXT", from
+# lectures/gdb/stepwise.py), so they follow the code when lines move; run from the repository root.
 #   interactive:  gdb -x lectures/gdb/03-first-impact.gdb --args build/debug/stepwise run config/lesson03_bounce.scene
 #   all at once:  gdb -q -batch -x lectures/gdb/03-first-impact.gdb --args build/debug/stepwise run config/lesson03_bounce.scene
-break impulse_resolver.cpp:93
+source lectures/gdb/stepwise.py
+break-at impulse_resolver.cpp "c.targetSeparation = e * approachAtTouch;"
 run
 p contact
 p a.velocity
@@ -17,7 +19,7 @@ p stepCount_
 p time_
 frame 0
 delete 1
-break impulse_resolver.cpp:113
+break-at impulse_resolver.cpp "applyImpulse(c, (c.normalImpulse - previous) * c.normal);"
 continue
 p vn
 p c.targetSeparation

@@ -1,14 +1,16 @@
 # Lecture 3, exercise 5: is the friction impulse clamped to mu*j at the first impact?
-# Line numbers are those of the commit named in the lecture; check them if the file has changed.
+# Breakpoints inside a function are named by the code at the line (break-at FILE "TEXT", from
+# lectures/gdb/stepwise.py), so they follow the code when lines move; run from the repository root.
 #   interactive:  gdb -x lectures/gdb/03-friction-clamp.gdb --args build/debug/stepwise run /tmp/slide.scene
 #   all at once:  gdb -q -batch -x lectures/gdb/03-friction-clamp.gdb --args build/debug/stepwise run /tmp/slide.scene
-break impulse_resolver.cpp:93
+source lectures/gdb/stepwise.py
+break-at impulse_resolver.cpp "c.targetSeparation = e * approachAtTouch;"
 run
 p c.rA
 p c.tangentMass
 p c.friction
 delete 1
-tbreak impulse_resolver.cpp:187
+tbreak-at impulse_resolver.cpp "for (ContactConstraint& c : constraints) {"
 continue
 p constraints[0].normalImpulse
 p constraints[0].tangentImpulse

@@ -1,9 +1,11 @@
 # Lecture 3: two equal elastic spheres head on. They touch exactly at t = 1 s, on a step boundary; the depth
 # is a hair below zero (round-off), which counts as touching, so the velocities swap in that step.
-# Line numbers are those of the commit named in the lecture; check them if the file has changed.
+# Breakpoints inside a function are named by the code at the line (break-at FILE "TEXT", from
+# lectures/gdb/stepwise.py), so they follow the code when lines move; run from the repository root.
 #   interactive:  gdb -x lectures/gdb/03-head-on.gdb --args build/debug/stepwise run config/lesson03_collisions.scene
 #   all at once:  gdb -q -batch -x lectures/gdb/03-head-on.gdb --args build/debug/stepwise run config/lesson03_collisions.scene
-break impulse_resolver.cpp:93 if contact.b.kind == stepwise::BodyKind::Dynamic && contact.a == 0
+source lectures/gdb/stepwise.py
+break-at impulse_resolver.cpp "c.targetSeparation = e * approachAtTouch;" if contact.b.kind == stepwise::BodyKind::Dynamic && contact.a == 0
 run
 p contact
 p a.name
@@ -24,11 +26,11 @@ frame 0
 p contact.depth < -1e-6
 delete 1
 finish
-until 187
+until-at impulse_resolver.cpp "for (ContactConstraint& c : constraints) {"
 p constraints[0].normalImpulse
 p bodies.dynamics._M_ptr[0].velocity
 p bodies.dynamics._M_ptr[1].velocity
-tbreak world.cpp:97
+tbreak-at world.cpp "case SolverKind::SequentialImpulse: stepWithSequentialImpulses();" +2
 continue
 p contactWorkspace_.shift
 p dynamics_[0].position

@@ -1,8 +1,10 @@
 # Lecture 3: an off-centre impact, 1 kg against 3 kg, with friction.
-# Line numbers are those of the commit named in the lecture; check them if the file has changed.
+# Breakpoints inside a function are named by the code at the line (break-at FILE "TEXT", from
+# lectures/gdb/stepwise.py), so they follow the code when lines move; run from the repository root.
 #   interactive:  gdb -x lectures/gdb/03-oblique.gdb --args build/debug/stepwise run config/lesson03_collisions.scene
 #   all at once:  gdb -q -batch -x lectures/gdb/03-oblique.gdb --args build/debug/stepwise run config/lesson03_collisions.scene
-break impulse_resolver.cpp:93 if contact.a == 2
+source lectures/gdb/stepwise.py
+break-at impulse_resolver.cpp "c.targetSeparation = e * approachAtTouch;" if contact.a == 2
 run
 p c.b->name
 p c.normal
@@ -12,7 +14,7 @@ p c.normalMass
 p c.friction
 p c.tangentMass
 delete 1
-tbreak impulse_resolver.cpp:187
+tbreak-at impulse_resolver.cpp "for (ContactConstraint& c : constraints) {"
 continue
 p constraints[0].normalImpulse
 p constraints[0].tangentImpulse

@@ -1,9 +1,11 @@
 # Lecture 3: the second impact, then the first contact the resting rule stops: the capped support,
 # the overlap removal, and the warm start of the steps after it.
-# Line numbers are those of the commit named in the lecture; check them if the file has changed.
+# Breakpoints inside a function are named by the code at the line (break-at FILE "TEXT", from
+# lectures/gdb/stepwise.py), so they follow the code when lines move; run from the repository root.
 #   interactive:  gdb -x lectures/gdb/03-resting.gdb --args build/debug/stepwise run config/lesson03_bounce.scene
 #   all at once:  gdb -q -batch -x lectures/gdb/03-resting.gdb --args build/debug/stepwise run config/lesson03_bounce.scene
-break impulse_resolver.cpp:93
+source lectures/gdb/stepwise.py
+break-at impulse_resolver.cpp "c.targetSeparation = e * approachAtTouch;"
 run
 continue
 p vn
@@ -12,7 +14,7 @@ p approachAtTouch
 p e
 p e * approachAtTouch
 delete 1
-break impulse_resolver.cpp:93 if c.resting
+break-at impulse_resolver.cpp "c.targetSeparation = e * approachAtTouch;" if c.resting
 continue
 p vn
 p depth
@@ -24,11 +26,11 @@ frame function stepwise::World::step
 p stepCount_
 p time_
 frame 0
-tbreak impulse_resolver.cpp:262
+tbreak-at impulse_resolver.cpp "const std::vector<ContactConstraint>& constraints = workspace.constraints;"
 continue
 p workspace.supportVelocityChange[0]
 p shift[0]
-tbreak world.cpp:97
+tbreak-at world.cpp "case SolverKind::SequentialImpulse: stepWithSequentialImpulses();" +2
 continue
 p contactWorkspace_.shift
 p dynamics_[0].position
@@ -38,17 +40,17 @@ continue
 p vn
 p depth
 p approachAtTouch
-tbreak impulse_resolver.cpp:181
+tbreak-at impulse_resolver.cpp "for (int pass = 0; pass < iterations; ++pass)"
 continue
 p constraints[0].normalImpulse
 p bodies.dynamics._M_ptr[0].velocity
-tbreak world.cpp:97
+tbreak-at world.cpp "case SolverKind::SequentialImpulse: stepWithSequentialImpulses();" +2
 continue
 p contactWorkspace_.previousImpulses
 p contactWorkspace_.shift
 p dynamics_[0].position
 continue
-tbreak impulse_resolver.cpp:181
+tbreak-at impulse_resolver.cpp "for (int pass = 0; pass < iterations; ++pass)"
 continue
 p constraints[0].normalImpulse
 p bodies.dynamics._M_ptr[0].velocity

@@ -1,8 +1,10 @@
 # Lecture 5, session B: the first time an edge-edge axis wins (the wedge on the ridge).
-# Line numbers are those of the commit named in the lecture; check them if the file has changed.
+# Breakpoints inside a function are named by the code at the line (break-at FILE "TEXT", from
+# lectures/gdb/stepwise.py), so they follow the code when lines move; run from the repository root.
 #   interactive:  gdb -x lectures/gdb/05-edge-axis.gdb --args build/debug/stepwise run config/lesson05_sat.scene --steps 10
 #   all at once:  gdb -q -batch -x lectures/gdb/05-edge-axis.gdb --args build/debug/stepwise run config/lesson05_sat.scene --steps 10
-break box_box.cpp:353
+source lectures/gdb/stepwise.py
+break-at box_box.cpp "return edgeContact(a, b, edge, out);"
 run
 p boxA.centre
 p faceA

@@ -1,12 +1,14 @@
 # Lecture 7, session C (continued): the eight box corners of the incline at step 60, one line each.
-# Line numbers are those of the commit named in the lecture; check them if the file has changed.
+# Breakpoints inside a function are named by the code at the line (break-at FILE "TEXT", from
+# lectures/gdb/stepwise.py), so they follow the code when lines move; run from the repository root.
 #   interactive:  gdb -x lectures/gdb/07-boxes.gdb --args build/debug/stepwise run config/lesson07_incline.scene --steps 60
 #   all at once:  gdb -q -batch -x lectures/gdb/07-boxes.gdb --args build/debug/stepwise run config/lesson07_incline.scene --steps 60
+source lectures/gdb/stepwise.py
 set trace-commands on
-break world.cpp:89 if stepCount_ == 59
+break-at world.cpp "resolveImpulses(bodies(), contacts_, h, settings_.impulseIterations" if stepCount_ == 59
 run
 delete 1
-tbreak impulse_resolver.cpp:186
+tbreak-at impulse_resolver.cpp "rememberImpulses(contacts, constraints, workspace);"
 continue
 set trace-commands off
 set $i = 2

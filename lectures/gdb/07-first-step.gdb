@@ -1,9 +1,11 @@
 # Lecture 7, session A: the first step of the bowling ball lane, in prepare(), in two passes of solve(), and after the passes (kinetic friction).
-# Line numbers are those of the commit named in the lecture; check them if the file has changed.
+# Breakpoints inside a function are named by the code at the line (break-at FILE "TEXT", from
+# lectures/gdb/stepwise.py), so they follow the code when lines move; run from the repository root.
 #   interactive:  gdb -x lectures/gdb/07-first-step.gdb --args build/debug/stepwise run config/lesson07_bowling.scene --steps 1
 #   all at once:  gdb -q -batch -x lectures/gdb/07-first-step.gdb --args build/debug/stepwise run config/lesson07_bowling.scene --steps 1
+source lectures/gdb/stepwise.py
 set trace-commands on
-break impulse_resolver.cpp:95 if contact.a == 0
+break-at impulse_resolver.cpp "c.targetSeparation = e * approachAtTouch;" if contact.a == 0
 run
 p c.a->name
 p c.rA
@@ -18,7 +20,7 @@ p c.tangentMass
 p c.friction
 set $lane = c.a
 delete 1
-break impulse_resolver.cpp:135 if c.a == $lane
+break-at impulse_resolver.cpp "applyImpulse(c, change);" if c.a == $lane
 continue
 p relative
 p c.normalImpulse
@@ -32,7 +34,7 @@ p c.normalImpulse
 p magnitude
 p c.tangentImpulse
 delete 2
-tbreak impulse_resolver.cpp:186
+tbreak-at impulse_resolver.cpp "rememberImpulses(contacts, constraints, workspace);"
 continue
 p constraints[0].normalImpulse
 p constraints[0].tangentImpulse

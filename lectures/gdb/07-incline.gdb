@@ -1,12 +1,14 @@
 # Lecture 7, session C: step 60 of the incline, prepare() for the solid ball, then both balls' totals after the passes (static friction).
-# Line numbers are those of the commit named in the lecture; check them if the file has changed.
+# Breakpoints inside a function are named by the code at the line (break-at FILE "TEXT", from
+# lectures/gdb/stepwise.py), so they follow the code when lines move; run from the repository root.
 #   interactive:  gdb -x lectures/gdb/07-incline.gdb --args build/debug/stepwise run config/lesson07_incline.scene --steps 60
 #   all at once:  gdb -q -batch -x lectures/gdb/07-incline.gdb --args build/debug/stepwise run config/lesson07_incline.scene --steps 60
+source lectures/gdb/stepwise.py
 set trace-commands on
-break world.cpp:89 if stepCount_ == 59
+break-at world.cpp "resolveImpulses(bodies(), contacts_, h, settings_.impulseIterations" if stepCount_ == 59
 run
 delete 1
-break impulse_resolver.cpp:95 if contact.a == 0
+break-at impulse_resolver.cpp "c.targetSeparation = e * approachAtTouch;" if contact.a == 0
 continue
 p c.normal
 p c.rA
@@ -17,7 +19,7 @@ p c.normalMass
 p c.tangentMass
 p c.tangent
 delete 2
-tbreak impulse_resolver.cpp:186
+tbreak-at impulse_resolver.cpp "rememberImpulses(contacts, constraints, workspace);"
 continue
 p constraints._M_impl._M_finish - constraints._M_impl._M_start
 p constraints[0].a->name

@@ -1,13 +1,15 @@
 # Lecture 7, session B: step 200 of the bowling scene, lane rolling (static), oiled still sliding (kinetic).
-# Line numbers are those of the commit named in the lecture; check them if the file has changed.
+# Breakpoints inside a function are named by the code at the line (break-at FILE "TEXT", from
+# lectures/gdb/stepwise.py), so they follow the code when lines move; run from the repository root.
 #   interactive:  gdb -x lectures/gdb/07-rolling.gdb --args build/debug/stepwise run config/lesson07_bowling.scene --steps 200
 #   all at once:  gdb -q -batch -x lectures/gdb/07-rolling.gdb --args build/debug/stepwise run config/lesson07_bowling.scene --steps 200
+source lectures/gdb/stepwise.py
 set trace-commands on
-break world.cpp:89 if stepCount_ == 199
+break-at world.cpp "resolveImpulses(bodies(), contacts_, h, settings_.impulseIterations" if stepCount_ == 199
 run
 p time_
 delete 1
-tbreak impulse_resolver.cpp:186
+tbreak-at impulse_resolver.cpp "rememberImpulses(contacts, constraints, workspace);"
 continue
 p constraints[0].a->name
 p constraints[0].normalImpulse

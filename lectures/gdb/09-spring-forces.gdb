@@ -1,9 +1,11 @@
 # Lecture 9: one spring force, evaluated twice per step by velocity Verlet.
-# Line numbers are those of the commit named in the lecture; check them if the file has changed.
+# Breakpoints inside a function are named by the code at the line (break-at FILE "TEXT", from
+# lectures/gdb/stepwise.py), so they follow the code when lines move; run from the repository root.
 #   interactive:  gdb -x lectures/gdb/09-spring-forces.gdb --args build/debug/stepwise run config/reference_spring.scene --steps 2
 #   (the lecture's run uses a copy of the scene with Integrator=Verlet)
 #   all at once:  gdb -q -batch -x lectures/gdb/09-spring-forces.gdb --args build/debug/stepwise run SCENE --steps 2
-break spring.cpp:64
+source lectures/gdb/stepwise.py
+break-at spring.cpp "a.acceleration += forceOnA * a.inverseMass;"
 run
 p length
 p spring.restLength
