@@ -385,7 +385,7 @@ TEST_CASE("pipelineOrder() is the order World::step runs the stages, substeps in
     }
 }
 
-TEST_CASE("--explain lists the stages in pipeline order, substeps indented, the other pipeline apart", "[plan]") {
+TEST_CASE("The explanation lists the stages in pipeline order, substeps indented, the other pipeline apart", "[plan]") {
     Scene scene = test::emptyScene();
     scene.settings.continuousCollision = true;
     scene.dynamics = {test::sphere("ball", Vec3(0, 1, 0))};
