@@ -3,8 +3,11 @@
 // that must not be touched, and slow scenes that must not change at all.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <random>
 #include <string>
+#include <vector>
 
 #include "collision/continuous.hpp"
 #include "config/scene_loader.hpp"
@@ -225,5 +228,119 @@ TEST_CASE("Scenes where nothing is fast run bit-identically with and without con
         REQUIRE(a.dynamics()[i].position == b.dynamics()[i].position);
         REQUIRE(a.dynamics()[i].velocity == b.dynamics()[i].velocity);
         REQUIRE(a.dynamics()[i].orientation == b.dynamics()[i].orientation);
+    }
+}
+
+namespace {
+
+/// A random scene for the candidate search: spheres and turned boxes of mixed
+/// sizes in a 12 × 4 × 12 m region, each with a start position and an end
+/// position; about half move several times their size (fast), a few move
+/// 30 m (bullets), and some kinematic slabs and walls stand among them.
+struct RandomSweepScene {
+    std::vector<DynamicObject> dynamics;
+    std::vector<KinematicsObject> kinematics;
+    std::vector<Vec3> starts;
+};
+
+RandomSweepScene randomSweepScene(std::uint32_t seed, std::size_t count) {
+    std::mt19937 random(seed);
+    auto uniform = [&](Real low, Real high) { return std::uniform_real_distribution<Real>(low, high)(random); };
+    auto point = [&](Real spread) { return Vec3(uniform(-spread, spread), uniform(0, 4), uniform(-spread, spread)); };
+    auto direction = [&] { return glm::normalize(Vec3(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1)) + Vec3(0, 0, 1e-3)); };
+    RandomSweepScene scene;
+    for (std::size_t i = 0; i < count; ++i) {
+        const Vec3 start = point(6);
+        DynamicObject body = i % 2 == 0
+                                 ? test::sphere("s" + std::to_string(i), start, Vec3(0), uniform(0.05, 0.3))
+                                 : test::dynamicBox("b" + std::to_string(i), start,
+                                                    Vec3(uniform(0.1, 0.6), uniform(0.1, 0.6), uniform(0.1, 0.6)), 1, 0);
+        if (body.shape == Shape::Box) body.orientation = glm::angleAxis(uniform(0, 3), direction());
+        const Real roll = uniform(0, 1);
+        const Real distance = roll < Real(0.4) ? uniform(0, 0.05) : roll < Real(0.95) ? uniform(0.5, 4) : Real(30);
+        body.position = start + distance * direction();
+        scene.starts.push_back(start);
+        scene.dynamics.push_back(body);
+    }
+    for (int k = 0; k < 4; ++k) {  // thin walls and slabs, much larger than the bodies
+        const Vec3 size = k % 2 == 0 ? Vec3(0.1, 4, 12) : Vec3(12, 0.1, 3);
+        scene.kinematics.push_back(test::kinematicBox("wall" + std::to_string(k), point(5), size));
+    }
+    return scene;
+}
+
+}  // namespace
+
+TEST_CASE("The candidate index returns every body whose box overlaps the query", "[ccd]") {
+    // Superset check against the definition: for each fast body's swept box,
+    // every body whose box (now) overlaps it, found by testing all of them.
+    const std::uint32_t seed = GENERATE(1u, 2u, 3u);
+    RandomSweepScene scene = randomSweepScene(seed, 400);
+    const BodySet bodies{scene.dynamics, scene.kinematics, {}};
+    std::vector<std::uint8_t> fast(scene.dynamics.size(), 0);
+    for (std::size_t i = 0; i < fast.size(); ++i) {
+        fast[i] = glm::length(scene.dynamics[i].position - scene.starts[i]) > innerRadius(scene.dynamics[i]) ? 1 : 0;
+    }
+    SweptBoxIndex index;
+    index.build(bodies, scene.starts, fast);
+    std::vector<std::uint32_t> found;
+    std::size_t queries = 0, hits = 0;
+    for (std::size_t i = 0; i < fast.size(); ++i) {
+        if (!fast[i]) continue;
+        ++queries;
+        Geometry atStart = geometryOf(scene.dynamics[i]);
+        atStart.centre = scene.starts[i];
+        const Aabb swept = merged(geometryBounds(atStart), geometryBounds(geometryOf(scene.dynamics[i])));
+        index.query(swept, static_cast<std::uint32_t>(i), found);
+        for (std::size_t p = 0; p < scene.dynamics.size() + scene.kinematics.size(); ++p) {
+            if (p == i) continue;
+            const Geometry other = p < scene.dynamics.size() ? geometryOf(scene.dynamics[p])
+                                                             : geometryOf(scene.kinematics[p - scene.dynamics.size()]);
+            if (!swept.overlaps(geometryBounds(other))) continue;
+            ++hits;
+            INFO("fast body " << i << ", overlapping body " << p);
+            REQUIRE(std::find(found.begin(), found.end(), static_cast<std::uint32_t>(p)) != found.end());
+        }
+        REQUIRE(std::find(found.begin(), found.end(), static_cast<std::uint32_t>(i)) == found.end());
+    }
+    CHECK(queries > 100);  // the scene is what it claims: many fast bodies, many overlaps
+    CHECK(hits > 0);
+    CHECK(index.oversizeCount() >= 1);  // the walls and the 30 m paths are tested directly
+}
+
+TEST_CASE("Fast bodies stop at the same place with the candidate index as when tested against every body", "[ccd]") {
+    // The stage with the index must put every body exactly (bit for bit) where
+    // the O(n) reference puts it: same candidates after the exact box test,
+    // same times of impact, same order of move-backs.
+    const std::uint32_t seed = GENERATE(11u, 12u, 13u, 14u);
+    const std::size_t count = GENERATE(std::size_t(60), std::size_t(600));
+    INFO("seed " << seed << ", " << count << " bodies");
+    RandomSweepScene indexed = randomSweepScene(seed, count);
+    RandomSweepScene reference = indexed;
+    SweepWorkspace indexedWorkspace;
+    SweepWorkspace referenceWorkspace;
+    indexedWorkspace.startPositions = indexed.starts;
+    referenceWorkspace.startPositions = reference.starts;
+    const std::size_t clamped = stopFastBodiesAtImpact({indexed.dynamics, indexed.kinematics, {}}, indexedWorkspace);
+    const std::size_t expected =
+        stopFastBodiesAtImpactBruteForce({reference.dynamics, reference.kinematics, {}}, referenceWorkspace);
+    CHECK(clamped == expected);
+    CHECK(expected > count / 10);  // many bodies were moved back: the comparison means something
+    for (std::size_t i = 0; i < count; ++i) {
+        INFO("body " << i);
+        REQUIRE(indexed.dynamics[i].position == reference.dynamics[i].position);
+    }
+    // A second step from where the first left them: the index re-sorts last step's order.
+    for (std::size_t i = 0; i < count; ++i) {
+        indexedWorkspace.startPositions[i] = indexed.dynamics[i].position;
+        referenceWorkspace.startPositions[i] = reference.dynamics[i].position;
+        indexed.dynamics[i].position += Vec3(1.5, -0.5, 0.75);
+        reference.dynamics[i].position += Vec3(1.5, -0.5, 0.75);
+    }
+    CHECK(stopFastBodiesAtImpact({indexed.dynamics, indexed.kinematics, {}}, indexedWorkspace) ==
+          stopFastBodiesAtImpactBruteForce({reference.dynamics, reference.kinematics, {}}, referenceWorkspace));
+    for (std::size_t i = 0; i < count; ++i) {
+        INFO("body " << i << ", second step");
+        REQUIRE(indexed.dynamics[i].position == reference.dynamics[i].position);
     }
 }

@@ -51,7 +51,9 @@ TEST_CASE("World::step allocates nothing in steady state", "[allocations]") {
     // joints (pendulum, chain bridge); boxes and spheres on the Impulse solver.
     const char* files[] = {"default.scene",        "lesson08_heavy_on_light.scene", "lesson08_tower.scene",
                            "lesson08_pendulum.scene", "lesson08_bridge.scene",      "lesson08_hinge_motor.scene",
-                           "lesson03_collisions.scene", "lesson07_tipping.scene",   "lesson05_sat.scene"};
+                           "lesson03_collisions.scene", "lesson07_tipping.scene",   "lesson05_sat.scene",
+                           // fast bodies every step: the continuous stage's candidate index (continuous_candidates.hpp)
+                           "stress_fast_sphere_wall.scene", "stress_fast_box_wall.scene"};
     for (const char* file : files) {
         for (const bool stepPlan : {true, false}) {
             INFO(file << (stepPlan ? " with the plan" : " with StepPlan=Off"));

@@ -3,7 +3,10 @@
 // and that a step where nothing is awake runs no stage. Tag: [plan].
 #include <catch2/catch.hpp>
 
+#include <span>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "config/scene_loader.hpp"
 #include "dynamics/inertia.hpp"
@@ -326,4 +329,112 @@ TEST_CASE("stepwise run --explain prints the plan; with --steps 0 nothing else",
 
     // --steps 0 alone is still a usage error: a run of no steps only makes sense to explain.
     CHECK(test::shell(cli + "lesson05_sat.scene' --steps 0").exitCode == 2);
+}
+
+namespace {
+
+/// Writes down every stage the World runs, with its substep.
+struct StageOrderRecorder : StepObserver {
+    std::vector<std::pair<Stage, int>> runs;
+    void beforeStage(const StageEvent& event, const World&) override { runs.emplace_back(event.stage, event.substep); }
+};
+
+}  // namespace
+
+TEST_CASE("pipelineOrder() is the order World::step runs the stages, substeps included", "[plan]") {
+    // With StepPlan=Off, continuous collision and sleep on, every stage of the
+    // pipeline runs: the recorded order must be pipelineOrder() expanded over the substeps.
+    const SolverKind solver = GENERATE(SolverKind::Impulse, SolverKind::SequentialImpulse);
+    INFO(toString(solver));
+    Scene scene = test::emptyScene();
+    scene.settings.solver = solver;
+    scene.settings.stepPlan = false;
+    scene.settings.continuousCollision = true;
+    scene.settings.sleeping = true;
+    scene.settings.substeps = 3;
+    scene.dynamics = {test::sphere("ball", Vec3(0, 1, 0))};
+    scene.planes = {test::ground()};
+    World world(scene);
+    StageOrderRecorder recorder;
+    world.setObserver(&recorder);
+    world.step();
+
+    const int substeps = solver == SolverKind::SequentialImpulse ? 3 : 1;
+    std::vector<std::pair<Stage, int>> expected;
+    const std::span<const PipelineSlot> order = pipelineOrder(solver);
+    for (std::size_t i = 0; i < order.size();) {
+        if (order[i].repeat == StageRepeat::OncePerStep) {
+            expected.emplace_back(order[i].stage, -1);
+            ++i;
+            continue;
+        }
+        std::size_t end = i;  // the run of substep slots [i, end)
+        while (end < order.size() && order[end].repeat != StageRepeat::OncePerStep) ++end;
+        for (int substep = 0; substep < substeps; ++substep) {
+            for (std::size_t k = i; k < end; ++k) {
+                if (order[k].repeat == StageRepeat::LaterSubsteps && substep == 0) continue;
+                expected.emplace_back(order[k].stage, substep);
+            }
+        }
+        i = end;
+    }
+    REQUIRE(recorder.runs.size() == expected.size());
+    for (std::size_t i = 0; i < expected.size(); ++i) {
+        INFO("run " << i << ": " << stageName(recorder.runs[i].first) << " in substep " << recorder.runs[i].second);
+        CHECK(recorder.runs[i] == expected[i]);
+    }
+}
+
+TEST_CASE("The explanation lists the stages in pipeline order, substeps indented, the other pipeline apart", "[plan]") {
+    Scene scene = test::emptyScene();
+    scene.settings.continuousCollision = true;
+    scene.dynamics = {test::sphere("ball", Vec3(0, 1, 0))};
+    scene.planes = {test::ground()};
+    SECTION("Impulse: continuous after move-kinematics, before the broadphase") {
+        scene.settings.solver = SolverKind::Impulse;
+        const std::string text = describeStepPlan(planOf(scene));
+        CHECK(text.find("move-kinematics") < text.find("continuous"));
+        CHECK(text.find("continuous") < text.find("broadphase"));
+        CHECK(text.find("broadphase") < text.find("correct-positions"));
+        CHECK(text.find("substeps") == std::string::npos);
+        CHECK(text.find("Not in this pipeline") < text.find("prepare-constraints"));
+    }
+    SECTION("SequentialImpulse: collision first, then the substep loop, then continuous, restitution, sleep") {
+        scene.settings.solver = SolverKind::SequentialImpulse;
+        scene.settings.substeps = 4;
+        const std::string text = describeStepPlan(planOf(scene));
+        const std::size_t loop = text.find("each of the 4 substeps:");
+        REQUIRE(loop != std::string::npos);
+        CHECK(text.find("prepare-constraints") < loop);
+        CHECK(text.find("\n    integrate") > loop);
+        CHECK(text.find("\n    solve-constraints") < text.find("\n  continuous"));
+        CHECK(text.find("\n  continuous") < text.find("\n  restitution"));
+        CHECK(text.find("Not in this pipeline") < text.find("resolve-impulses"));
+    }
+}
+
+TEST_CASE("The viewer's skipped-stages line names only stages of the scene's own pipeline", "[plan][viewer]") {
+    // A lone ball on a floor, no kinematic bodies: move-kinematics is skipped in either
+    // pipeline; the other solver's stages are not skipped, they are not in the step.
+    Scene scene = test::emptyScene();
+    scene.dynamics = {test::sphere("ball", Vec3(0, 1, 0))};
+    scene.planes = {test::ground()};
+    SECTION("Impulse") {
+        scene.settings.solver = SolverKind::Impulse;
+        World world(scene);
+        CHECK(skippedStagesLine(world.plan(), world.stageRecords(), false) ==
+              "skipped stages: move-kinematics");
+        world.step();
+        CHECK(skippedStagesLine(world.plan(), world.stageRecords(), true) ==
+              "skipped stages: move-kinematics");
+    }
+    SECTION("SequentialImpulse") {
+        scene.settings.solver = SolverKind::SequentialImpulse;
+        scene.settings.sleeping = true;
+        World world(scene);
+        world.step();
+        const std::string line = skippedStagesLine(world.plan(), world.stageRecords(), true);
+        CHECK(line == "skipped stages: move-kinematics");
+        CHECK(line.find("resolve-impulses") == std::string::npos);
+    }
 }

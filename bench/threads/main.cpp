@@ -8,14 +8,21 @@
 /// narrowphase's time per step and of the whole step's, the speed-up over one
 /// thread, and whether the final state is bit-identical to one thread's.
 /// A second table times the same runs with ContinuousCollision off, to show
-/// what the continuous stage costs when nothing is fast.
+/// what the continuous stage costs when nothing is fast. A third times the
+/// continuous stage alone on a layer of n resting spheres with many fast
+/// ones arriving: each fast body tested against every other body (the O(n)
+/// reference, stopFastBodiesAtImpactBruteForce()) against the candidate
+/// index (stopFastBodiesAtImpact(), continuous_candidates.hpp).
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cmath>
 #include <cstdlib>
+#include <random>
 #include <string>
 #include <vector>
 
+#include "collision/continuous.hpp"
 #include "config/scene_generator.hpp"
 #include "config/scene_loader.hpp"
 #include "world/world.hpp"
@@ -31,6 +38,7 @@ constexpr const char* kUsage =
     "  --settle N       untimed steps before timing: the fall (default 120)\n"
     "  --steps N        timed steps (default 60)\n"
     "  --seed S         seed of the generated piles (default 1)\n"
+    "  --ccd-counts LIST  layer sizes of the continuous-stage table (default 1024,4096,16384; 0: skip it)\n"
     "  Also runs config/lesson08_pyramid.scene. Prints medians of per-step times.\n";
 
 constexpr double kMillisecondsPerSecond = 1e3;
@@ -111,6 +119,99 @@ void benchScene(const std::string& label, const Scene& scene, const std::vector<
                 identical(baseline.finalState, off.finalState) ? "yes" : "NO");
 }
 
+/// The continuous stage's scene: n spheres of radius kLayerRadius resting in a
+/// square layer on the floor, and @p fast spheres above it that moved
+/// kFastDrop m straight down this step, ending half-way into the layer.
+constexpr Real kLayerRadius = Real(0.05);     ///< m
+constexpr Real kLayerSpacing = Real(0.12);    ///< centre to centre, m: 2 cm gaps
+constexpr Real kFastDrop = Real(1);           ///< m in one step: 20 radii, surely fast
+constexpr int kContinuousRepeats = 21;        ///< timed calls per case; the median is printed
+
+struct SweepCase {
+    std::vector<DynamicObject> bodies;
+    std::vector<Vec3> starts;
+};
+
+SweepCase sweepCase(std::size_t layer, std::size_t fast, std::uint64_t seed) {
+    SweepCase c;
+    const std::size_t side = static_cast<std::size_t>(std::ceil(std::sqrt(double(layer))));
+    auto sphere = [](Vec3 position) {
+        DynamicObject body;
+        body.shape = Shape::Sphere;
+        body.radius = kLayerRadius;
+        body.scale = Vec3(2 * kLayerRadius);
+        body.position = position;
+        return body;
+    };
+    for (std::size_t i = 0; i < layer; ++i) {
+        const Vec3 p(Real(i % side) * kLayerSpacing, kLayerRadius, Real(i / side) * kLayerSpacing);
+        c.bodies.push_back(sphere(p));
+        c.starts.push_back(p);
+    }
+    std::mt19937_64 random(seed);
+    std::uniform_real_distribution<Real> across(0, Real(side) * kLayerSpacing);
+    for (std::size_t i = 0; i < fast; ++i) {
+        const Vec3 end(across(random), kLayerRadius, across(random));
+        c.bodies.push_back(sphere(end));
+        c.starts.push_back(end + Vec3(0, kFastDrop, 0));
+    }
+    return c;
+}
+
+/// Median ms of one call of @p stage on fresh copies of the case; the last copy's result in @p result.
+template <class StageFunction>
+double timeSweep(const SweepCase& c, StageFunction stage, std::vector<DynamicObject>& result) {
+    SweepWorkspace workspace;
+    workspace.startPositions = c.starts;
+    std::vector<double> times;
+    using Clock = std::chrono::steady_clock;
+    for (int r = 0; r < kContinuousRepeats; ++r) {
+        result = c.bodies;  // outside the timing: the stage moves bodies back
+        const auto start = Clock::now();
+        stage(BodySet{result, {}, {}}, workspace);
+        times.push_back(std::chrono::duration<double>(Clock::now() - start).count() * kMillisecondsPerSecond);
+    }
+    return median(times);
+}
+
+/// Median ms of building the candidate index alone (the stage's O(n) part in a step with a fast body).
+double timeIndexBuild(const SweepCase& c) {
+    std::vector<std::uint8_t> fast(c.bodies.size());
+    for (std::size_t i = 0; i < fast.size(); ++i) fast[i] = c.bodies[i].position != c.starts[i] ? 1 : 0;
+    std::vector<DynamicObject> bodies = c.bodies;
+    SweptBoxIndex index;
+    std::vector<double> times;
+    using Clock = std::chrono::steady_clock;
+    for (int r = 0; r < kContinuousRepeats; ++r) {
+        const auto start = Clock::now();
+        index.build(BodySet{bodies, {}, {}}, c.starts, fast);
+        times.push_back(std::chrono::duration<double>(Clock::now() - start).count() * kMillisecondsPerSecond);
+    }
+    return median(times);
+}
+
+void benchContinuous(const std::vector<long>& layers, std::uint64_t seed) {
+    std::printf("\nThe continuous stage alone: n spheres resting in a layer, fast ones arriving from %.0f m above\n"
+                "(median of %d calls; brute force: each fast body against all n, the old stage)\n\n",
+                double(kFastDrop), kContinuousRepeats);
+    std::printf("|  bodies |  fast | brute force ms | brute us per fast | index ms | of which build ms | index us per fast (after build) | speed-up | identical |\n");
+    std::printf("|--------:|------:|---------------:|------------------:|---------:|------------------:|--------------------------------:|---------:|-----------|\n");
+    for (long layer : layers) {
+        for (std::size_t fast : {std::size_t(64), static_cast<std::size_t>(layer) / 8}) {
+            const SweepCase c = sweepCase(static_cast<std::size_t>(layer), fast, seed);
+            std::vector<DynamicObject> brute, indexed;
+            const double bruteMs = timeSweep(c, stopFastBodiesAtImpactBruteForce, brute);
+            const double indexMs = timeSweep(c, stopFastBodiesAtImpact, indexed);
+            bool same = brute.size() == indexed.size();
+            for (std::size_t i = 0; same && i < brute.size(); ++i) same = brute[i].position == indexed[i].position;
+            const double buildMs = timeIndexBuild(c);
+            std::printf("| %7zu | %5zu | %14.3f | %17.2f | %8.3f | %17.3f | %31.2f | %7.1fx | %-9s |\n",
+                        c.bodies.size(), fast, bruteMs, 1e3 * bruteMs / double(fast), indexMs, buildMs,
+                        1e3 * (indexMs - buildMs) / double(fast), bruteMs / indexMs, same ? "yes" : "NO");
+        }
+    }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -118,6 +219,7 @@ int main(int argc, char** argv) {
     std::vector<long> threadCounts{1, 2};
     int settle = 120, steps = 60;
     std::uint64_t seed = 1;
+    std::vector<long> ccdCounts{1024, 4096, 16384};
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
         if (arg == "--help" || arg == "-h") {
@@ -133,6 +235,7 @@ int main(int argc, char** argv) {
         else if (arg == "--threads") threadCounts = splitNumbers(value);
         else if (arg == "--settle") settle = std::atoi(value.c_str());
         else if (arg == "--steps") steps = std::atoi(value.c_str());
+        else if (arg == "--ccd-counts") ccdCounts = splitNumbers(value);
         else if (arg == "--seed") seed = std::strtoull(value.c_str(), nullptr, 10);
         else {
             std::fprintf(stderr, "unknown option %s\n%s", arg.c_str(), kUsage);
@@ -153,5 +256,6 @@ int main(int argc, char** argv) {
     }
     benchScene("pyramid (210 boxes)", loadSceneFile(std::string(STEPWISE_CONFIG_DIR) + "/lesson08_pyramid.scene"),
                threadCounts, settle, steps);
+    if (!(ccdCounts.size() == 1 && ccdCounts.front() == 0)) benchContinuous(ccdCounts, seed);
     return 0;
 }

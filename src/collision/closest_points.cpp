@@ -1,8 +1,9 @@
 /// @file closest_points.cpp
-/// @brief Closest points of two segments: two dot-product equations, then clamping.
+/// @brief Closest points of two segments (two dot-product equations, then clamping), and of a box to a point.
 #include "collision/closest_points.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace stepwise {
 
@@ -49,6 +50,31 @@ SegmentClosestPoints closestPointsOfSegments(const Vec3& p1, const Vec3& q1, con
         }
     }
     return {p1 + d1 * s, p2 + d2 * t, s, t};
+}
+
+PointFromBox pointFromBox(const Vec3& point, const Vec3& centre, const Quat& orientation, const Vec3& halfExtents) {
+    PointFromBox seen;
+    seen.rotation = glm::mat3_cast(orientation);  // body → world
+    seen.local = glm::transpose(seen.rotation) * (point - centre);
+    seen.offset = seen.local - glm::clamp(seen.local, -halfExtents, halfExtents);
+    return seen;
+}
+
+NearestFace nearestFace(const Vec3& local, const Vec3& halfExtents) {
+    int axis = 0;
+    Real leastInside = halfExtents.x - std::abs(local.x);
+    for (int i = 1; i < 3; ++i) {
+        const Real inside = halfExtents[i] - std::abs(local[i]);
+        if (inside < leastInside) {
+            leastInside = inside;
+            axis = i;
+        }
+    }
+    NearestFace face;
+    face.normal = Vec3(0);
+    face.normal[axis] = local[axis] >= Real(0) ? Real(1) : Real(-1);
+    face.inside = leastInside;
+    return face;
 }
 
 }  // namespace stepwise

@@ -1,5 +1,5 @@
 /// @file closest_points.hpp
-/// @brief Closest points of two line segments (the edge–edge contact of box_box.cpp).
+/// @brief Closest points: of two line segments (the edge–edge contact of box_box.cpp), and of a box to a point (sphere_box.cpp, continuous.cpp).
 #pragma once
 
 #include "core/types.hpp"
@@ -27,5 +27,35 @@ struct SegmentClosestPoints {
 /// again). Parallel segments (ae − b² = 0) have many closest pairs: s = 0
 /// is taken. A segment of zero length is treated as a point.
 SegmentClosestPoints closestPointsOfSegments(const Vec3& p1, const Vec3& q1, const Vec3& p2, const Vec3& q2);
+
+/// @brief A point seen from an oriented box: where it is in the box's frame, and how far outside.
+struct PointFromBox {
+    Mat3 rotation{1};         ///< The box's rotation, box frame → world.
+    Vec3 local{0, 0, 0};      ///< The point in the box frame, Rᵀ(p − b), m.
+    Vec3 offset{0, 0, 0};     ///< From the box's closest point to the point, box frame, m (zero inside).
+};
+
+/// @brief The point @p point in the frame of the box (centre @p centre, rotation
+/// @p orientation, half edges @p halfExtents), and its offset from the box's closest point.
+///
+/// In its own frame the box is [−e, +e]; clamping each coordinate of the
+/// point c′ = Rᵀ(p − b) to [−eᵢ, +eᵢ] gives the closest point q of the box
+/// (Ericson, *Real-Time Collision Detection*, §5.1.4), and c′ − q is zero
+/// exactly when the point is inside. The narrowphase (sphere_box.cpp) and the
+/// continuous stage's separation (continuous.cpp) both start from it.
+PointFromBox pointFromBox(const Vec3& point, const Vec3& centre, const Quat& orientation, const Vec3& halfExtents);
+
+/// @brief The way out of a box for a point inside it: the nearest face.
+struct NearestFace {
+    Vec3 normal{0, 1, 0};  ///< Unit, box frame, pointing out of the box through that face.
+    Real inside = 0;       ///< eᵢ − |c′ᵢ|: how far inside that face the point is, m.
+};
+
+/// @brief The face of the box (half edges @p halfExtents) nearest to @p local, a point
+/// inside it in the box's frame: the axis i with the least eᵢ − |c′ᵢ| (the first on a tie).
+///
+/// A point inside gives no closest-point direction (the offset is zero), so
+/// a sphere whose centre is inside a box leaves through this face.
+NearestFace nearestFace(const Vec3& local, const Vec3& halfExtents);
 
 }  // namespace stepwise

@@ -8,10 +8,12 @@
 /// timeOfImpact(); the derivation is in continuous.hpp.
 #include "collision/continuous.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
 #include "collision/aabb.hpp"
+#include "collision/closest_points.hpp"
 
 namespace stepwise {
 
@@ -36,23 +38,11 @@ Separation sphereFromPlane(const Geometry& sphere, const Geometry& plane) {
 /// Sphere A against box B: the gap from the box's closest point (outside), or
 /// minus the way out through the nearest face (inside), as in sphere_box.cpp.
 Separation sphereFromBox(const Geometry& sphere, const Geometry& box) {
-    const Mat3 rotation = glm::mat3_cast(box.orientation);
-    const Vec3 local = glm::transpose(rotation) * (sphere.centre - box.centre);
-    const Vec3 offset = local - glm::clamp(local, -box.halfExtents, box.halfExtents);
-    const Real length = glm::length(offset);
-    if (length > Real(0)) return {length - sphere.radius, rotation * (offset / length)};
-    int axis = 0;
-    Real leastInside = box.halfExtents.x - std::abs(local.x);
-    for (int i = 1; i < 3; ++i) {
-        const Real inside = box.halfExtents[i] - std::abs(local[i]);
-        if (inside < leastInside) {
-            leastInside = inside;
-            axis = i;
-        }
-    }
-    Vec3 face(0);
-    face[axis] = local[axis] >= Real(0) ? Real(1) : Real(-1);
-    return {-leastInside - sphere.radius, rotation * face};
+    const PointFromBox seen = pointFromBox(sphere.centre, box.centre, box.orientation, box.halfExtents);
+    const Real length = glm::length(seen.offset);
+    if (length > Real(0)) return {length - sphere.radius, seen.rotation * (seen.offset / length)};
+    const NearestFace face = nearestFace(seen.local, box.halfExtents);
+    return {-face.inside - sphere.radius, seen.rotation * face.normal};
 }
 
 /// Box A against a plane: the deepest corner's height, n·(c − p) − Σ eᵢ|n·axisᵢ|.
@@ -145,55 +135,95 @@ Real innerRadius(const DynamicObject& body) {
 
 namespace {
 
-Aabb currentBounds(const Geometry& g) {
-    return g.type == GeometryType::Sphere ? sphereAabb(g.centre, g.radius)
-                                          : boxAabb(g.centre, g.orientation, g.halfExtents);
-}
-
-/// The earliest impact of body @p index's path against everything else, or 1 (none).
-Real earliestImpact(const BodySet& bodies, std::size_t index, const Vec3& start) {
-    const Geometry moving = geometryOf(bodies.dynamics[index]);
+/// Everything the path of @p moving from @p start passes through, grown by the touching tolerance.
+Aabb sweptBounds(const Geometry& moving, const Vec3& start) {
     Geometry atStart = moving;
     atStart.centre = start;
-    Aabb swept = merged(currentBounds(atStart), currentBounds(moving));  // everything the path passes through
+    Aabb swept = merged(geometryBounds(atStart), geometryBounds(moving));
     swept.min -= Vec3(kTouchTolerance);
     swept.max += Vec3(kTouchTolerance);
+    return swept;
+}
 
-    Real earliest = 1;
-    auto consider = [&](const Geometry& other) {
-        const std::optional<Real> t = timeOfImpact(moving, start, other);
-        if (t && *t < earliest) earliest = *t;
-    };
-    for (std::size_t j = 0; j < bodies.dynamics.size(); ++j) {
-        if (j == index) continue;
-        const Geometry other = geometryOf(bodies.dynamics[j]);
-        if (swept.overlaps(currentBounds(other))) consider(other);
-    }
-    for (const KinematicsObject& body : bodies.kinematics) {
-        const Geometry other = geometryOf(body);
-        if (swept.overlaps(currentBounds(other))) consider(other);
-    }
-    // No planes: a plane bounds a solid half-space, as thick as can be, so however deep
-    // a step carries a body behind it, the push-out along its normal sends it back out.
-    return earliest;
+/// The earliest time of impact of @p moving, from @p start, against @p other,
+/// if their boxes overlap; @p earliest otherwise. A minimum: the order in
+/// which the candidates come does not change it.
+Real earlierImpact(const Geometry& moving, const Vec3& start, const Aabb& swept, const Geometry& other, Real earliest) {
+    if (!swept.overlaps(geometryBounds(other))) return earliest;
+    const std::optional<Real> t = timeOfImpact(moving, start, other);
+    return t && *t < earliest ? *t : earliest;
+}
+
+/// Moves @p body back to @p start + t·Δ when t < 1; true when it did.
+bool moveBack(DynamicObject& body, const Vec3& start, Real t) {
+    if (t >= Real(1)) return false;
+    body.position = start + t * (body.position - start);
+    return true;
+}
+
+bool isFast(const DynamicObject& body, const Vec3& start) {
+    const Real moved = glm::length(body.position - start);
+    return moved > kFastMotionFraction * innerRadius(body);  // slow: nothing can be skipped
 }
 
 }  // namespace
 
 std::size_t stopFastBodiesAtImpact(const BodySet& bodies, SweepWorkspace& workspace) {
+    const std::size_t count = std::min(bodies.dynamics.size(), workspace.startPositions.size());
+    workspace.fast.resize(bodies.dynamics.size());  // allocates only when bodies are added
+    std::size_t fastCount = 0;
+    for (std::size_t i = 0; i < bodies.dynamics.size(); ++i) {
+        workspace.fast[i] = i < count && isFast(bodies.dynamics[i], workspace.startPositions[i]) ? 1 : 0;
+        fastCount += workspace.fast[i];
+    }
+    workspace.lastClamped = 0;
+    if (fastCount == 0) {
+        workspace.index.markStale();  // nothing to ask: the index is not kept up to date
+        return 0;
+    }
+    // A body is fast or not by its own motion, which no other body's move-back changes:
+    // the flags can be computed first, and the index built once for the whole loop.
+    workspace.index.build(bodies, workspace.startPositions, workspace.fast);
+
     std::size_t clamped = 0;
+    const std::size_t dynamicCount = bodies.dynamics.size();
     // In index order, each against the others as they are now (some already
     // moved back): the same scene gives the same result every run.
-    for (std::size_t i = 0; i < bodies.dynamics.size() && i < workspace.startPositions.size(); ++i) {
-        DynamicObject& body = bodies.dynamics[i];
+    for (std::size_t i = 0; i < count; ++i) {
+        if (!workspace.fast[i]) continue;
         const Vec3 start = workspace.startPositions[i];
-        const Real moved = glm::length(body.position - start);
-        if (moved <= kFastMotionFraction * innerRadius(body)) continue;  // slow: nothing can be skipped
-        const Real t = earliestImpact(bodies, i, start);
-        if (t < Real(1)) {
-            body.position = start + t * (body.position - start);
-            ++clamped;
+        const Geometry moving = geometryOf(bodies.dynamics[i]);
+        const Aabb swept = sweptBounds(moving, start);
+        workspace.index.query(swept, static_cast<std::uint32_t>(i), workspace.candidates);
+        Real earliest = 1;
+        for (const std::uint32_t p : workspace.candidates) {
+            const Geometry other = p < dynamicCount ? geometryOf(bodies.dynamics[p])
+                                                    : geometryOf(bodies.kinematics[p - dynamicCount]);
+            earliest = earlierImpact(moving, start, swept, other, earliest);
         }
+        // No planes: a plane bounds a solid half-space, as thick as can be, so however deep
+        // a step carries a body behind it, the push-out along its normal sends it back out.
+        if (moveBack(bodies.dynamics[i], start, earliest)) ++clamped;
+    }
+    workspace.lastClamped = clamped;
+    return clamped;
+}
+
+std::size_t stopFastBodiesAtImpactBruteForce(const BodySet& bodies, SweepWorkspace& workspace) {
+    std::size_t clamped = 0;
+    for (std::size_t i = 0; i < bodies.dynamics.size() && i < workspace.startPositions.size(); ++i) {
+        const Vec3 start = workspace.startPositions[i];
+        if (!isFast(bodies.dynamics[i], start)) continue;
+        const Geometry moving = geometryOf(bodies.dynamics[i]);
+        const Aabb swept = sweptBounds(moving, start);
+        Real earliest = 1;
+        for (std::size_t j = 0; j < bodies.dynamics.size(); ++j) {
+            if (j != i) earliest = earlierImpact(moving, start, swept, geometryOf(bodies.dynamics[j]), earliest);
+        }
+        for (const KinematicsObject& body : bodies.kinematics) {
+            earliest = earlierImpact(moving, start, swept, geometryOf(body), earliest);
+        }
+        if (moveBack(bodies.dynamics[i], start, earliest)) ++clamped;
     }
     workspace.lastClamped = clamped;
     return clamped;

@@ -55,16 +55,20 @@
 /// (findContacts(), narrowphase.cpp) and this stage follows the rest of the
 /// path with the exact shapes; towards a plane the full sweep is kept.
 ///
-/// **Cost.** One pass over the bodies comparing |Δ| with their size; only a
-/// fast body tests its swept bounding box against every other body (O(n)
-/// each), then runs at most kMaxAdvancementIterations separation tests per
-/// overlapping candidate. With nothing fast the stage costs the copy of the
-/// start positions and that one pass (measured in docs/benchmarks.md).
+/// **Cost.** One pass over the bodies comparing |Δ| with their size. In a
+/// step with a fast body, the bodies' boxes are sorted along one axis
+/// (SweptBoxIndex, continuous_candidates.hpp: O(n) when the order holds from
+/// the last step) and each fast body asks it for the boxes its swept box
+/// overlaps, O(log n + k) instead of O(n); then at most
+/// kMaxAdvancementIterations separation tests per overlapping candidate.
+/// With nothing fast the stage costs the copy of the start positions and
+/// that one pass (measured in docs/benchmarks.md).
 #pragma once
 
 #include <optional>
 #include <vector>
 
+#include "collision/continuous_candidates.hpp"
 #include "collision/narrowphase.hpp"
 #include "world/body_set.hpp"
 
@@ -110,10 +114,14 @@ Separation separation(const Geometry& a, const Geometry& b);
 /// B held still; nothing when it does not, or when they already touch at t = 0.
 std::optional<Real> timeOfImpact(const Geometry& a, const Vec3& start, const Geometry& b);
 
-/// @brief The continuous-collision stage's state: the dynamic bodies' positions at the start of the step.
+/// @brief The continuous-collision stage's state: the dynamic bodies' positions at the start of
+/// the step, and the reused arrays of its candidate search (no allocation once running).
 struct SweepWorkspace {
-    std::vector<Vec3> startPositions;  ///< One per dynamic body, m.
-    std::size_t lastClamped = 0;       ///< Bodies put back at their time of impact in the last step.
+    std::vector<Vec3> startPositions;      ///< One per dynamic body, m.
+    std::vector<std::uint8_t> fast;        ///< 1 for each dynamic body that is fast this step.
+    SweptBoxIndex index;                   ///< The bodies' boxes sorted along one axis (continuous_candidates.hpp).
+    std::vector<std::uint32_t> candidates; ///< The current fast body's candidates (proxy numbers).
+    std::size_t lastClamped = 0;           ///< Bodies put back at their time of impact in the last step.
 };
 
 /// @brief Records where every dynamic body is before it moves (call at the start of the step).
@@ -121,7 +129,16 @@ void recordStartPositions(const BodySet& bodies, SweepWorkspace& workspace);
 
 /// @brief Moves every fast body back to its first time of impact along its path
 /// this step (velocities unchanged).
+///
+/// A fast body's path is tested only against the bodies whose boxes overlap
+/// its swept box, found with SweptBoxIndex (continuous_candidates.hpp) in
+/// O(log n + k) instead of a loop over all n bodies.
 /// @return the number of bodies moved back
 std::size_t stopFastBodiesAtImpact(const BodySet& bodies, SweepWorkspace& workspace);
+
+/// @brief The same stage with each fast body's swept box tested against every other
+/// body, O(n) per fast body: the reference stopFastBodiesAtImpact() must match bit for bit (tests).
+/// @return the number of bodies moved back
+std::size_t stopFastBodiesAtImpactBruteForce(const BodySet& bodies, SweepWorkspace& workspace);
 
 }  // namespace stepwise

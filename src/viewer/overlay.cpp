@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "world/measurements.hpp"
+#include "world/step_plan.hpp"
 
 namespace stepwise::viewer {
 
@@ -173,7 +174,6 @@ std::vector<std::string> hudLines(const Simulation& simulation, const OverlaySta
                     " kg*m^2/s");
 
     std::string timing = "last step, us:";
-    std::string skipped;
     for (std::size_t i = 0; i < kStageCount; ++i) {
         const StageRecord& r = world.stageRecords()[i];
         if (i == 4) {  // two lines, so the display fits a narrow window
@@ -181,14 +181,9 @@ std::vector<std::string> hudLines(const Simulation& simulation, const OverlaySta
             timing = "             ";
         }
         timing += std::string(" ") + kShortStageNames[i] + format(" %.1f", 1e6 * r.lastSeconds);
-        if (world.stepCount() > 0 && !r.ranLastStep) {
-            skipped += std::string(skipped.empty() ? "" : ", ") + stageName(static_cast<Stage>(i));
-        }
     }
     lines.push_back(timing);
-    lines.push_back(world.stepCount() == 0 ? "skipped stages: none yet (no step taken)"
-                    : skipped.empty()      ? "skipped stages: none (every stage ran in the last step)"
-                                           : "skipped stages: " + skipped);
+    lines.push_back(skippedStagesLine(world.plan(), world.stageRecords(), world.stepCount() > 0));
 
     std::string toggles = "H help";
     if (state.draw.contacts) toggles += "   C contacts";

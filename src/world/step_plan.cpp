@@ -2,6 +2,8 @@
 /// @brief The rules of the step plan (step_plan.hpp): one small function per decision.
 #include "world/step_plan.hpp"
 
+#include <string>
+
 #include "collision/broadphase.hpp"
 
 namespace stepwise {
@@ -177,8 +179,41 @@ const char* runReason(Stage stage, bool enabled) {
 
 }  // namespace
 
+std::span<const PipelineSlot> pipelineOrder(SolverKind solver) {
+    using enum Stage;
+    constexpr StageRepeat kOnce = StageRepeat::OncePerStep;
+    constexpr StageRepeat kEach = StageRepeat::EverySubstep;
+    // World::stepWithImpulses(): move, then find and repair the collisions the move made.
+    static constexpr PipelineSlot kImpulse[] = {
+        {ApplyForces, kOnce}, {Integrate, kOnce},   {MoveKinematics, kOnce},  {Continuous, kOnce},
+        {Broadphase, kOnce},  {Narrowphase, kOnce}, {ResolveImpulses, kOnce}, {CorrectPositions, kOnce},
+    };
+    // World::stepWithSequentialImpulses(): find the contacts first, then hold them through the substeps.
+    static constexpr PipelineSlot kSequential[] = {
+        {ApplyForces, kOnce},
+        {Broadphase, kOnce},
+        {Narrowphase, kOnce},
+        {PrepareConstraints, kOnce},
+        {ApplyForces, StageRepeat::LaterSubsteps},
+        {Integrate, kEach},
+        {MoveKinematics, kEach},
+        {SolveConstraints, kEach},
+        {RelaxConstraints, kEach},
+        {Continuous, kOnce},
+        {Restitution, kOnce},
+        {Sleep, kOnce},
+    };
+    switch (solver) {
+        case SolverKind::Impulse: return kImpulse;
+        case SolverKind::SequentialImpulse: return kSequential;
+    }
+    return {};
+}
+
 StepPlan makeStepPlan(const PlanInputs& in) {
     StepPlan plan;
+    plan.solver = in.settings.solver;
+    plan.substeps = in.settings.solver == SolverKind::SequentialImpulse ? in.settings.substeps : 1;
     plan.enabled = in.settings.stepPlan;
     plan.broadphase = in.settings.broadphase;
     plan.broadphaseChoice = broadphaseOf(in);
@@ -214,8 +249,30 @@ std::string describeStepPlan(const StepPlan& plan) {
         text += decision.reason;
         text += '\n';
     };
-    text += "Stages (src/world/stages.hpp):\n";
-    for (std::size_t i = 0; i < kStageCount; ++i) line(stageName(static_cast<Stage>(i)), plan.stages[i]);
+    text += std::string("Stages, in the order a step runs them (Solver=") + toString(plan.solver) +
+            ", src/world/world.cpp):\n";
+    const std::span<const PipelineSlot> order = pipelineOrder(plan.solver);
+    std::array<bool, kStageCount> inPipeline{};
+    bool inSubsteps = false;
+    for (const PipelineSlot& slot : order) {
+        inPipeline[static_cast<std::size_t>(slot.stage)] = true;
+        const bool substep = slot.repeat != StageRepeat::OncePerStep;
+        if (substep && !inSubsteps) text += "  each of the " + std::to_string(plan.substeps) + " substeps:\n";
+        inSubsteps = substep;
+        const std::string name = std::string(substep ? "  " : "") + stageName(slot.stage);
+        PlanDecision decision = plan.stage(slot.stage);
+        std::string reason = decision.reason;
+        if (slot.repeat == StageRepeat::LaterSubsteps) reason += " (again from substep 2 on)";
+        decision.reason = reason.c_str();
+        line(name.c_str(), decision);
+    }
+    bool otherHeader = false;
+    for (std::size_t i = 0; i < kStageCount; ++i) {
+        if (inPipeline[i]) continue;
+        if (!otherHeader) text += "Not in this pipeline:\n";
+        otherHeader = true;
+        line(stageName(static_cast<Stage>(i)), plan.stages[i]);
+    }
     text += "Inside the stages:\n";
     line("collisions", plan.collisions);
     line("box-box SAT", plan.boxBoxSat);
@@ -229,6 +286,22 @@ std::string describeStepPlan(const StepPlan& plan) {
     text += plan.broadphaseChoice.reason;
     text += '\n';
     return text;
+}
+
+std::string skippedStagesLine(const StepPlan& plan, const StageRecords& records, bool stepTaken) {
+    std::string skipped;
+    std::array<bool, kStageCount> listed{};
+    for (const PipelineSlot& slot : pipelineOrder(plan.solver)) {
+        const std::size_t i = static_cast<std::size_t>(slot.stage);
+        if (listed[i]) continue;  // apply-forces has two places in the sequential-impulse step
+        listed[i] = true;
+        if (!plan.runs(slot.stage) || (stepTaken && !records[i].ranLastStep)) {
+            skipped += std::string(skipped.empty() ? "" : ", ") + stageName(slot.stage);
+        }
+    }
+    if (!skipped.empty()) return "skipped stages: " + skipped;
+    return stepTaken ? "skipped stages: none (every stage ran in the last step)"
+                     : "skipped stages: none planned (no step taken yet)";
 }
 
 }  // namespace stepwise

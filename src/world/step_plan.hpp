@@ -18,6 +18,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <span>
 #include <string>
 
@@ -35,6 +36,28 @@ struct PlanDecision {
     const char* reason = ""; ///< One line for a person, e.g. "skipped: no boxes in the scene, so no SAT".
 };
 
+/// @brief How often a stage of a pipeline runs in one step.
+enum class StageRepeat : std::uint8_t {
+    OncePerStep,    ///< Once per step.
+    EverySubstep,   ///< Once in each substep (sequential impulse).
+    LaterSubsteps,  ///< In each substep but the first (apply-forces: the first substep uses the step's forces).
+};
+
+/// @brief One stage at its place in a pipeline.
+struct PipelineSlot {
+    Stage stage;         ///< Which stage.
+    StageRepeat repeat;  ///< How often it runs there.
+};
+
+/// @brief The stages of @p solver's pipeline in the order World::step() runs them
+/// (World::stepWithImpulses(), World::stepWithSequentialImpulses(), src/world/world.cpp).
+///
+/// A stage may appear twice (the sequential impulse runs apply-forces once
+/// before the broadphase and again in every substep after the first); a stage
+/// of the other pipeline does not appear. `stepwise run --explain` prints the
+/// plan in this order, and "[plan]" checks it against the stages the World reports.
+std::span<const PipelineSlot> pipelineOrder(SolverKind solver);
+
 /// @brief What the World does in each step of this scene, and why (see makeStepPlan() for the rules).
 ///
 /// The reasons are string literals, so building a plan allocates nothing:
@@ -50,6 +73,8 @@ struct StepPlan {
     PlanDecision rotation;         ///< Can any body start to turn? If not, still spheres skip the angular update.
     PlanDecision jointSolver;      ///< Do the joint calls (prepare, warm start, solve, break) run?
     PlanDecision idleSkip;         ///< Does a step with nothing awake and nothing moving return at once?
+    SolverKind solver = SolverKind::SequentialImpulse; ///< The pipeline the scene runs (pipelineOrder()).
+    int substeps = 1;              ///< Substeps of a sequential-impulse step.
     BroadphaseKind broadphase = BroadphaseKind::Auto; ///< The broadphase the scene asks for.
     PlanDecision broadphaseChoice; ///< Which broadphase will run and why (Auto decides on the first step).
 
@@ -109,8 +134,19 @@ struct PlanInputs {
 /// runs and nothing is skipped, for comparison.
 StepPlan makeStepPlan(const PlanInputs& inputs);
 
-/// @brief The plan as text, one line per stage then one per sub-decision,
-/// each with its reason (what `stepwise run --explain` prints).
+/// @brief The plan as text, one line per stage in the order the scene's pipeline
+/// runs them (pipelineOrder(); the substep stages indented under "each of the
+/// N substeps"), then the stages of the other pipeline, then one line per
+/// sub-decision, each with its reason (what `stepwise run --explain` prints).
 std::string describeStepPlan(const StepPlan& plan);
+
+/// @brief The viewer's "skipped stages: …" line: the stages of this scene's pipeline
+/// (pipelineOrder(plan.solver), each once) that the plan skips or, once a step
+/// was taken, that did not run in it (an idle step of sleepers runs none).
+/// The other solver's stages are not named: they are not part of this step at all.
+/// @param plan       the World's plan (World::plan())
+/// @param records    the World's stage records (World::stageRecords())
+/// @param stepTaken  false before the first step: only the plan's skips are known
+std::string skippedStagesLine(const StepPlan& plan, const StageRecords& records, bool stepTaken);
 
 }  // namespace stepwise
