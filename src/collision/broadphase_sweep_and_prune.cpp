@@ -4,6 +4,8 @@
 
 #include <algorithm>
 
+#include "core/insertion_sort.hpp"
+
 namespace stepwise {
 
 void SweepAndPrune::chooseAxis(const ProxySet& proxies) {
@@ -42,15 +44,7 @@ void SweepAndPrune::findOverlaps(const ProxySet& proxies, std::vector<ProxyPair>
         // Refresh the boxes in last step's order, then insertion sort: each
         // entry moves left past the entries it has overtaken, usually none.
         for (Entry& entry : sorted_) entry.box = proxies.boxes[entry.proxy];
-        for (std::size_t i = 1; i < n; ++i) {
-            const Entry moving = sorted_[i];
-            std::size_t j = i;
-            while (j > 0 && byMin(moving, sorted_[j - 1])) {
-                sorted_[j] = sorted_[j - 1];
-                --j;
-            }
-            sorted_[j] = moving;
-        }
+        insertionSort(std::span<Entry>(sorted_), byMin);
     }
 
     // The sweep: i's partners are the entries after it that start before i ends.

@@ -9,6 +9,8 @@
 #include <cmath>
 #include <limits>
 
+#include "core/insertion_sort.hpp"
+
 namespace stepwise {
 
 Aabb geometryBounds(const Geometry& shape) {
@@ -109,16 +111,8 @@ void SweptBoxIndex::sortEntries() {
         std::sort(entries_.begin(), entries_.end(), before);
         return;
     }
-    // Insertion sort: O(n + number of swaps), and the bodies rarely pass each other in one step.
-    for (std::size_t i = 1; i < entries_.size(); ++i) {
-        const Entry entry = entries_[i];
-        std::size_t j = i;
-        while (j > 0 && before(entry, entries_[j - 1])) {
-            entries_[j] = entries_[j - 1];
-            --j;
-        }
-        entries_[j] = entry;
-    }
+    // The bodies rarely pass each other in one step: last step's order is nearly sorted.
+    insertionSort(std::span<Entry>(entries_), before);
 }
 
 void SweptBoxIndex::query(const Aabb& query, std::uint32_t self, std::vector<std::uint32_t>& out) const {
