@@ -5,38 +5,16 @@
 #include <cmath>
 #include <cstdio>
 
+#include "config/scene_writing.hpp"
+
 namespace stepwise {
 
 namespace {
 
-/// SplitMix64 (Steele, Lea and Flood 2014): a tiny generator whose output is
-/// fixed by the algorithm, so a seed gives the same scene everywhere
-/// (std::uniform_real_distribution may differ between standard libraries).
-class SplitMix64 {
-public:
-    explicit SplitMix64(std::uint64_t seed) : state_(seed) {}
-    std::uint64_t next() {
-        std::uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
-        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-        z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-        return z ^ (z >> 31);
-    }
-    /// Uniform in [lo, hi): the top 53 bits as a fraction of 2⁵³.
-    double uniform(double lo, double hi) {
-        constexpr double kUnit = 1.0 / 9007199254740992.0;  // 2^-53
-        return lo + (hi - lo) * double(next() >> 11) * kUnit;
-    }
+using namespace scene_writing;
 
-private:
-    std::uint64_t state_;
-};
-
-// Sphere rain and box pile: bodies on a lattice of kLayers layers, so the
-// box's floor grows with the count and the pile stays about as deep.
-constexpr double kLayers = 16;             ///< Lattice layers (bodies per column).
-constexpr double kClearance = 0.5;         ///< Height of the lowest layer's bottom above the floor, m.
+// Sphere rain and box pile: bodies on a lattice (scene_writing.hpp).
 constexpr double kLatticeGap = 0.05;       ///< Free space between neighbouring lattice sites, m.
-constexpr double kDropSpeed = 0.5;         ///< Largest initial horizontal speed, m/s (so the pile is not a lattice).
 constexpr double kDensity = 1000;          ///< Density of every body, kg/m³ (water).
 constexpr double kRainRadiusMin = 0.08;    ///< Sphere radii, m.
 constexpr double kRainRadiusMax = 0.12;
@@ -54,12 +32,6 @@ constexpr double kPyramidMass = 1;         ///< Mass of each cube, kg.
 
 constexpr double kPi = 3.14159265358979323846;
 
-void append(std::string& text, const char* format, auto... values) {
-    char line[512];
-    std::snprintf(line, sizeof line, format, values...);
-    text += line;
-}
-
 void appendHeader(std::string& text, const GeneratorOptions& options) {
     append(text, "# %s: %zu bodies, seed %llu.\n", toString(options.scene), options.count,
            static_cast<unsigned long long>(options.seed));
@@ -69,32 +41,11 @@ void appendHeader(std::string& text, const GeneratorOptions& options) {
            toString(options.broadphase));
 }
 
-/// A box of side `side` open at the top: a floor and four walls facing in.
-void appendContainer(std::string& text, double side) {
-    append(text, "CollisionPlane, Name=floor, Position=(0, 0, 0), Normal=(0, 1, 0), Color=(0.5, 0.5, 0.5)\n");
-    append(text, "CollisionPlane, Name=wall_x0, Position=(0, 0, 0), Normal=(1, 0, 0)\n");
-    append(text, "CollisionPlane, Name=wall_x1, Position=(%.4f, 0, 0), Normal=(-1, 0, 0)\n", side);
-    append(text, "CollisionPlane, Name=wall_z0, Position=(0, 0, 0), Normal=(0, 0, 1)\n");
-    append(text, "CollisionPlane, Name=wall_z1, Position=(0, 0, %.4f), Normal=(0, 0, -1)\n", side);
-}
-
-/// Bodies on a lattice of columns × columns × kLayers sites of pitch `pitch`,
-/// jittered by up to `jitter`, each written by `body(name, position, velocity)`.
-void appendLattice(std::string& text, const GeneratorOptions& options, SplitMix64& random, double pitch,
+/// The open box, then the lattice of `options.count` bodies (scene_writing.hpp).
+void appendBoxedLattice(std::string& text, const GeneratorOptions& options, SplitMix64& random, double pitch,
                    double jitter, auto&& body) {
-    const auto columns = static_cast<std::size_t>(std::ceil(std::sqrt(double(options.count) / kLayers)));
-    appendContainer(text, double(columns) * pitch);
-    for (std::size_t n = 0; n < options.count; ++n) {
-        const std::size_t layer = n / (columns * columns);
-        const std::size_t i = n % columns;
-        const std::size_t j = (n / columns) % columns;
-        const double x = (double(i) + 0.5) * pitch + random.uniform(-jitter, jitter);
-        const double y = kClearance + (double(layer) + 0.5) * pitch + random.uniform(-jitter, jitter);
-        const double z = (double(j) + 0.5) * pitch + random.uniform(-jitter, jitter);
-        const double vx = random.uniform(-kDropSpeed, kDropSpeed);
-        const double vz = random.uniform(-kDropSpeed, kDropSpeed);
-        body(n, x, y, z, vx, vz);
-    }
+    appendContainer(text, double(latticeColumns(options.count)) * pitch);
+    scene_writing::appendLattice(options.count, random, pitch, jitter, body);
 }
 
 /// Three draws in turn: the order of a call's arguments is unspecified in C++,
@@ -113,7 +64,7 @@ void appendColor(std::string& text, SplitMix64& random) {
 
 void sphereRain(std::string& text, const GeneratorOptions& options, SplitMix64& random) {
     const double pitch = 2 * kRainRadiusMax + kLatticeGap;
-    appendLattice(text, options, random, pitch, kLatticeGap / 2,
+    appendBoxedLattice(text, options, random, pitch, kLatticeGap / 2,
                   [&](std::size_t n, double x, double y, double z, double vx, double vz) {
                       const double r = random.uniform(kRainRadiusMin, kRainRadiusMax);
                       const double mass = kDensity * 4.0 / 3.0 * kPi * r * r * r;
@@ -128,7 +79,7 @@ void sphereRain(std::string& text, const GeneratorOptions& options, SplitMix64& 
 void boxPile(std::string& text, const GeneratorOptions& options, SplitMix64& random) {
     // A box turned any way fits in a sphere of its half-diagonal, √3·e/2 at most.
     const double pitch = std::sqrt(3.0) * kPileEdgeMax + kLatticeGap;
-    appendLattice(text, options, random, pitch, kLatticeGap / 2,
+    appendBoxedLattice(text, options, random, pitch, kLatticeGap / 2,
                   [&](std::size_t n, double x, double y, double z, double vx, double vz) {
                       const Vec3 edge = uniformTriple(random, kPileEdgeMin, kPileEdgeMax);
                       const Vec3 degrees = uniformTriple(random, 0, 360);
