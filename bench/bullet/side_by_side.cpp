@@ -13,6 +13,9 @@
 #include <btBulletDynamicsCommon.h>
 
 #include <algorithm>
+#include <array>
+#include <optional>
+#include <utility>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -111,12 +114,86 @@ struct Table {
     }
 };
 
+/// @brief What one run measured of the targets of issue #7, filled in by the scenarios that ran.
+///
+/// The verdicts are computed here, from the figures of the same run, so the
+/// page that prints them cannot disagree with the tables above it.
+struct Targets {
+    struct Rain {
+        std::size_t count = 0;
+        double ourCpu = 0, theirCpu = 0;  ///< CPU s per step (medians).
+        double ourOverlap = 0;            ///< Worst overlap, m.
+        std::size_t escaped = 0;          ///< Stepwise's spheres out of the box at the end.
+    };
+    std::vector<Rain> rains;
+    std::vector<std::pair<std::string, bool>> stacks;  ///< Scene, and whether Stepwise's stands.
+    std::optional<double> momentumDrift;               ///< Free box: worst ‖L − L0‖/‖L0‖.
+    std::vector<std::pair<int, double>> bounces;       ///< 1/h, and the worst relative apex error.
+};
+
+constexpr double kSpeedTarget = 2;                 ///< Stepwise at least 2× Bullet's speed on the rain.
+constexpr double kOverlapTarget = 5e-3;            ///< Worst sphere overlap under 5 mm, m.
+constexpr double kMomentumTarget = 1e-6;           ///< A free body's |L| kept to 1e-6 (relative).
+constexpr double kBounceTarget = 0.02;             ///< Bounce apexes within 2 % of e^(2n)·h.
+/// "Flat" cost per body: the largest rain's µs per sphere within 25 % of the
+/// smallest's. (The issue asks for flat; 25 % is the tolerance this table
+/// states for it, over 16 times the bodies.)
+constexpr double kFlatCostTolerance = 0.25;
+
+/// The table of verdicts: one row per target, with the figure measured and "yes" or "no".
+void printTargets(std::FILE* out, const Targets& t, bool markdown) {
+    std::vector<std::array<std::string, 3>> rows;
+    const auto verdict = [](bool met) { return std::string(met ? "yes" : "no"); };
+    for (const Targets::Rain& r : t.rains) {
+        const double speed = r.theirCpu / r.ourCpu;
+        rows.push_back({"rain " + std::to_string(r.count) + ": at least 2× Bullet's speed",
+                        format("%.2f", kMs * r.ourCpu) + " against " + format("%.2f", kMs * r.theirCpu) +
+                            " ms CPU: " + (speed >= 1 ? format("%.2f× faster", speed) : format("%.2f× slower", 1 / speed)),
+                        verdict(speed >= kSpeedTarget)});
+        rows.push_back({"rain " + std::to_string(r.count) + ": worst overlap under 5 mm, none escapes",
+                        format("%.1f mm", kMs * r.ourOverlap) + ", " + std::to_string(r.escaped) + " escaped",
+                        verdict(r.ourOverlap < kOverlapTarget && r.escaped == 0)});
+    }
+    if (t.rains.size() >= 2) {
+        const Targets::Rain& small = t.rains.front();
+        const Targets::Rain& large = t.rains.back();
+        const double perSmall = small.ourCpu / double(small.count), perLarge = large.ourCpu / double(large.count);
+        const double growth = perLarge / perSmall - 1;
+        const double bulletGrowth = (large.theirCpu / double(large.count)) / (small.theirCpu / double(small.count)) - 1;
+        rows.push_back({"cost per sphere flat from " + std::to_string(small.count) + " to " + std::to_string(large.count),
+                        format("%.1f", 1e6 * perSmall) + " → " + format("%.1f", 1e6 * perLarge) + " µs (" +
+                            format("%+.0f %%", 100 * growth) + "; Bullet " + format("%+.0f %%", 100 * bulletGrowth) + ")",
+                        verdict(std::abs(growth) <= kFlatCostTolerance)});
+    }
+    for (const auto& [scene, stands] : t.stacks) {
+        rows.push_back({scene + " stands", stands ? "stands" : "falls", verdict(stands)});
+    }
+    if (t.momentumDrift) {
+        rows.push_back({"free body: angular momentum kept to 1e-6", format("%.2e", *t.momentumDrift),
+                        verdict(*t.momentumDrift <= kMomentumTarget)});
+    }
+    for (const auto& [inverseH, error] : t.bounces) {
+        rows.push_back({"bounce apexes within 2 % at h = 1/" + std::to_string(inverseH),
+                        std::isfinite(error) ? format("%.2f %%", 100 * error) : std::string("no bounce"),
+                        verdict(error <= kBounceTarget)});
+    }
+    if (rows.empty()) return;
+    if (markdown) {
+        std::fprintf(out, "\n**Against the targets of issue #7** (computed from the tables above, same run)\n\n"
+                          "| target for Stepwise | measured | met? |\n|---|---|---|\n");
+        for (const auto& r : rows) std::fprintf(out, "| %s | %s | %s |\n", r[0].c_str(), r[1].c_str(), r[2].c_str());
+        return;
+    }
+    std::fprintf(out, "\nAgainst the targets of issue #7\n");
+    for (const auto& r : rows) std::fprintf(out, "  %-52s %-56s %s\n", r[0].c_str(), r[1].c_str(), r[2].c_str());
+}
+
 int stepsOf(const Scene& scene, bool quick) {
     const int steps = static_cast<int>(std::lround(scene.settings.duration / scene.settings.timeStep));
     return quick ? std::min(steps, kQuickSteps) : steps;
 }
 
-Table sphereRain(std::size_t count, int rainSteps, bool quick) {
+Table sphereRain(std::size_t count, int rainSteps, bool quick, Targets& targets) {
     const Scene scene = parseScene(sphereRainSceneText(count, 1), "sphere-rain");
     const int steps = quick ? kQuickSteps : rainSteps;
     const Real h = scene.settings.timeStep;
@@ -144,10 +221,12 @@ Table sphereRain(std::size_t count, int rainSteps, bool quick) {
     std::size_t ourAsleep = 0;
     for (const DynamicObject& b : ours.world.dynamics()) ourAsleep += b.asleep ? 1 : 0;
     table.addText("asleep at the end", std::to_string(ourAsleep), std::to_string(theirs.sleepingCount()));
+    targets.rains.push_back({count, ourSeconds.cpu, theirSeconds.cpu, double(ourMeter.worstOverlap()),
+                             ourMeter.escaped(ourEnd)});
     return table;
 }
 
-Table stack(const std::string& path, const std::string& title, bool quick) {
+Table stack(const std::string& path, const std::string& title, bool quick, Targets& targets) {
     const Scene scene = loadSceneFile(path);
     const int steps = stepsOf(scene, quick);
     const Real h = scene.settings.timeStep;
@@ -170,10 +249,11 @@ Table stack(const std::string& path, const std::string& title, bool quick) {
         return m.fallTime() ? format("%.2f s", double(*m.fallTime())) : std::string("stands");
     };
     table.addText("falls (a box moves > 0.5 m) at", fall(ourMeter), fall(theirMeter));
+    targets.stacks.emplace_back(title, !ourMeter.fallTime());
     return table;
 }
 
-Table freeBox(const std::string& path, bool quick) {
+Table freeBox(const std::string& path, bool quick, Targets& targets) {
     const Scene scene = loadSceneFile(path);
     const int steps = stepsOf(scene, quick);
     const Real h = scene.settings.timeStep;
@@ -193,10 +273,11 @@ Table freeBox(const std::string& path, bool quick) {
     table.add("worst abs(T − T0) / T0", "%.2e", ourMeter.worstEnergyDrift(), theirMeter.worstEnergyDrift());
     table.addText("(T - T0) / T0 at the end", format("%+.2e", ourMeter.finalEnergyDrift()),
                   format("%+.2e", theirMeter.finalEnergyDrift()));
+    targets.momentumDrift = ourMeter.worstMomentumDrift();
     return table;
 }
 
-Table bounce(const std::string& path, Real h) {
+Table bounce(const std::string& path, Real h, Targets& targets) {
     Scene scene = loadSceneFile(path);
     scene.settings.timeStep = h;
     const int steps = stepsOf(scene, false);
@@ -235,6 +316,7 @@ Table bounce(const std::string& path, Real h) {
                           std::isfinite(ourWorst) && std::isfinite(theirWorst) && ourWorst > 0
                               ? format("%.2f", theirWorst / ourWorst)
                               : std::string("—")});
+    targets.bounces.emplace_back(static_cast<int>(std::lround(1 / double(h))), ourWorst);
     return table;
 }
 
@@ -280,6 +362,7 @@ int runSideBySide(const SideBySideOptions& options) {
     std::printf("stepwise-bench bullet: Stepwise against Bullet %d.%02d (btScalar = %s), same scene files\n",
                 BT_BULLET_VERSION / 100, BT_BULLET_VERSION % 100, sizeof(btScalar) == 8 ? "double" : "float");
     std::vector<Table> tables;
+    Targets targets;
     const auto show = [&](Table table) {
         table.print(stdout, false);
         std::fflush(stdout);
@@ -291,22 +374,23 @@ int runSideBySide(const SideBySideOptions& options) {
                    std::find(options.scenarios.begin(), options.scenarios.end(), name) != options.scenarios.end();
         };
         if (wanted("rain")) {
-            for (const std::size_t n : sizes) show(sphereRain(n, options.rainSteps, options.quick));
+            for (const std::size_t n : sizes) show(sphereRain(n, options.rainSteps, options.quick, targets));
         }
         if (wanted("stacks")) {
-            show(stack(dir + "lesson08_pyramid.scene", "Pyramid of 210 boxes", options.quick));
-            show(stack(dir + "lesson08_tower.scene", "Tower of 20 boxes", options.quick));
+            show(stack(dir + "lesson08_pyramid.scene", "Pyramid of 210 boxes", options.quick, targets));
+            show(stack(dir + "lesson08_tower.scene", "Tower of 20 boxes", options.quick, targets));
         }
-        if (wanted("free-box")) show(freeBox(dir + "reference_free_box.scene", options.quick));
+        if (wanted("free-box")) show(freeBox(dir + "reference_free_box.scene", options.quick, targets));
         if (wanted("bounce")) {
-            show(bounce(dir + "reference_bounce.scene", kDefaultTimeStep));
-            show(bounce(dir + "reference_bounce.scene", kFineTimeStep));
+            show(bounce(dir + "reference_bounce.scene", kDefaultTimeStep, targets));
+            show(bounce(dir + "reference_bounce.scene", kFineTimeStep, targets));
         }
         if (wanted("incline")) show(incline(dir + "lesson07_incline.scene"));
     } catch (const std::exception& error) {
         std::fprintf(stderr, "stepwise-bench bullet: %s\n", error.what());
         return 1;
     }
+    printTargets(stdout, targets, false);
     if (options.markdownPath) {
         std::FILE* out = std::fopen(options.markdownPath->c_str(), "w");
         if (!out) {
@@ -317,6 +401,7 @@ int runSideBySide(const SideBySideOptions& options) {
                           "(above 1: Stepwise better).\n", BT_BULLET_VERSION / 100, BT_BULLET_VERSION % 100,
                      sizeof(btScalar) == 8 ? "double" : "float");
         for (const Table& table : tables) table.print(out, true);
+        printTargets(out, targets, true);
         std::fclose(out);
     }
     return 0;

@@ -21,10 +21,6 @@ namespace {
 /// 1e-154 N·s and below in double).
 constexpr Real kSurelyInsideCircle = Real(1) - Real(16) * std::numeric_limits<Real>::epsilon();
 
-Vec3 totalImpulse(const SolverContact& c) {
-    return c.normalImpulse * c.normal + c.tangentImpulse[0] * c.tangent[0] + c.tangentImpulse[1] * c.tangent[1];
-}
-
 /// Where an anchor is now: a box's material point turns with the box; a
 /// sphere's contact point stays at the same offset from its centre (a rolling
 /// ball's support is always underneath it).
@@ -47,67 +43,50 @@ Real currentSeparation(const SolverContact& c, const SolverWorkspace& w) {
 }
 
 /// The solver-body record of dynamic body @p index, made on first use: its
-/// mass, and its world inverse inertia, once per body per step.
+/// mass, and its world inertia and inverse inertia, once per body per step.
 std::uint32_t recordOf(SolverWorkspace& w, std::uint32_t index) {
     std::uint32_t& record = w.bodyRecord[index];
     if (record == kStaticSolverBody) {
         const DynamicObject& body = w.dynamics[index];
         record = static_cast<std::uint32_t>(w.bodies.size());
-        SolverBody& s = w.bodies.emplace_back();
-        s.velocity = body.velocity;
-        s.angularVelocity = body.angularVelocity;
-        s.angularMomentum = body.angularMomentum;
-        s.inverseInertia = worldInverseInertia(body.orientation, body.inverseInertiaBody);
-        s.inverseMass = body.inverseMass;
-        s.body = index;
+        w.bodies.push_back({body.velocity, body.angularVelocity, body.inverseMass});
+        w.inertias.push_back({worldInverseInertia(body.orientation, body.inverseInertiaBody),
+                              worldInertia(body.orientation, body.inertiaBody), index});
     }
     return record;
 }
 
-/// 1/m_eff along unit direction d, J·M⁻¹·Jᵀ (the formula of point_impulse.hpp,
-/// in the same order; the static record adds zeros).
-Real inverseEffectiveMass(const SolverBody& a, const SolverBody& b, const Vec3& rA, const Vec3& rB, const Vec3& d) {
-    const Vec3 turnA = glm::cross(rA, d);
-    const Vec3 turnB = glm::cross(rB, d);
-    return a.inverseMass + b.inverseMass + glm::dot(turnA, a.inverseInertia * turnA) +
-           glm::dot(turnB, b.inverseInertia * turnB);
-}
-
 /// Gather: copies the velocities of the bodies in contacts from the World's
-/// objects into their records (a joint may have changed them since the last
-/// pass). The static record is reset: impulses leave its velocity at zero
-/// but do add to its angular momentum, which nothing reads.
+/// objects into their records (the integrator, the drift or a joint may have
+/// changed them since the last pass).
 void gatherVelocities(SolverWorkspace& w) {
-    w.bodies[kStaticSolverBody].angularMomentum = Vec3(0);
     for (std::size_t i = 1; i < w.bodies.size(); ++i) {
-        SolverBody& s = w.bodies[i];
-        const DynamicObject& body = w.dynamics[s.body];
-        s.velocity = body.velocity;
-        s.angularVelocity = body.angularVelocity;
-        s.angularMomentum = body.angularMomentum;
+        const DynamicObject& body = w.dynamics[w.inertias[i].body];
+        w.bodies[i].velocity = body.velocity;
+        w.bodies[i].angularVelocity = body.angularVelocity;
     }
 }
 
 /// Scatter: writes the records' velocities back to the World's objects, for
-/// the joints, the drift and the integrator.
+/// the joints, the drift and the integrator. The pass changed ω by I⁻¹·ΔL with
+/// the step's world I⁻¹, so the angular momentum changed by ΔL = I·Δω.
 void scatterVelocities(SolverWorkspace& w) {
     for (std::size_t i = 1; i < w.bodies.size(); ++i) {
         const SolverBody& s = w.bodies[i];
-        DynamicObject& body = w.dynamics[s.body];
+        DynamicObject& body = w.dynamics[w.inertias[i].body];
         body.velocity = s.velocity;
+        body.angularMomentum += w.inertias[i].inertia * (s.angularVelocity - body.angularVelocity);
         body.angularVelocity = s.angularVelocity;
-        body.angularMomentum = s.angularMomentum;
     }
 }
 
-// Small enough to inline into every pass: a call would spill the pass's
-// registers (every vector register is caller-saved on x86-64).
-inline Vec3 relativeVelocity(const SolverContact& c, const std::vector<SolverBody>& bodies) {
-    return relativeVelocity(bodies[c.bodyA], bodies[c.bodyB], c.rA, c.rB, c.staticVelocity);
+/// J·v along the normal: B's surface velocity minus A's, m/s (< 0: approaching).
+inline Real normalVelocity(const SolverContact& c, const std::vector<SolverBody>& bodies) {
+    return rowVelocity(bodies[c.bodyA], bodies[c.bodyB], c.normal, c.normalRow) + c.normalSurfaceSpeed;
 }
 
-inline void applyImpulse(const SolverContact& c, std::vector<SolverBody>& bodies, const Vec3 P) {
-    applyImpulse(bodies[c.bodyA], bodies[c.bodyB], c.rA, c.rB, P);
+inline void applyNormalImpulse(const SolverContact& c, std::vector<SolverBody>& bodies, Real lambda) {
+    applyRowImpulse(bodies[c.bodyA], bodies[c.bodyB], c.normal, c.normalRow, lambda);
 }
 
 SolverContact prepareOne(const BodySet& bodies, const Contact& contact, Real h, SolverWorkspace& w) {
@@ -135,19 +114,28 @@ SolverContact prepareOne(const BodySet& bodies, const Contact& contact, Real h, 
             c.anchorTurnsWithB = k.shape != Shape::Sphere;
         }
     }
+    const SolverBodyInertia& inertiaA = w.inertias[c.bodyA];
+    const SolverBodyInertia& inertiaB = w.inertias[c.bodyB];
     const SolverBody& bodyA = w.bodies[c.bodyA];
     const SolverBody& bodyB = w.bodies[c.bodyB];
     c.startSeparation = -contact.depth;
     c.normal = contact.normal;
     tangentBasis(c.normal, c.tangent);
-    c.normalMass = Real(1) / inverseEffectiveMass(bodyA, bodyB, c.rA, c.rB, c.normal);
-    for (int k = 0; k < 2; ++k) c.tangentMass[k] = Real(1) / inverseEffectiveMass(bodyA, bodyB, c.rA, c.rB, c.tangent[k]);
+    // J's angular parts and K, once per step: r, d and I⁻¹ are fixed through it (solver_body.hpp).
+    c.normalRow = makeContactRow(inertiaA, inertiaB, c.rA, c.rB, c.normal);
+    c.normalMass = Real(1) / inverseEffectiveMass(bodyA, bodyB, c.normalRow);
+    c.normalSurfaceSpeed = glm::dot(c.staticVelocity, c.normal);
+    for (int k = 0; k < 2; ++k) {
+        c.tangentRow[k] = makeContactRow(inertiaA, inertiaB, c.rA, c.rB, c.tangent[k]);
+        c.tangentMass[k] = Real(1) / inverseEffectiveMass(bodyA, bodyB, c.tangentRow[k]);
+        c.tangentSurfaceSpeed[k] = glm::dot(c.staticVelocity, c.tangent[k]);
+    }
     c.friction = combineFriction(a.friction, other.friction);
 
     // The bounce, decided before any impulse (contact_solver.hpp): the
     // approach speed when the surfaces meet, v_c² = v_n² + 2·a·C, with a the
     // approach acceleration −(a_B − a_A)·n.
-    const Real vn = glm::dot(relativeVelocity(c, w.bodies), c.normal);
+    const Real vn = normalVelocity(c, w.bodies);
     const Real approachAcceleration = -glm::dot(other.acceleration - a.acceleration, c.normal);
     if (vn < 0) {
         c.approachAtTouch = std::sqrt(std::max(Real(0), vn * vn + Real(2) * approachAcceleration * c.startSeparation));
@@ -167,7 +155,9 @@ void prepareContacts(const BodySet& bodies, std::span<const Contact> contacts, R
     // Records are made as the contacts first meet their bodies; last step's are dropped.
     workspace.bodyRecord.assign(bodies.dynamics.size(), kStaticSolverBody);
     workspace.bodies.clear();
+    workspace.inertias.clear();
     workspace.bodies.emplace_back();  // record 0: the static body (m⁻¹ = 0, I⁻¹ = 0, at rest)
+    workspace.inertias.emplace_back();
     workspace.contacts.resize(contacts.size());
     for (std::size_t i = 0; i < contacts.size(); ++i) {
         SolverContact& c = workspace.contacts[i];
@@ -204,7 +194,15 @@ void warmStartContacts(SolverWorkspace& workspace, bool accumulate) {
         return;
     }
     gatherVelocities(workspace);
-    for (SolverContact& c : workspace.contacts) applyImpulse(c, workspace.bodies, totalImpulse(c));
+    std::vector<SolverBody>& bodies = workspace.bodies;
+    for (const SolverContact& c : workspace.contacts) {
+        SolverBody a = bodies[c.bodyA];  // copies: kept in registers, stored once (solver_body.hpp)
+        SolverBody b = bodies[c.bodyB];
+        applyRowImpulse(a, b, c.normal, c.normalRow, c.normalImpulse);
+        for (int k = 0; k < 2; ++k) applyRowImpulse(a, b, c.tangent[k], c.tangentRow[k], c.tangentImpulse[k]);
+        bodies[c.bodyA] = a;
+        bodies[c.bodyB] = b;
+    }
     scatterVelocities(workspace);
 }
 
@@ -225,7 +223,9 @@ void solveContacts(SolverWorkspace& workspace, const ContactSolverSettings& sett
             massScale = settings.softness.massScale;
             impulseScale = settings.softness.impulseScale;
         }
-        const Real vn = glm::dot(relativeVelocity(c, bodies), c.normal);
+        SolverBody a = bodies[c.bodyA];  // copies: kept in registers, stored once (solver_body.hpp)
+        SolverBody b = bodies[c.bodyB];
+        const Real vn = rowVelocity(a, b, c.normal, c.normalRow) + c.normalSurfaceSpeed;
         const Real impulse = -c.normalMass * massScale * (vn + bias) - impulseScale * c.normalImpulse;
         Real applied = 0;
         if (settings.accumulate) {
@@ -237,13 +237,18 @@ void solveContacts(SolverWorkspace& workspace, const ContactSolverSettings& sett
             c.normalImpulse += applied;
         }
         c.maxNormalImpulse = std::max(c.maxNormalImpulse, c.normalImpulse);
-        applyImpulse(c, bodies, applied * c.normal);
+        applyRowImpulse(a, b, c.normal, c.normalRow, applied);
 
         // Friction on what is left sliding, inside Coulomb's circle |λ_t| ≤ μ·λ_n.
-        const Vec3 relative = relativeVelocity(c, bodies);
+        // Both tangent velocities are read after the normal impulse (friction acts
+        // on the sliding that is left) and before either friction impulse, so the
+        // pair is clamped to the circle together.
         const Real limit = c.friction * c.normalImpulse;
         Real total[2];
-        for (int k = 0; k < 2; ++k) total[k] = c.tangentImpulse[k] - c.tangentMass[k] * glm::dot(relative, c.tangent[k]);
+        for (int k = 0; k < 2; ++k) {
+            const Real vt = rowVelocity(a, b, c.tangent[k], c.tangentRow[k]) + c.tangentSurfaceSpeed[k];
+            total[k] = c.tangentImpulse[k] - c.tangentMass[k] * vt;
+        }
         // Most points stick: a test on squares (no root) settles those; std::hypot
         // runs only on or near the circle, where the impulse is scaled back onto it.
         // A point that is not pushing (λ_n = 0, a speculative gap) has no friction:
@@ -260,10 +265,12 @@ void solveContacts(SolverWorkspace& workspace, const ContactSolverSettings& sett
                 total[1] *= scale;
             }
         }
-        const Vec3 change = (total[0] - c.tangentImpulse[0]) * c.tangent[0] + (total[1] - c.tangentImpulse[1]) * c.tangent[1];
-        c.tangentImpulse[0] = total[0];
-        c.tangentImpulse[1] = total[1];
-        applyImpulse(c, bodies, change);
+        for (int k = 0; k < 2; ++k) {
+            applyRowImpulse(a, b, c.tangent[k], c.tangentRow[k], total[k] - c.tangentImpulse[k]);
+            c.tangentImpulse[k] = total[k];
+        }
+        bodies[c.bodyA] = a;
+        bodies[c.bodyB] = b;
     }
     scatterVelocities(workspace);
 }
@@ -273,10 +280,10 @@ void applyRestitution(SolverWorkspace& workspace) {
     for (SolverContact& c : workspace.contacts) {
         if (c.restitution == Real(0) || c.maxNormalImpulse == Real(0)) continue;
         // Drive v_n to e·v_c (separating), never pulling: the accumulated λ stays ≥ 0.
-        const Real vn = glm::dot(relativeVelocity(c, workspace.bodies), c.normal);
+        const Real vn = normalVelocity(c, workspace.bodies);
         const Real impulse = c.normalMass * (c.restitution * c.approachAtTouch - vn);
         const Real total = std::max(c.normalImpulse + impulse, Real(0));
-        applyImpulse(c, workspace.bodies, (total - c.normalImpulse) * c.normal);
+        applyNormalImpulse(c, workspace.bodies, total - c.normalImpulse);
         c.normalImpulse = total;
     }
     scatterVelocities(workspace);
@@ -298,7 +305,7 @@ void storeContactImpulses(std::span<const Contact> contacts, SolverWorkspace& wo
     std::swap(workspace.previousImpulses, workspace.currentImpulses);
     // ω was updated alongside L with the step's fixed I⁻¹; make them agree exactly again.
     // Once per body in a contact: the result depends only on L and the orientation.
-    for (std::size_t i = 1; i < workspace.bodies.size(); ++i) updateAngularVelocity(workspace.dynamics[workspace.bodies[i].body]);
+    for (std::size_t i = 1; i < workspace.bodies.size(); ++i) updateAngularVelocity(workspace.dynamics[workspace.inertias[i].body]);
 }
 
 }  // namespace stepwise

@@ -75,15 +75,19 @@ struct SolverContact {
     std::uint32_t bodyB = kStaticSolverBody; ///< B's record, or kStaticSolverBody for a plane or kinematic body.
     Vec3 normal{0, 1, 0};            ///< From A towards B, fixed for the step.
     Vec3 tangent[2];                 ///< Friction directions across the normal.
-    Vec3 rA{0, 0, 0};                ///< Lever arm from A's centre to the point (world frame, start of step), m.
-    Vec3 rB{0, 0, 0};                ///< The same from B's centre (zero for a plane), m.
-    Vec3 staticVelocity{0, 0, 0};    ///< Velocity of a kinematic B's surface at the point, m/s (zero for a plane or a dynamic B).
+    ContactRow normalRow;            ///< J's angular parts along n (solver_body.hpp), fixed for the step.
+    ContactRow tangentRow[2];        ///< The same along each tangent.
     Real normalMass = 0;             ///< K⁻¹ along n, kg.
     Real tangentMass[2] = {0, 0};    ///< K⁻¹ along each tangent, kg.
     Real friction = 0;               ///< μ of the pair.
     Real normalImpulse = 0;          ///< Accumulated λ_n of the current substep, N·s.
     Real tangentImpulse[2] = {0, 0}; ///< Accumulated friction impulses, N·s.
     Real maxNormalImpulse = 0;       ///< Largest λ_n seen this step (0: never pushed), N·s.
+    Real normalSurfaceSpeed = 0;     ///< A kinematic B's surface velocity along n, m/s (zero for a plane or a dynamic B).
+    Real tangentSurfaceSpeed[2] = {0, 0}; ///< The same along each tangent, m/s.
+    Vec3 rA{0, 0, 0};                ///< Lever arm from A's centre to the point (world frame, start of step), m.
+    Vec3 rB{0, 0, 0};                ///< The same from B's centre (zero for a plane), m.
+    Vec3 staticVelocity{0, 0, 0};    ///< Velocity of a kinematic B's surface at the point, m/s (zero for a plane or a dynamic B).
     // The separation at the recorded poses (currentSeparation() in contact_solver.cpp).
     std::uint32_t indexA = 0;        ///< A's index in the dynamic array (its pose).
     BodyRef refB;                    ///< B: its kind and index (its pose).
@@ -110,6 +114,7 @@ struct ContactSolverSettings {
 struct SolverWorkspace {
     std::vector<SolverContact> contacts;         ///< One per contact point, this step.
     std::vector<SolverBody> bodies;              ///< Record 0 static, then one per dynamic body in a contact (solver_body.hpp).
+    std::vector<SolverBodyInertia> inertias;     ///< The same records' inertia and body index (cold: prepare and write-back).
     std::vector<std::uint32_t> bodyRecord;       ///< Per dynamic body: its record in `bodies`, or kStaticSolverBody if none.
     std::span<DynamicObject> dynamics;           ///< The World's dynamic bodies, as prepareContacts() saw them (gather, scatter).
     std::vector<CachedImpulse> previousImpulses; ///< Last step's impulses, sorted by key.

@@ -30,6 +30,9 @@ Mat3 parallelAxis(const Mat3& inertiaAboutCentre, Real mass, const Vec3& offset)
 
 namespace {
 Mat3 rotateDiagonal(const Quat& orientation, const Vec3& diagonal) {
+    // Three equal moments (a sphere, a cube): R·(s·E)·Rᵀ = s·R·Rᵀ = s·E in every
+    // orientation, so the rotation (two 3×3 products) is skipped.
+    if (diagonal.x == diagonal.y && diagonal.y == diagonal.z) return Mat3(diagonal.x);
     const Mat3 r = glm::mat3_cast(orientation);
     Mat3 d(0);
     d[0][0] = diagonal.x;

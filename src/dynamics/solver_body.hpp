@@ -2,29 +2,30 @@
 /// @brief The sequential-impulse contact solver's view of a body: a small record in one contiguous array.
 ///
 /// **Why a separate array.** A contact pass touches, for every contact point,
-/// the velocity, angular velocity, angular momentum, inverse mass and world
-/// inverse inertia of both bodies. A DynamicObject holds those among some
-/// thirty other fields (name, colour, shape, forces, sleep state…), so
-/// reading them through the object costs several cache lines per body, and
-/// a world inverse inertia rebuilt per contact costs a quaternion-to-matrix
-/// conversion each time. Catto's Box2D v3 solves on *solver bodies* instead:
-/// the solver copies what it needs of each body it touches into a packed
-/// array at the start of a pass (gather), the contacts refer to those
+/// the velocity, angular velocity and inverse mass of both bodies. A
+/// DynamicObject holds those among some thirty other fields (name, colour,
+/// shape, forces, sleep state…), so reading them through the object costs
+/// several cache lines per body. Catto's Box2D v3 solves on *solver bodies*
+/// instead: the solver copies what it needs of each body it touches into a
+/// packed array at the start of a pass (gather), the contacts refer to those
 /// records by a 32-bit index, and the pass writes the velocities back at the
 /// end (scatter). The world inverse inertia I⁻¹ = R·I_body⁻¹·Rᵀ is computed
 /// once per body per step (the solver holds it fixed through the step, see
-/// point_impulse.hpp), not once per contact.
+/// point_impulse.hpp) and goes into the contacts' rows (ContactRow below),
+/// not into the record a pass reads.
 ///
 /// Only bodies that are in a contact get a record, numbered in the order the
 /// contacts first meet them, so neighbouring contacts tend to touch
 /// neighbouring records. Record 0 is the *static body*: B of a contact with a
 /// plane or a kinematic body. It has m⁻¹ = 0 and I⁻¹ = 0, so an impulse does
 /// not move it, and its velocity stays zero; the velocity of a kinematic
-/// surface is kept in the contact (SolverContact::staticVelocity). With it, a
-/// contact pass needs no test "is B dynamic?" per contact.
+/// surface is kept in the contact (SolverContact::normalSurfaceSpeed and
+/// tangentSurfaceSpeed). With it, a contact pass needs no test "is B
+/// dynamic?" per contact.
 ///
-/// The formulas are those of point_impulse.hpp, with the same operations in
-/// the same order: the solver's results do not change.
+/// The formulas are those of point_impulse.hpp, written per row of the
+/// Jacobian (ContactRow below) so that what is fixed through the step is
+/// computed once.
 ///
 /// Reference: Catto, Box2D v3 `solver.h` (b2BodyState, b2BodySim), 2024.
 #pragma once
@@ -39,40 +40,85 @@ namespace stepwise {
 /// @brief Record 0 of the solver-body array: the immovable B of a contact with a plane or kinematic body.
 inline constexpr std::uint32_t kStaticSolverBody = 0;
 
-/// @brief What the contact solver reads and writes of one dynamic body during a pass.
+/// @brief What a contact pass reads and writes of one dynamic body: 56 bytes, so a pass's bodies stay in cache.
+///
+/// A pass copies both records of a contact into local variables, solves the
+/// contact's three rows on the copies, and stores them back once. The copies
+/// cannot alias anything else, so the compiler keeps them in registers
+/// instead of storing and reloading a body after every row.
 struct SolverBody {
     Vec3 velocity{0, 0, 0};         ///< Linear velocity of the centre of mass, m/s.
     Vec3 angularVelocity{0, 0, 0};  ///< Angular velocity, world frame, rad/s.
-    Vec3 angularMomentum{0, 0, 0};  ///< L about the centre of mass, world frame, kg·m²/s (changes with ω).
-    Mat3 inverseInertia{0};         ///< World I⁻¹ at the start of the step, 1/(kg·m²) (zero: static).
     Real inverseMass = 0;           ///< 1/m, 1/kg (zero: static).
-    std::uint32_t body = 0;         ///< Index of the body in the World's dynamic array.
 };
 
-/// @brief Velocity of B's surface minus A's at a contact point: (v_B + ω_B×r_B + v_static) − (v_A + ω_A×r_A), m/s.
+/// @brief What only prepare and the write-back read of a body: its inertia for the step, and which body it is.
 ///
-/// v_static is the velocity of a kinematic B's surface (zero otherwise); the
-/// static solver body contributes zero, so one formula serves every kind of B.
-inline Vec3 relativeVelocity(const SolverBody& a, const SolverBody& b, const Vec3& rA, const Vec3& rB,
-                             const Vec3& staticVelocity) {
-    const Vec3 va = a.velocity + glm::cross(a.angularVelocity, rA);
-    const Vec3 vb = b.velocity + glm::cross(b.angularVelocity, rB) + staticVelocity;
-    return vb - va;
+/// The pass changes ω only. The angular momentum follows at the write-back,
+/// ΔL = I_world·Δω (with the same world tensor the pass used), once per body
+/// instead of once per row of every contact.
+struct SolverBodyInertia {
+    Mat3 inverseInertia{0};  ///< World I⁻¹ at the start of the step, 1/(kg·m²) (zero: static).
+    Mat3 inertia{0};         ///< World I at the start of the step, kg·m² (zero: static).
+    std::uint32_t body = 0;  ///< Index of the body in the World's dynamic array.
+};
+
+/// @brief One row of a contact's Jacobian: what an impulse λ along a unit direction d does to A and B.
+///
+/// Along d (the normal, or a friction tangent) the velocity of B's surface
+/// relative to A's at the point is
+/// \f[ J v = d\cdot(v_B - v_A) + (r_B\times d)\cdot\omega_B - (r_A\times d)\cdot\omega_A , \f]
+/// because (ω × r)·d = ω·(r × d) (the scalar triple product). An impulse λ
+/// along d, +λd on B and −λd on A, changes
+/// \f[ \Delta v_B = \lambda\, m_B^{-1} d,\quad \Delta L_B = \lambda\,(r_B\times d),\quad
+///     \Delta\omega_B = \lambda\, I_B^{-1}(r_B\times d) \f]
+/// (and the opposite for A). The lever arms, the directions and the world I⁻¹
+/// are held fixed through the step, so the two angular parts of each body are
+/// fixed too: prepareContacts() computes them once per step, and a pass does
+/// dot products and scaled additions only, with no cross product and no 3×3
+/// product per contact (as Bullet's btSolverConstraint stores its
+/// m_relpos1CrossNormal and m_angularComponentA; Catto, GDC 2005).
+/// For two spheres r ∥ n, so the normal row's arms are (almost) zero: a
+/// push through both centres does not turn either ball.
+struct ContactRow {
+    Vec3 armA{0, 0, 0};   ///< r_A × d: A's angular part of J (ΔL_A per unit impulse, negated), m.
+    Vec3 armB{0, 0, 0};   ///< r_B × d, m.
+    Vec3 turnA{0, 0, 0};  ///< I_A⁻¹·(r_A × d): A's Δω per unit impulse (negated), 1/(kg·m).
+    Vec3 turnB{0, 0, 0};  ///< I_B⁻¹·(r_B × d), 1/(kg·m).
+};
+
+/// @brief The row of direction @p d for lever arms @p rA, @p rB and the bodies' world I⁻¹ (static: zeros).
+inline ContactRow makeContactRow(const SolverBodyInertia& a, const SolverBodyInertia& b, const Vec3& rA, const Vec3& rB,
+                                 const Vec3& d) {
+    ContactRow row;
+    row.armA = glm::cross(rA, d);
+    row.armB = glm::cross(rB, d);
+    row.turnA = a.inverseInertia * row.armA;
+    row.turnB = b.inverseInertia * row.armB;
+    return row;
 }
 
-/// @brief Impulse P on B at the point and −P on A: Δv = ±P/m, ΔL = ±r×P, Δω = I⁻¹·ΔL (as point_impulse.hpp).
+/// @brief K = J·M⁻¹·Jᵀ along the row: m_A⁻¹ + m_B⁻¹ + (r_A×d)·I_A⁻¹(r_A×d) + (r_B×d)·I_B⁻¹(r_B×d), 1/kg.
+inline Real inverseEffectiveMass(const SolverBody& a, const SolverBody& b, const ContactRow& row) {
+    return a.inverseMass + b.inverseMass + glm::dot(row.armA, row.turnA) + glm::dot(row.armB, row.turnB);
+}
+
+/// @brief J·v along the row: B's surface velocity minus A's along @p d at the point, m/s
+/// (a kinematic B's own surface speed is added by the caller).
+inline Real rowVelocity(const SolverBody& a, const SolverBody& b, const Vec3& d, const ContactRow& row) {
+    return glm::dot(b.velocity - a.velocity, d) + glm::dot(row.armB, b.angularVelocity) -
+           glm::dot(row.armA, a.angularVelocity);
+}
+
+/// @brief Impulse λ along the row: +λd on B, −λd on A (λ in N·s).
 ///
-/// P and the lever arms are taken by value: a reference could point into a
-/// body being written, and the compiler would have to reload it after every store.
-inline void applyImpulse(SolverBody& a, SolverBody& b, const Vec3 rA, const Vec3 rB, const Vec3 P) {
-    const Vec3 angularA = glm::cross(rA, P);
-    a.velocity -= P * a.inverseMass;
-    a.angularMomentum -= angularA;
-    a.angularVelocity -= a.inverseInertia * angularA;
-    const Vec3 angularB = glm::cross(rB, P);
-    b.velocity += P * b.inverseMass;
-    b.angularMomentum += angularB;
-    b.angularVelocity += b.inverseInertia * angularB;
+/// The static record's m⁻¹ and I⁻¹ are zero (so is its turnB), so its
+/// velocities stay zero.
+inline void applyRowImpulse(SolverBody& a, SolverBody& b, const Vec3& d, const ContactRow& row, Real lambda) {
+    a.velocity -= (lambda * a.inverseMass) * d;
+    a.angularVelocity -= lambda * row.turnA;
+    b.velocity += (lambda * b.inverseMass) * d;
+    b.angularVelocity += lambda * row.turnB;
 }
 
 }  // namespace stepwise
