@@ -19,6 +19,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "config/scene_loader.hpp"
@@ -467,4 +468,43 @@ TEST_CASE("The lesson 4 scene flips the box on time through World::step", "[rota
     for (std::size_t i = 0; i < flips.size(); ++i) CHECK_THAT(flips[i], WithinRel(reference[i], 0.02));
     CHECK(worstMomentumError <= 1e-6);
     CHECK(worstEnergyError <= 0.01);
+}
+
+TEST_CASE("rotateByAngularVelocity turns by |w|*h about w, on the series path and the library path", "[rotation]") {
+    // The exact turn: angle |ω|·h about ω/|ω| (glm::angleAxis: cos and sin from the library).
+    // Half-angles from 1e-6 rad (series) through 0.1 (the switch) to 1.2 (sin and cos),
+    // about an oblique axis, from an oblique start.
+    const Quat start = glm::normalize(Quat(0.8, -0.3, 0.4, 0.33));
+    const Vec3 axis = glm::normalize(Vec3(1, -2, 0.5));
+    const Real h = Real(1) / Real(960);
+    for (const Real halfAngle : {Real(1e-6), Real(1e-3), Real(0.05), Real(0.0999), Real(0.1001), Real(0.7), Real(1.2)}) {
+        const Real speed = 2 * halfAngle / h;  // rad/s
+        const Quat exact = glm::angleAxis(2 * halfAngle, axis) * start;
+        const Quat got = rotateByAngularVelocity(start, speed * axis, h);
+        INFO("half-angle " << halfAngle << " rad");
+        // Both are unit quaternions; a few ulps of 1 apart (the series is exact to rounding).
+        CHECK(std::abs(glm::length(got) - 1) < 4 * std::numeric_limits<Real>::epsilon());
+        for (int k = 0; k < 4; ++k) CHECK(std::abs(got[k] - exact[k]) < 8 * std::numeric_limits<Real>::epsilon());
+    }
+}
+
+TEST_CASE("rotateByAngularVelocity returns a unit quaternion from one far off unit length", "[rotation]") {
+    // The Newton renormalisation is only for |q|² within 1e-6 of 1; farther, the full one.
+    const Quat stretched = Real(1.5) * glm::normalize(Quat(0.8, -0.3, 0.4, 0.33));
+    const Quat got = rotateByAngularVelocity(stretched, Vec3(0, 3, 0), Real(1) / Real(60));
+    CHECK(std::abs(glm::length(got) - 1) < 4 * std::numeric_limits<Real>::epsilon());
+    const Quat exact = glm::angleAxis(Real(3) / Real(60), Vec3(0, 1, 0)) * glm::normalize(stretched);
+    for (int k = 0; k < 4; ++k) CHECK(std::abs(got[k] - exact[k]) < 8 * std::numeric_limits<Real>::epsilon());
+}
+
+TEST_CASE("World inertia of an isotropic body is I*E in every orientation, as the rotated tensor", "[rotation][inertia]") {
+    // rotateDiagonal's shortcut for three equal moments against R·diag·Rᵀ computed by hand.
+    const Quat q = glm::normalize(Quat(0.2, 0.9, -0.3, 0.25));
+    const Mat3 r = glm::mat3_cast(q);
+    const Real moment = Real(0.4) * Real(523.6) * Real(0.25);  // ⅖·m·r², kg·m²
+    const Mat3 byHand = r * Mat3(moment) * glm::transpose(r);
+    const Mat3 got = worldInertia(q, Vec3(moment));
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) CHECK(std::abs(got[i][j] - byHand[i][j]) < 1e-12 * moment);
+    }
 }

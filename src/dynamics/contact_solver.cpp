@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 #include "dynamics/contact_body.hpp"
 #include "dynamics/inertia.hpp"
@@ -13,13 +12,6 @@ namespace stepwise {
 
 namespace {
 
-/// |λ_t|² < μ²λ_n²·(1 − 16ε) in floating point means |λ_t| < μλ_n exactly, so
-/// std::hypot would not have scaled: each product and sum rounds by at most
-/// ε/2 relative, and the margin covers them with room to spare (ε: Real's
-/// machine epsilon). A square that overflows fails the test and takes the
-/// exact path (the argument assumes no square underflows: impulses of
-/// 1e-154 N·s and below in double).
-constexpr Real kSurelyInsideCircle = Real(1) - Real(16) * std::numeric_limits<Real>::epsilon();
 
 /// Where an anchor is now: a box's material point turns with the box; a
 /// sphere's contact point stays at the same offset from its centre (a rolling
@@ -249,22 +241,16 @@ void solveContacts(SolverWorkspace& workspace, const ContactSolverSettings& sett
             const Real vt = rowVelocity(a, b, c.tangent[k], c.tangentRow[k]) + c.tangentSurfaceSpeed[k];
             total[k] = c.tangentImpulse[k] - c.tangentMass[k] * vt;
         }
-        // Most points stick: a test on squares (no root) settles those; std::hypot
-        // runs only on or near the circle, where the impulse is scaled back onto it.
-        // A point that is not pushing (λ_n = 0, a speculative gap) has no friction:
-        // the scale limit/|λ_t| is 0, without the root.
-        const Real squared = total[0] * total[0] + total[1] * total[1];
-        if (limit == Real(0)) {
-            total[0] *= Real(0);
-            total[1] *= Real(0);
-        } else if (!(squared < limit * limit * kSurelyInsideCircle)) {
-            const Real magnitude = std::hypot(total[0], total[1]);
-            if (magnitude > limit) {
-                const Real scale = magnitude > 0 ? limit / magnitude : Real(0);
-                total[0] *= scale;
-                total[1] *= scale;
-            }
-        }
+        // Back onto Coulomb's circle: scale = min(1, μλ_n/|λ_t|), which is exactly 1
+        // for a point that sticks and 0 for one that does not push (λ_n = 0, a
+        // speculative gap). Written without a branch: in a pile, sticking and
+        // slipping points alternate at random, and a mispredicted branch costs
+        // more than the square root. (The squares would overflow only for
+        // impulses near 1e154 N·s.)
+        const Real magnitude = std::sqrt(total[0] * total[0] + total[1] * total[1]);
+        const Real scale = magnitude > limit ? limit / magnitude : Real(1);
+        total[0] *= scale;
+        total[1] *= scale;
         for (int k = 0; k < 2; ++k) {
             applyRowImpulse(a, b, c.tangent[k], c.tangentRow[k], total[k] - c.tangentImpulse[k]);
             c.tangentImpulse[k] = total[k];

@@ -22,6 +22,26 @@ constexpr Real kNegligibleRotationAngle = Real(1e-15);
 /// several times the five multiplications of each series).
 constexpr Real kSeriesHalfAngle = Real(0.1);
 
+/// How far |q|² may be from 1 for renormalise() to take its Newton step: the
+/// step's error, (3/8)·(|q|² − 1)², is then below 4·10⁻¹³, and from a product
+/// of unit quaternions (|q|² − 1 of a few ε) it is far below rounding.
+constexpr Real kNearUnitLength = Real(1e-6);
+
+namespace {
+
+/// q / |q| for a quaternion that rounding has nudged off unit length. One
+/// Newton step for 1/√x at x = |q|² near 1 gives 1/√x ≈ (3 − x)/2, with an
+/// error of order (x − 1)²: exact to rounding here, without the square root
+/// and the division of a full normalisation (which a quaternion farther
+/// from unit length still gets).
+Quat renormalise(const Quat& q) {
+    const Real x = glm::dot(q, q);
+    if (std::abs(x - 1) > kNearUnitLength) return glm::normalize(q);
+    return q * ((Real(3) - x) * Real(0.5));
+}
+
+}  // namespace
+
 Quat rotateByAngularVelocity(const Quat& orientation, const Vec3& omega, Real h) {
     const Real speedSquared = glm::dot(omega, omega);  // rad²/s²
     if (speedSquared * h * h < kNegligibleRotationAngle * kNegligibleRotationAngle) return orientation;
@@ -43,7 +63,7 @@ Quat rotateByAngularVelocity(const Quat& orientation, const Vec3& omega, Real h)
     const Vec3 axisPart = (Real(0.5) * h * sinc) * omega;
     // World-frame angular velocity: the step's rotation multiplies on the left.
     const Quat turn(cosine, axisPart.x, axisPart.y, axisPart.z);
-    return glm::normalize(turn * orientation);
+    return renormalise(turn * orientation);
 }
 
 void moveKinematics(std::span<KinematicsObject> bodies, Real h) {
