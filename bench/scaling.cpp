@@ -133,6 +133,43 @@ void printRows(std::FILE* out, const std::vector<Row>& rows, bool markdown) {
     }
 }
 
+/// The question, "does the cost per body stay flat?", one line per
+/// scene: CPU µs per body per step at each size, and the growth from the
+/// smallest size to the largest. The median and the mean are both given: a
+/// pile that falls asleep has a median far below its mean, and the mean is
+/// then the fair figure.
+void printCostPerBody(std::FILE* out, const std::vector<Row>& rows, bool markdown) {
+    std::vector<std::string> scenes;
+    for (const Row& r : rows) {
+        if (std::find(scenes.begin(), scenes.end(), r.scene) == scenes.end()) scenes.push_back(r.scene);
+    }
+    std::fprintf(out, markdown ? "\n**Cost per body**, CPU µs per body per step (median / mean of the run):\n\n"
+                                 "| scene | per size | growth, smallest to largest (median / mean) |\n|---|---|---|\n"
+                               : "\nCost per body, CPU us per body per step (median / mean of the run):\n");
+    for (const std::string& scene : scenes) {
+        std::string sizes;
+        const Row* first = nullptr;
+        const Row* last = nullptr;
+        for (const Row& r : rows) {
+            if (r.scene != scene) continue;
+            first = first ? first : &r;
+            last = &r;
+            char cell[96];
+            std::snprintf(cell, sizeof cell, "%s%zu: %.1f / %.1f", sizes.empty() ? "" : ", ", r.bodies,
+                          kMicrosecondsPerSecond * r.medianSeconds / double(r.bodies),
+                          kMicrosecondsPerSecond * r.meanSeconds / double(r.bodies));
+            sizes += cell;
+        }
+        const auto growth = [&](double Row::*seconds) {
+            return 100 * ((last->*seconds / double(last->bodies)) / (first->*seconds / double(first->bodies)) - 1);
+        };
+        char change[96];
+        std::snprintf(change, sizeof change, "%+.0f %% / %+.0f %% over %.0f times the bodies", growth(&Row::medianSeconds),
+                      growth(&Row::meanSeconds), double(last->bodies) / double(first->bodies));
+        std::fprintf(out, markdown ? "| %s | %s | %s |\n" : "  %-12s %s; %s\n", scene.c_str(), sizes.c_str(), change);
+    }
+}
+
 }  // namespace
 
 int runScaling(const ScalingOptions& options) {
@@ -178,9 +215,11 @@ int runScaling(const ScalingOptions& options) {
     std::printf("\nScaling: time per step (median and mean over the run), per body, contacts, and for the\n"
                 "sphere rain the deepest overlap seen at any step and the spheres outside the box at the end\n");
     printRows(stdout, rows, false);
+    printCostPerBody(stdout, rows, false);
     if (markdown) {
         std::fprintf(markdown, "\n**Scaling** (Stepwise alone):\n");
         printRows(markdown, rows, true);
+        printCostPerBody(markdown, rows, true);
         std::fclose(markdown);
     }
     if (!agrees) {

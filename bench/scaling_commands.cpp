@@ -22,13 +22,14 @@ const char* const kScalingUsage =
     "                              [--steps 240] [--large-steps 240] [--pile-steps 120] [--seed 1] [--markdown PATH]\n"
     "                              [--scenes sphere-rain,box-pile,pyramids]\n"
     "       stepwise-bench bullet [--quick] [--sizes 1000,4000,16000] [--steps 600] [--markdown PATH] [--config DIR]\n"
-    "                             [--scenarios rain,stacks,free-box,bounce,incline]\n"
+    "                             [--scenarios rain,rain-sweep,stacks,free-box,bounce,incline] [--sweep-csv PATH]\n"
     "       stepwise-bench rain-scene --count N [--seed S] --out FILE\n"
     "\n"
     "  scaling: Stepwise's ms/step and us per body per step on sphere rain (r = 0.5 m into an open\n"
     "  box), box piles and pyramids of growing size, and the broadphase tracker's table of each run.\n"
     "  bullet: the same scene files in Stepwise and in Bullet 3, one table per scenario (sphere rain,\n"
-    "  pyramid, tower, free box, bounce at 1/60 and 1/240 s, incline); needs -DSTEPWISE_WITH_BULLET=ON.\n"
+    "  the 1k rain's work-precision sweep, pyramid, tower, free box, bounce at 1/60 and 1/240 s, incline),\n"
+    "  then the verdicts on the targets of issue #7; needs -DSTEPWISE_WITH_BULLET=ON.\n"
     "  rain-scene: writes the sphere-rain scene of N spheres (config/bench_sphere_rain_1k.scene is N = 1000).\n";
 
 namespace {
@@ -141,7 +142,8 @@ int bulletCommand([[maybe_unused]] const std::vector<std::string>& args) {
                                    return n.has_value();
                                }},
                               {"--scenarios", [&](const std::string& v) { o.scenarios = names(v); return true; }},
-                              {"--markdown", [&](const std::string& v) { o.markdownPath = v; return true; }}});
+                              {"--markdown", [&](const std::string& v) { o.markdownPath = v; return true; }},
+                              {"--sweep-csv", [&](const std::string& v) { o.sweepCsvPath = v; return true; }}});
     return status ? status : runSideBySide(o);
 #else
     std::fprintf(stderr,

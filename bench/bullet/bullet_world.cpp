@@ -120,4 +120,6 @@ std::size_t BulletWorld::sleepingCount() const {
 
 int BulletWorld::manifoldCount() const { return dispatcher_->getNumManifolds(); }
 
+void BulletWorld::setSolverIterations(int iterations) { world_->getSolverInfo().m_numIterations = iterations; }
+
 }  // namespace stepwise::bench

@@ -59,6 +59,8 @@ public:
     std::size_t sleepingCount() const;
     /// @brief Contact manifolds Bullet keeps now (each up to 4 points).
     int manifoldCount() const;
+    /// @brief Sets the sequential-impulse solver's iterations per step (Bullet's default: 10).
+    void setSolverIterations(int iterations);
 
 private:
     double timeStep_;

@@ -79,6 +79,8 @@ struct Table {
         std::string figure, stepwise, bullet, ratio;
     };
     std::vector<Row> rows;
+    /// Column heads; the default is the side-by-side's (a sweep lists runs, not engines).
+    std::array<std::string, 4> header{"figure", "Stepwise", "Bullet", "Bullet / Stepwise"};
 
     /// A figure where smaller is better: the ratio column is bullet/stepwise, unless
     /// Stepwise's figure prints as 0 (rounding error only: the ratio would be noise).
@@ -97,16 +99,18 @@ struct Table {
 
     void print(std::FILE* out, bool markdown) const {
         if (markdown) {
-            std::fprintf(out, "\n**%s**\n\n| figure | Stepwise | Bullet | Bullet / Stepwise |\n|---|---:|---:|---:|\n",
-                         title.c_str());
+            const bool threeColumns = header[3].empty();
+            std::fprintf(out, "\n**%s**\n\n| %s | %s | %s |", title.c_str(), header[0].c_str(), header[1].c_str(),
+                         header[2].c_str());
+            std::fprintf(out, threeColumns ? "\n|---|---:|---:|\n" : " %s |\n|---|---:|---:|---:|\n", header[3].c_str());
             for (const Row& r : rows) {
-                std::fprintf(out, "| %s | %s | %s | %s |\n", r.figure.c_str(), r.stepwise.c_str(), r.bullet.c_str(),
-                             r.ratio.c_str());
+                std::fprintf(out, "| %s | %s | %s |", r.figure.c_str(), r.stepwise.c_str(), r.bullet.c_str());
+                std::fprintf(out, threeColumns ? "\n" : " %s |\n", r.ratio.c_str());
             }
             return;
         }
-        std::fprintf(out, "\n%s\n  %-40s %14s %14s %18s\n", title.c_str(), "figure", "Stepwise", "Bullet",
-                     "Bullet / Stepwise");
+        std::fprintf(out, "\n%s\n  %-40s %14s %14s %18s\n", title.c_str(), header[0].c_str(), header[1].c_str(),
+                     header[2].c_str(), header[3].c_str());
         for (const Row& r : rows) {
             std::fprintf(out, "  %-40s %14s %14s %18s\n", r.figure.c_str(), r.stepwise.c_str(), r.bullet.c_str(),
                          r.ratio.c_str());
@@ -223,6 +227,57 @@ Table sphereRain(std::size_t count, int rainSteps, bool quick, Targets& targets)
     table.addText("asleep at the end", std::to_string(ourAsleep), std::to_string(theirs.sleepingCount()));
     targets.rains.push_back({count, ourSeconds.cpu, theirSeconds.cpu, double(ourMeter.worstOverlap()),
                              ourMeter.escaped(ourEnd)});
+    return table;
+}
+
+/// @brief One run of the rain sweep: an engine at one setting, its cost and its accuracy.
+struct SweepRun {
+    std::string engine;    ///< "Stepwise" or "Bullet".
+    std::string setting;   ///< "Substeps=4", "iterations=20".
+    double cpu = 0;        ///< CPU s per step (median).
+    double overlap = 0;    ///< Worst overlap, m.
+    bool isDefault = false;
+};
+
+constexpr int kSweepSubsteps[] = {1, 2, 4, 8, 16};      ///< Stepwise: 16 is the default (world_settings.hpp).
+constexpr int kSweepIterations[] = {5, 10, 20, 40};     ///< Bullet: 10 is its default.
+constexpr int kBulletDefaultIterations = 10;
+constexpr std::size_t kSweepRain = 1000;                ///< The sweep's rain, spheres.
+
+/// Run time against error for the rain: the worst overlap is the error, and
+/// each engine's knob that buys accuracy with time (Stepwise's substeps,
+/// Bullet's iterations) is swept, so each engine's curve shows what its
+/// accuracy costs, and a default can be compared with the other engine at
+/// equal accuracy or equal time.
+Table rainSweep(int rainSteps, bool quick, std::vector<SweepRun>& runs) {
+    const std::size_t count = quick ? kQuickRain : kSweepRain;
+    const Scene scene = parseScene(sphereRainSceneText(count, 1), "sphere-rain");
+    const int steps = quick ? kQuickSteps : rainSteps;
+    const Real h = scene.settings.timeStep;
+    Table table{"Sphere rain, " + std::to_string(count) + " spheres, " + std::to_string(steps) +
+                    " steps: run time against worst overlap, each engine's accuracy knob swept",
+                {}};
+    for (const int substeps : kSweepSubsteps) {
+        Scene ours = scene;
+        ours.settings.substeps = substeps;
+        StepwiseEngine engine{World(ours)};
+        RainMeter meter(scene.planes, kRainRadius);
+        const Timing t = runSteps(engine, steps, h, [&](const auto& s, Real) { meter.observe(s); });
+        runs.push_back({"Stepwise", "Substeps=" + std::to_string(substeps), t.cpu, double(meter.worstOverlap()),
+                        substeps == kDefaultSubsteps});
+    }
+    for (const int iterations : kSweepIterations) {
+        BulletWorld engine(scene);
+        engine.setSolverIterations(iterations);
+        RainMeter meter(scene.planes, kRainRadius);
+        const Timing t = runSteps(engine, steps, h, [&](const auto& s, Real) { meter.observe(s); });
+        runs.push_back({"Bullet", "iterations=" + std::to_string(iterations), t.cpu, double(meter.worstOverlap()),
+                        iterations == kBulletDefaultIterations});
+    }
+    for (const SweepRun& r : runs) {
+        table.rows.push_back({r.engine + ", " + r.setting + (r.isDefault ? " (default)" : ""),
+                              format("%.2f", kMs * r.cpu), format("%.1f mm", kMs * r.overlap), ""});
+    }
     return table;
 }
 
@@ -363,6 +418,7 @@ int runSideBySide(const SideBySideOptions& options) {
                 BT_BULLET_VERSION / 100, BT_BULLET_VERSION % 100, sizeof(btScalar) == 8 ? "double" : "float");
     std::vector<Table> tables;
     Targets targets;
+    std::vector<SweepRun> sweepRuns;
     const auto show = [&](Table table) {
         table.print(stdout, false);
         std::fflush(stdout);
@@ -375,6 +431,11 @@ int runSideBySide(const SideBySideOptions& options) {
         };
         if (wanted("rain")) {
             for (const std::size_t n : sizes) show(sphereRain(n, options.rainSteps, options.quick, targets));
+        }
+        if (wanted("rain-sweep")) {
+            Table sweep = rainSweep(options.rainSteps, options.quick, sweepRuns);
+            sweep.header = {"engine, setting", "CPU ms/step (median)", "worst overlap, any step", ""};
+            show(std::move(sweep));
         }
         if (wanted("stacks")) {
             show(stack(dir + "lesson08_pyramid.scene", "Pyramid of 210 boxes", options.quick, targets));
@@ -391,6 +452,19 @@ int runSideBySide(const SideBySideOptions& options) {
         return 1;
     }
     printTargets(stdout, targets, false);
+    if (options.sweepCsvPath && !sweepRuns.empty()) {
+        std::FILE* csv = std::fopen(options.sweepCsvPath->c_str(), "w");
+        if (!csv) {
+            std::fprintf(stderr, "stepwise-bench: cannot write %s\n", options.sweepCsvPath->c_str());
+            return 2;
+        }
+        std::fprintf(csv, "engine,setting,cpu_ms_per_step,worst_overlap_mm,default\n");
+        for (const SweepRun& r : sweepRuns) {
+            std::fprintf(csv, "%s,%s,%.4f,%.3f,%d\n", r.engine.c_str(), r.setting.c_str(), kMs * r.cpu, kMs * r.overlap,
+                         r.isDefault ? 1 : 0);
+        }
+        std::fclose(csv);
+    }
     if (options.markdownPath) {
         std::FILE* out = std::fopen(options.markdownPath->c_str(), "w");
         if (!out) {

@@ -15,8 +15,9 @@ struct SideBySideOptions {
     std::vector<std::size_t> rainSizes;      ///< --sizes: sphere-rain counts (default 1000, 4000, 16000).
     std::string configDir;                   ///< --config DIR: where the scene files are.
     std::optional<std::string> markdownPath; ///< --markdown PATH: the tables as Markdown.
+    std::optional<std::string> sweepCsvPath; ///< --sweep-csv PATH: the rain sweep's runs as CSV (for the plot).
     int rainSteps = 600;                     ///< --steps N: steps of each sphere rain (issue #7: 600).
-    /// --scenarios: which of rain, stacks, free-box, bounce, incline to run (default all).
+    /// --scenarios: which of rain, rain-sweep, stacks, free-box, bounce, incline to run (default all).
     std::vector<std::string> scenarios;
 };
 
