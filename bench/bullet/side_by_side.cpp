@@ -452,12 +452,15 @@ int runSideBySide(const SideBySideOptions& options) {
         return 1;
     }
     printTargets(stdout, targets, false);
+    // An output file that cannot be opened is said on stderr (exit code 2).
+    const auto openOutput = [](const std::string& path) {
+        std::FILE* file = std::fopen(path.c_str(), "w");
+        if (!file) std::fprintf(stderr, "stepwise-bench: cannot write %s\n", path.c_str());
+        return file;
+    };
     if (options.sweepCsvPath && !sweepRuns.empty()) {
-        std::FILE* csv = std::fopen(options.sweepCsvPath->c_str(), "w");
-        if (!csv) {
-            std::fprintf(stderr, "stepwise-bench: cannot write %s\n", options.sweepCsvPath->c_str());
-            return 2;
-        }
+        std::FILE* csv = openOutput(*options.sweepCsvPath);
+        if (!csv) return 2;
         std::fprintf(csv, "engine,setting,cpu_ms_per_step,worst_overlap_mm,default\n");
         for (const SweepRun& r : sweepRuns) {
             std::fprintf(csv, "%s,%s,%.4f,%.3f,%d\n", r.engine.c_str(), r.setting.c_str(), kMs * r.cpu, kMs * r.overlap,
@@ -466,11 +469,8 @@ int runSideBySide(const SideBySideOptions& options) {
         std::fclose(csv);
     }
     if (options.markdownPath) {
-        std::FILE* out = std::fopen(options.markdownPath->c_str(), "w");
-        if (!out) {
-            std::fprintf(stderr, "stepwise-bench: cannot write %s\n", options.markdownPath->c_str());
-            return 2;
-        }
+        std::FILE* out = openOutput(*options.markdownPath);
+        if (!out) return 2;
         std::fprintf(out, "Bullet %d.%02d (btScalar = %s); last column: Bullet's figure / Stepwise's "
                           "(above 1: Stepwise better).\n", BT_BULLET_VERSION / 100, BT_BULLET_VERSION % 100,
                      sizeof(btScalar) == 8 ? "double" : "float");
