@@ -25,6 +25,7 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 cd "$root"
 build_dir=build/release
 repeats=5
+invocation="scripts/bench.sh${*:+ $*}"  # as typed, for the page's "command" line
 extra_runs=()
 while [[ $# -gt 0 ]]; do
     case $1 in
@@ -88,7 +89,7 @@ deterministic), the nanoseconds are not.*
 | date | ${date} |
 | commit | ${commit} |
 | compiler | ${compiler}, \`release\` preset (-O3, \`Real\` = double) |
-| command | \`scripts/bench.sh --repeats ${repeats}\`, which runs \`${command[*]/$tables/TABLES.md}\` and \`gnuplot bench/plot_precision.gp\` |
+| command | \`${invocation}\` (${repeats} timed repetitions per point), which runs \`${command[*]/$tables/TABLES.md}\` and \`gnuplot bench/plot_precision.gp\` |
 
 ## Precision: error against time step and work {#benchmarks-precision}
 

@@ -84,9 +84,12 @@ over the run): the machine is shared, and on it a step's wall-clock time
 counts the time other people's compilers held the core (the wall-clock median
 is in the table too). The worst overlap is the deepest sphere–sphere or
 sphere–plane overlap at any step; *escaped* counts the spheres whose centre
-ended behind a plane. Under the table, the broadphase tracker's table of
-each run (`stepwise bench broadphase`, docs/broadphase.md), observed on one
-step in 10.
+ended behind a plane. First come the broadphase tracker's tables, one per
+run as it finishes (`stepwise bench broadphase`, docs/broadphase.md, observed
+on one step in 10); then the table of all runs, and under it the cost per
+body of each scene from its smallest size to its largest, which is the
+issue's question (a scene that falls asleep, like the pyramids, has a median
+far below its mean: the mean is then the fair figure).
 
 EOF
     if [[ -f $scaling_data ]]; then cat "$scaling_data"; else
