@@ -10,6 +10,8 @@
 #include <vector>
 
 #include "config/scene_loader.hpp"
+#include "dynamics/inertia.hpp"
+#include "dynamics/solver_body.hpp"
 #include "test_support.hpp"
 
 using namespace stepwise;
@@ -152,4 +154,46 @@ TEST_CASE("A sleeping tower wakes when a sphere hits it, and does not wake for a
     // The woken island is the whole tower: its boxes touch, so they wake together.
     for (std::size_t i = 0; i < 20; ++i) CHECK_FALSE(world.dynamics()[i].asleep);
     CHECK(world.dynamics()[9].velocity.x > 0);  // pushed the way the ball flew
+}
+
+TEST_CASE("A contact row is J: its J*v and its impulse are the point-impulse formulas", "[solver]") {
+    // The row form (solver_body.hpp) against the textbook: J·v = ((v_B + ω_B×r_B) − (v_A + ω_A×r_A))·d,
+    // and +λd on B, −λd on A at the point: Δv = ±λd/m, Δω = ±I⁻¹(r × λd). A turned box against
+    // a sphere, arbitrary velocities, lever arms off every axis: a sign or a factor wrong in the
+    // rows fails here, long before a stack would show it.
+    const Quat boxTurn = glm::normalize(Quat(0.9, 0.2, -0.3, 0.1));
+    const Vec3 boxInverseBody = Real(1) / solidBoxInertia(Real(2), Vec3(1, 0.5, 0.25));
+    SolverBodyInertia inertiaA{worldInverseInertia(boxTurn, boxInverseBody), Mat3(0), 0};
+    SolverBodyInertia inertiaB{Mat3(Real(1) / (Real(0.4) * Real(3) * Real(0.09))), Mat3(0), 1};  // sphere, 3 kg, r = 0.3 m
+    SolverBody a{Vec3(0.3, -1.2, 0.5), Vec3(2.0, -0.7, 1.1), Real(1) / Real(2)};
+    SolverBody b{Vec3(-0.4, 0.2, 0.9), Vec3(-1.5, 0.3, 0.8), Real(1) / Real(3)};
+    const Vec3 rA(0.35, 0.2, -0.1);
+    const Vec3 rB(-0.1, -0.25, 0.12);
+    const Vec3 d = glm::normalize(Vec3(0.2, 1, -0.3));
+    const ContactRow row = makeContactRow(inertiaA, inertiaB, rA, rB, d);
+
+    const auto pointVelocity = [](const SolverBody& s, const Vec3& r) { return s.velocity + glm::cross(s.angularVelocity, r); };
+    const Real expected = glm::dot(pointVelocity(b, rB) - pointVelocity(a, rA), d);
+    CHECK(rowVelocity(a, b, d, row) == Approx(expected).margin(1e-12));
+
+    const Real k = inverseEffectiveMass(a, b, row);  // K = J·M⁻¹·Jᵀ
+    const Vec3 turnA = glm::cross(rA, d);
+    const Vec3 turnB = glm::cross(rB, d);
+    CHECK(k == Approx(a.inverseMass + b.inverseMass + glm::dot(turnA, inertiaA.inverseInertia * turnA) +
+                      glm::dot(turnB, inertiaB.inverseInertia * turnB)));
+
+    const Real lambda = Real(0.8);  // N·s
+    const SolverBody a0 = a;
+    const SolverBody b0 = b;
+    applyRowImpulse(a, b, d, row, lambda);
+    for (int i = 0; i < 3; ++i) {
+        CHECK(a.velocity[i] == Approx(a0.velocity[i] - lambda * a0.inverseMass * d[i]).margin(1e-12));
+        CHECK(b.velocity[i] == Approx(b0.velocity[i] + lambda * b0.inverseMass * d[i]).margin(1e-12));
+        CHECK(a.angularVelocity[i] ==
+              Approx(a0.angularVelocity[i] - (inertiaA.inverseInertia * glm::cross(rA, lambda * d))[i]).margin(1e-12));
+        CHECK(b.angularVelocity[i] ==
+              Approx(b0.angularVelocity[i] + (inertiaB.inverseInertia * glm::cross(rB, lambda * d))[i]).margin(1e-12));
+    }
+    // And K is what it claims: an impulse λ changes J·v by K·λ.
+    CHECK(rowVelocity(a, b, d, row) - expected == Approx(k * lambda).margin(1e-12));
 }
