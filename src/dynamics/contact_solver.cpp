@@ -12,7 +12,6 @@ namespace stepwise {
 
 namespace {
 
-
 /// Where an anchor is now: a box's material point turns with the box; a
 /// sphere's contact point stays at the same offset from its centre (a rolling
 /// ball's support is always underneath it).

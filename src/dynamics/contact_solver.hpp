@@ -87,7 +87,6 @@ struct SolverContact {
     Real tangentSurfaceSpeed[2] = {0, 0}; ///< The same along each tangent, m/s.
     Vec3 rA{0, 0, 0};                ///< Lever arm from A's centre to the point (world frame, start of step), m.
     Vec3 rB{0, 0, 0};                ///< The same from B's centre (zero for a plane), m.
-    Vec3 staticVelocity{0, 0, 0};    ///< Velocity of a kinematic B's surface at the point, m/s (zero for a plane or a dynamic B).
     // The separation at the recorded poses (currentSeparation() in contact_solver.cpp).
     std::uint32_t indexA = 0;        ///< A's index in the dynamic array (its pose).
     BodyRef refB;                    ///< B: its kind and index (its pose).
@@ -100,6 +99,8 @@ struct SolverContact {
     // The bounce, once per step.
     Real restitution = 0;            ///< e of the pair (0 when the contact is resting).
     Real approachAtTouch = 0;        ///< v_c: approach speed when the surfaces meet, m/s (≥ 0).
+    // Read by the trace only (the passes use the surface speeds above).
+    Vec3 staticVelocity{0, 0, 0};    ///< Velocity of a kinematic B's surface at the point, m/s (zero for a plane or a dynamic B).
 };
 
 /// @brief What the contact solver needs of the World's settings for one substep.
