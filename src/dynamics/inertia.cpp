@@ -60,12 +60,7 @@ void initialiseMassProperties(DynamicObject& body) {
 }
 
 void updateAngularVelocity(DynamicObject& body) {
-    const Vec3& inverse = body.inverseInertiaBody;
-    if (inverse.x == inverse.y && inverse.y == inverse.z) {
-        body.angularVelocity = inverse.x * body.angularMomentum;  // I⁻¹_world = I⁻¹·E in every orientation (rotateDiagonal)
-        return;
-    }
-    body.angularVelocity = worldInverseInertia(body.orientation, inverse) * body.angularMomentum;
+    body.angularVelocity = worldInverseInertia(body.orientation, body.inverseInertiaBody) * body.angularMomentum;
 }
 
 void applyImpulseAt(DynamicObject& body, const Vec3& impulse, const Vec3& point) {
