@@ -9,7 +9,7 @@ set pagination off
 set $step = -1
 set $sub = 0
 
-# Stage 4, once a step: contacts -> SolverContact, warm-started from the impulses kept last step.
+# Stage 4, once a step: contacts -> SolverContact (what a pass reads) and ContactStart (where it came from), warm-started from the impulses kept last step.
 break stepwise::prepareContacts
 commands
 silent
@@ -26,9 +26,11 @@ commands
 silent
 set $c0 = &workspace.contacts._M_impl._M_start[0]
 set $c4 = &workspace.contacts._M_impl._M_start[4]
+set $s0 = &workspace.starts._M_impl._M_start[0]
+set $s4 = &workspace.starts._M_impl._M_start[4]
 if useBias
   if $sub == 0
-    printf "contact 0: normalMass %.6f kg, startSeparation %+.3e m; contact 4: normalMass %.6f kg, startSeparation %+.3e m\n", $c0->normalMass, $c0->startSeparation, $c4->normalMass, $c4->startSeparation
+    printf "contact 0: normalMass %.6f kg, startSeparation %+.3e m; contact 4: normalMass %.6f kg, startSeparation %+.3e m\n", $c0->normalMass, $s0->startSeparation, $c4->normalMass, $s4->startSeparation
     printf "substep  lambda0 in -> after solve    lambda4 in -> after solve   (N s)\n"
   end
   set $in0 = $c0->normalImpulse
@@ -44,7 +46,7 @@ end
 break stepwise::applyRestitution
 commands
 silent
-printf "end of step %d: lambda0 %.6f N s, lambda4 %.6f N s, heavy box y %.9f m, light box y %.9f m\n", $step, workspace.contacts._M_impl._M_start[0].normalImpulse, workspace.contacts._M_impl._M_start[4].normalImpulse, workspace.dynamics._M_ptr[workspace.contacts._M_impl._M_start[0].refB.index].position.y, workspace.dynamics._M_ptr[workspace.contacts._M_impl._M_start[0].indexA].position.y
+printf "end of step %d: lambda0 %.6f N s, lambda4 %.6f N s, heavy box y %.9f m, light box y %.9f m\n", $step, workspace.contacts._M_impl._M_start[0].normalImpulse, workspace.contacts._M_impl._M_start[4].normalImpulse, workspace.dynamics._M_ptr[workspace.starts._M_impl._M_start[0].refB.index].position.y, workspace.dynamics._M_ptr[workspace.starts._M_impl._M_start[0].indexA].position.y
 continue
 end
 

@@ -12,25 +12,19 @@ namespace stepwise {
 
 namespace {
 
-/// Where an anchor is now: a box's material point turns with the box; a
-/// sphere's contact point stays at the same offset from its centre (a rolling
-/// ball's support is always underneath it).
-Vec3 anchorNow(const Vec3& centre, const Quat& orientation, const Vec3& local, const Vec3& startOffset, bool turns) {
-    return centre + (turns ? orientation * local : startOffset);
-}
-
-/// C at the recorded poses: the start-of-step separation plus how far the
-/// anchors have moved apart along n since (Box2D v3 tracks separation the
-/// same way between collision passes). No new collision test is needed.
+/// C at the recorded poses: the centres' separation along n plus what is
+/// fixed through the step, plus the turning anchors' part for a box
+/// (SolverContact in contact_solver.hpp). Box2D v3 tracks separation the same
+/// way between collision passes: no new collision test is needed.
 Real currentSeparation(const SolverContact& c, const SolverWorkspace& w) {
-    const Pose& poseA = w.dynamicPoses[c.indexA];
-    const Vec3 pA = anchorNow(poseA.position, poseA.orientation, c.localAnchorA, c.rA, c.anchorTurnsWithA);
-    Vec3 pB = c.startPoint;  // a plane never moves
-    if (c.refB.kind != BodyKind::Plane) {
-        const Pose& poseB = c.refB.kind == BodyKind::Dynamic ? w.dynamicPoses[c.refB.index] : w.kinematicPoses[c.refB.index];
-        pB = anchorNow(poseB.position, poseB.orientation, c.localAnchorB, c.rB, c.anchorTurnsWithB);
+    const Pose& poseA = w.poses[c.poseA];
+    const Pose& poseB = w.poses[c.poseB];
+    Real separation = glm::dot(poseB.position - poseA.position, c.normal) + c.separationOffset;
+    if (c.turningAnchors != kNoTurningAnchors) {
+        const TurningAnchors& anchors = w.turningAnchors[c.turningAnchors];
+        separation += glm::dot(poseB.orientation * anchors.localB - poseA.orientation * anchors.localA, c.normal);
     }
-    return c.startSeparation + glm::dot((pB - c.startPoint) - (pA - c.startPoint), c.normal);
+    return separation;
 }
 
 /// The solver-body record of dynamic body @p index, made on first use: its
@@ -80,46 +74,75 @@ inline void applyNormalImpulse(const SolverContact& c, std::vector<SolverBody>& 
     applyRowImpulse(bodies[c.bodyA], bodies[c.bodyB], c.normal, c.normalRow, lambda);
 }
 
-SolverContact prepareOne(const BodySet& bodies, const Contact& contact, Real h, SolverWorkspace& w) {
+/// Index of the fixed pose at the origin (the last one): a plane's "centre".
+std::uint32_t planePose(const BodySet& bodies) {
+    return static_cast<std::uint32_t>(bodies.dynamics.size() + bodies.kinematics.size());
+}
+
+/// The contact's pass record (returned) and its start record @p start.
+SolverContact prepareOne(const BodySet& bodies, const Contact& contact, Real h, SolverWorkspace& w,
+                         ContactStart& start) {
     SolverContact c;
     const DynamicObject& a = bodies.dynamics[contact.a];
     const ContactBody other = contactBody(bodies, contact.b, contact.point);
     c.bodyA = recordOf(w, contact.a);
-    c.indexA = contact.a;
-    c.refB = contact.b;
-    c.rA = contact.point - a.position;
-    c.localAnchorA = glm::conjugate(a.orientation) * c.rA;
-    c.anchorTurnsWithA = a.shape != Shape::Sphere;
-    c.startPoint = contact.point;
+    c.poseA = contact.a;
+    start = ContactStart{};
+    start.indexA = contact.a;
+    start.refB = contact.b;
+    start.rA = contact.point - a.position;
+    start.startPoint = contact.point;
+    start.startSeparation = -contact.depth;
+    c.normal = contact.normal;
+
+    // The separation's fixed part (SolverContact): C₀ plus the fixed offsets
+    // r·n of the anchors that do not turn; the turning ones go to the side array.
+    const bool turnsA = a.shape != Shape::Sphere;
+    bool turnsB = false;
+    Vec3 centreB{0, 0, 0};  // a plane's "centre" is the origin: its point is a fixed offset from there
+    const Quat* orientationB = nullptr;
+    c.poseB = planePose(bodies);
     if (other.dynamic) {
         c.bodyB = recordOf(w, contact.b.index);
-        c.rB = contact.point - other.dynamic->position;
-        c.localAnchorB = glm::conjugate(other.dynamic->orientation) * c.rB;
-        c.anchorTurnsWithB = other.dynamic->shape != Shape::Sphere;
+        c.poseB = contact.b.index;
+        centreB = other.dynamic->position;
+        orientationB = &other.dynamic->orientation;
+        turnsB = other.dynamic->shape != Shape::Sphere;
     } else {
-        c.staticVelocity = other.velocity;  // the surface of a kinematic B moves; a plane's does not
+        start.staticVelocity = other.velocity;  // the surface of a kinematic B moves; a plane's does not
         if (contact.b.kind == BodyKind::Kinematic) {
             const KinematicsObject& k = bodies.kinematics[contact.b.index];
-            c.rB = contact.point - k.position;
-            c.localAnchorB = glm::conjugate(k.orientation) * c.rB;
-            c.anchorTurnsWithB = k.shape != Shape::Sphere;
+            c.poseB = static_cast<std::uint32_t>(bodies.dynamics.size() + contact.b.index);
+            centreB = k.position;
+            orientationB = &k.orientation;
+            turnsB = k.shape != Shape::Sphere;
         }
     }
+    const Vec3 offsetB = contact.point - centreB;
+    if (contact.b.kind != BodyKind::Plane) start.rB = offsetB;
+    c.separationOffset = start.startSeparation + (turnsB ? Real(0) : glm::dot(offsetB, c.normal)) -
+                         (turnsA ? Real(0) : glm::dot(start.rA, c.normal));
+    if (turnsA || turnsB) {
+        TurningAnchors anchors;
+        if (turnsA) anchors.localA = glm::conjugate(a.orientation) * start.rA;
+        if (turnsB) anchors.localB = glm::conjugate(*orientationB) * offsetB;
+        c.turningAnchors = static_cast<std::uint32_t>(w.turningAnchors.size());
+        w.turningAnchors.push_back(anchors);
+    }
+
     const SolverBodyInertia& inertiaA = w.inertias[c.bodyA];
     const SolverBodyInertia& inertiaB = w.inertias[c.bodyB];
     const SolverBody& bodyA = w.bodies[c.bodyA];
     const SolverBody& bodyB = w.bodies[c.bodyB];
-    c.startSeparation = -contact.depth;
-    c.normal = contact.normal;
     tangentBasis(c.normal, c.tangent);
     // J's angular parts and K, once per step: r, d and I⁻¹ are fixed through it (solver_body.hpp).
-    c.normalRow = makeContactRow(inertiaA, inertiaB, c.rA, c.rB, c.normal);
+    c.normalRow = makeContactRow(inertiaA, inertiaB, start.rA, start.rB, c.normal);
     c.normalMass = Real(1) / inverseEffectiveMass(bodyA, bodyB, c.normalRow);
-    c.normalSurfaceSpeed = glm::dot(c.staticVelocity, c.normal);
+    c.normalSurfaceSpeed = glm::dot(start.staticVelocity, c.normal);
     for (int k = 0; k < 2; ++k) {
-        c.tangentRow[k] = makeContactRow(inertiaA, inertiaB, c.rA, c.rB, c.tangent[k]);
+        c.tangentRow[k] = makeContactRow(inertiaA, inertiaB, start.rA, start.rB, c.tangent[k]);
         c.tangentMass[k] = Real(1) / inverseEffectiveMass(bodyA, bodyB, c.tangentRow[k]);
-        c.tangentSurfaceSpeed[k] = glm::dot(c.staticVelocity, c.tangent[k]);
+        c.tangentSurfaceSpeed[k] = glm::dot(start.staticVelocity, c.tangent[k]);
     }
     c.friction = combineFriction(a.friction, other.friction);
 
@@ -129,12 +152,13 @@ SolverContact prepareOne(const BodySet& bodies, const Contact& contact, Real h, 
     const Real vn = normalVelocity(c, w.bodies);
     const Real approachAcceleration = -glm::dot(other.acceleration - a.acceleration, c.normal);
     if (vn < 0) {
-        c.approachAtTouch = std::sqrt(std::max(Real(0), vn * vn + Real(2) * approachAcceleration * c.startSeparation));
+        start.approachAtTouch =
+            std::sqrt(std::max(Real(0), vn * vn + Real(2) * approachAcceleration * start.startSeparation));
     }
     const Real stepAcceleration = std::max({std::abs(approachAcceleration), std::abs(glm::dot(a.acceleration, c.normal)),
                                             std::abs(glm::dot(other.acceleration, c.normal))});
-    const bool resting = c.approachAtTouch <= kRestingContactSteps * stepAcceleration * h;
-    c.restitution = resting ? Real(0) : combineElasticity(a.elasticity, other.elasticity);
+    const bool resting = start.approachAtTouch <= kRestingContactSteps * stepAcceleration * h;
+    start.restitution = resting ? Real(0) : combineElasticity(a.elasticity, other.elasticity);
     return c;
 }
 
@@ -150,9 +174,11 @@ void prepareContacts(const BodySet& bodies, std::span<const Contact> contacts, R
     workspace.bodies.emplace_back();  // record 0: the static body (m⁻¹ = 0, I⁻¹ = 0, at rest)
     workspace.inertias.emplace_back();
     workspace.contacts.resize(contacts.size());
+    workspace.starts.resize(contacts.size());
+    workspace.turningAnchors.clear();
     for (std::size_t i = 0; i < contacts.size(); ++i) {
         SolverContact& c = workspace.contacts[i];
-        c = prepareOne(bodies, contacts[i], h, workspace);
+        c = prepareOne(bodies, contacts[i], h, workspace, workspace.starts[i]);
         if (!warmStart) continue;
         if (const CachedImpulse* cached = findCachedImpulse(workspace.previousImpulses, keyOf(contacts[i]))) {
             c.normalImpulse = cached->normalImpulse;
@@ -163,14 +189,15 @@ void prepareContacts(const BodySet& bodies, std::span<const Contact> contacts, R
 }
 
 void recordPoses(const BodySet& bodies, SolverWorkspace& workspace) {
-    workspace.dynamicPoses.resize(bodies.dynamics.size());
-    for (std::size_t i = 0; i < bodies.dynamics.size(); ++i) {
-        workspace.dynamicPoses[i] = {bodies.dynamics[i].position, bodies.dynamics[i].orientation};
+    const std::size_t dynamicCount = bodies.dynamics.size();
+    workspace.poses.resize(dynamicCount + bodies.kinematics.size() + 1);
+    for (std::size_t i = 0; i < dynamicCount; ++i) {
+        workspace.poses[i] = {bodies.dynamics[i].position, bodies.dynamics[i].orientation};
     }
-    workspace.kinematicPoses.resize(bodies.kinematics.size());
     for (std::size_t i = 0; i < bodies.kinematics.size(); ++i) {
-        workspace.kinematicPoses[i] = {bodies.kinematics[i].position, bodies.kinematics[i].orientation};
+        workspace.poses[dynamicCount + i] = {bodies.kinematics[i].position, bodies.kinematics[i].orientation};
     }
+    workspace.poses.back() = Pose{};  // the planes' fixed pose at the origin
 }
 
 void warmStartContacts(SolverWorkspace& workspace, bool accumulate) {
@@ -262,11 +289,13 @@ void solveContacts(SolverWorkspace& workspace, const ContactSolverSettings& sett
 
 void applyRestitution(SolverWorkspace& workspace) {
     gatherVelocities(workspace);
-    for (SolverContact& c : workspace.contacts) {
-        if (c.restitution == Real(0) || c.maxNormalImpulse == Real(0)) continue;
+    for (std::size_t i = 0; i < workspace.contacts.size(); ++i) {
+        SolverContact& c = workspace.contacts[i];
+        const ContactStart& start = workspace.starts[i];
+        if (start.restitution == Real(0) || c.maxNormalImpulse == Real(0)) continue;
         // Drive v_n to e·v_c (separating), never pulling: the accumulated λ stays ≥ 0.
         const Real vn = normalVelocity(c, workspace.bodies);
-        const Real impulse = c.normalMass * (c.restitution * c.approachAtTouch - vn);
+        const Real impulse = c.normalMass * (start.restitution * start.approachAtTouch - vn);
         const Real total = std::max(c.normalImpulse + impulse, Real(0));
         applyNormalImpulse(c, workspace.bodies, total - c.normalImpulse);
         c.normalImpulse = total;
@@ -279,10 +308,12 @@ void storeContactImpulses(std::span<const Contact> contacts, SolverWorkspace& wo
     workspace.currentImpulses.clear();
     for (std::size_t i = 0; i < contacts.size(); ++i) {
         const SolverContact& c = workspace.contacts[i];
+        const ContactStart& start = workspace.starts[i];
         const Vec3 friction = c.tangentImpulse[0] * c.tangent[0] + c.tangentImpulse[1] * c.tangent[1];
         workspace.currentImpulses.push_back({keyOf(contacts[i]), c.normalImpulse, friction});
         if (!reports.empty()) {
-            reports[i] = {c.approachAtTouch, c.approachAtTouch, c.restitution, c.normalImpulse, glm::length(friction)};
+            reports[i] = {start.approachAtTouch, start.approachAtTouch, start.restitution, c.normalImpulse,
+                          glm::length(friction)};
         }
     }
     std::sort(workspace.currentImpulses.begin(), workspace.currentImpulses.end(),

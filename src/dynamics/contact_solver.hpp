@@ -65,11 +65,30 @@ struct Pose {
     Quat orientation{1, 0, 0, 0};  ///< Body-to-world rotation.
 };
 
-/// @brief One contact point held by the sequential-impulse solver through a step.
+/// @brief Index of SolverContact::turningAnchors for a contact whose anchors both stay at fixed offsets (spheres, planes).
+inline constexpr std::uint32_t kNoTurningAnchors = 0xffffffffu;
+
+/// @brief One contact point held by the sequential-impulse solver through a step: what every pass reads.
 ///
-/// The fields a pass reads for every point come first, so they share cache
-/// lines; the bodies are named by their solver-body records (solver_body.hpp),
-/// not by pointers into the World's objects.
+/// A pass streams this array once per pass, 48 passes a step at the default
+/// 16 substeps, so it holds only what a pass reads; where the contact came
+/// from (its bodies, lever arms, point and start gap) and its bounce are in
+/// the parallel ContactStart array. The bodies are named by their
+/// solver-body records (solver_body.hpp), not by pointers into the World's
+/// objects.
+///
+/// **The separation without the contact point.** An anchor either turns with
+/// its body (a box's material point: p = c + R·l, with l fixed in the body)
+/// or stays at a fixed offset from the centre (a sphere's support, which
+/// stays under the centre while the ball rolls; a plane's point, whose
+/// "centre" is the origin and never moves). The separation of the two anchors
+/// along the fixed normal,
+/// \f[ C = C_0 + (p_B - p_A)\cdot n - (p_{B,0} - p_{A,0})\cdot n = (c_B - c_A)\cdot n + C_\text{offset}
+///        + (R_B l_B - R_A l_A)\cdot n, \f]
+/// folds everything fixed through the step into one number, C_offset (the
+/// start gap and the fixed offsets), and keeps the turning anchors l_A, l_B
+/// in a side array that only box contacts read. A sphere's contact then costs
+/// one dot product of two centres.
 struct SolverContact {
     std::uint32_t bodyA = 0;         ///< A's record in SolverWorkspace::bodies.
     std::uint32_t bodyB = kStaticSolverBody; ///< B's record, or kStaticSolverBody for a plane or kinematic body.
@@ -85,21 +104,30 @@ struct SolverContact {
     Real maxNormalImpulse = 0;       ///< Largest λ_n seen this step (0: never pushed), N·s.
     Real normalSurfaceSpeed = 0;     ///< A kinematic B's surface velocity along n, m/s (zero for a plane or a dynamic B).
     Real tangentSurfaceSpeed[2] = {0, 0}; ///< The same along each tangent, m/s.
+    // The separation at the recorded poses (currentSeparation() in contact_solver.cpp).
+    std::uint32_t poseA = 0;         ///< A's pose in SolverWorkspace::poses.
+    std::uint32_t poseB = 0;         ///< B's pose there (a plane: the fixed pose at the origin).
+    Real separationOffset = 0;       ///< C_offset: C₀ and the fixed anchor offsets along n, m.
+    std::uint32_t turningAnchors = kNoTurningAnchors; ///< Index in SolverWorkspace::turningAnchors, if an anchor turns.
+};
+
+/// @brief The anchors of a contact that turn with their body, in body frames (zero for a side that does not turn), m.
+struct TurningAnchors {
+    Vec3 localA{0, 0, 0};  ///< l_A: the point in A's body frame (a box's material point).
+    Vec3 localB{0, 0, 0};  ///< l_B: the same in B's body frame.
+};
+
+/// @brief Where a contact came from and what it was at the start of the step:
+/// read once a step (prepare, the bounce) and by the trace, never by a pass.
+struct ContactStart {
+    std::uint32_t indexA = 0;        ///< A's index in the dynamic array.
+    BodyRef refB;                    ///< B: its kind and index.
     Vec3 rA{0, 0, 0};                ///< Lever arm from A's centre to the point (world frame, start of step), m.
     Vec3 rB{0, 0, 0};                ///< The same from B's centre (zero for a plane), m.
-    // The separation at the recorded poses (currentSeparation() in contact_solver.cpp).
-    std::uint32_t indexA = 0;        ///< A's index in the dynamic array (its pose).
-    BodyRef refB;                    ///< B: its kind and index (its pose).
-    bool anchorTurnsWithA = true;    ///< False for a sphere: its contact point stays below the centre while it rolls.
-    bool anchorTurnsWithB = true;    ///< The same for B.
-    Vec3 localAnchorA{0, 0, 0};      ///< The point in A's body frame, m (a box's material point).
-    Vec3 localAnchorB{0, 0, 0};      ///< The point in B's body frame, m.
     Vec3 startPoint{0, 0, 0};        ///< The contact point at the start of the step, where both anchors were, m.
-    Real startSeparation = 0;        ///< C at the start of the step: −Contact::depth, m (> 0: a gap).
-    // The bounce, once per step.
+    Real startSeparation = 0;        ///< C₀, the gap at the start of the step: −Contact::depth, m (> 0: a gap).
     Real restitution = 0;            ///< e of the pair (0 when the contact is resting).
     Real approachAtTouch = 0;        ///< v_c: approach speed when the surfaces meet, m/s (≥ 0).
-    // Read by the trace only (the passes use the surface speeds above).
     Vec3 staticVelocity{0, 0, 0};    ///< Velocity of a kinematic B's surface at the point, m/s (zero for a plane or a dynamic B).
 };
 
@@ -113,15 +141,18 @@ struct ContactSolverSettings {
 
 /// @brief Scratch arrays of the sequential-impulse contact solver, reused every step.
 struct SolverWorkspace {
-    std::vector<SolverContact> contacts;         ///< One per contact point, this step.
+    std::vector<SolverContact> contacts;         ///< One per contact point, this step: what the passes read.
+    std::vector<ContactStart> starts;            ///< The same contacts' origin and bounce (cold: prepare, bounce, trace).
+    std::vector<TurningAnchors> turningAnchors;  ///< Anchors of the contacts with a turning anchor (boxes).
     std::vector<SolverBody> bodies;              ///< Record 0 static, then one per dynamic body in a contact (solver_body.hpp).
     std::vector<SolverBodyInertia> inertias;     ///< The same records' inertia and body index (cold: prepare and write-back).
     std::vector<std::uint32_t> bodyRecord;       ///< Per dynamic body: its record in `bodies`, or kStaticSolverBody if none.
     std::span<DynamicObject> dynamics;           ///< The World's dynamic bodies, as prepareContacts() saw them (gather, scatter).
     std::vector<CachedImpulse> previousImpulses; ///< Last step's impulses, sorted by key.
     std::vector<CachedImpulse> currentImpulses;  ///< This step's, swapped in at the end.
-    std::vector<Pose> dynamicPoses;              ///< Per dynamic body: the pose separations are measured at.
-    std::vector<Pose> kinematicPoses;            ///< Per kinematic body: the same.
+    /// The poses separations are measured at: the dynamic bodies (by index, as the joints read them), then the
+    /// kinematic bodies, then one fixed pose at the origin that every plane contact's B uses.
+    std::vector<Pose> poses;
     std::vector<Vec3> velocityBefore;            ///< Per dynamic body: v before this substep's solve, m/s.
     std::vector<Vec3> angularVelocityBefore;     ///< Per dynamic body: ω before this substep's solve, rad/s.
 };

@@ -356,13 +356,16 @@ void TraceObserver::writePreparedConstraints(const std::string& head, const Worl
             line(head, bodies[i].name, "wakes (an awake body touches or is jointed to its island)");
         }
     }
-    for (const SolverContact& c : world.solverContacts()) {
-        const std::string& a = bodies[c.indexA].name;
-        const std::string& b = objectName(world, c.refB);
+    for (std::size_t i = 0; i < world.solverContacts().size(); ++i) {
+        const SolverContact& c = world.solverContacts()[i];
+        const ContactStart& start = world.solverContactStarts()[i];
+        const std::string& a = bodies[start.indexA].name;
+        const std::string& b = objectName(world, start.refB);
         if (!objectSelected(a) && !objectSelected(b)) continue;
         line(head, a + "|" + b,
-             "m_eff " + num(c.normalMass) + " kg  C0 " + num(c.startSeparation) + " m  v_c " + num(c.approachAtTouch) +
-                 " m/s  e " + num(c.restitution) + "  warm j " + num(c.normalImpulse) + " N*s");
+             "m_eff " + num(c.normalMass) + " kg  C0 " + num(start.startSeparation) + " m  v_c " +
+                 num(start.approachAtTouch) + " m/s  e " + num(start.restitution) + "  warm j " +
+                 num(c.normalImpulse) + " N*s");
     }
 }
 
@@ -371,23 +374,25 @@ namespace {
 
 /// Velocity of B's material point at the contact, m/s: a dynamic B's v + ω × r_B,
 /// else the kinematic surface velocity the solver recorded (zero for a plane).
-Vec3 surfaceVelocityOfB(const World& world, const SolverContact& c) {
-    if (c.refB.kind != BodyKind::Dynamic) return c.staticVelocity;
-    const DynamicObject& b = world.dynamics()[c.refB.index];
-    return b.velocity + glm::cross(b.angularVelocity, c.rB);
+Vec3 surfaceVelocityOfB(const World& world, const ContactStart& start) {
+    if (start.refB.kind != BodyKind::Dynamic) return start.staticVelocity;
+    const DynamicObject& b = world.dynamics()[start.refB.index];
+    return b.velocity + glm::cross(b.angularVelocity, start.rB);
 }
 
 }  // namespace
 
 void TraceObserver::writeSolve(const std::string& head, const World& world) {
     const auto& bodies = world.dynamics();
-    for (const SolverContact& c : world.solverContacts()) {
-        const std::string& a = bodies[c.indexA].name;
-        const std::string& b = objectName(world, c.refB);
+    for (std::size_t i = 0; i < world.solverContacts().size(); ++i) {
+        const SolverContact& c = world.solverContacts()[i];
+        const ContactStart& start = world.solverContactStarts()[i];
+        const std::string& a = bodies[start.indexA].name;
+        const std::string& b = objectName(world, start.refB);
         if (!objectSelected(a) && !objectSelected(b)) continue;
-        const DynamicObject& bodyA = bodies[c.indexA];
-        const Vec3 vA = bodyA.velocity + glm::cross(bodyA.angularVelocity, c.rA);
-        const Vec3 vB = surfaceVelocityOfB(world, c);
+        const DynamicObject& bodyA = bodies[start.indexA];
+        const Vec3 vA = bodyA.velocity + glm::cross(bodyA.angularVelocity, start.rA);
+        const Vec3 vB = surfaceVelocityOfB(world, start);
         line(head, a + "|" + b,
              "j " + num(c.normalImpulse) + " N*s  j_t " + num(std::hypot(c.tangentImpulse[0], c.tangentImpulse[1])) +
                  " N*s  j_max " + num(c.maxNormalImpulse) + " N*s  v_n " + num(glm::dot(vB - vA, c.normal)) + " m/s");
@@ -408,18 +413,20 @@ void TraceObserver::writeJoints(const std::string& head, const World& world) {
 /// The bounce decision per contact, the impulse of the whole step, and joints that broke.
 void TraceObserver::writeRestitution(const std::string& head, const World& world) {
     const auto& bodies = world.dynamics();
-    for (const SolverContact& c : world.solverContacts()) {
-        const std::string& a = bodies[c.indexA].name;
-        const std::string& b = objectName(world, c.refB);
+    for (std::size_t i = 0; i < world.solverContacts().size(); ++i) {
+        const SolverContact& c = world.solverContacts()[i];
+        const ContactStart& start = world.solverContactStarts()[i];
+        const std::string& a = bodies[start.indexA].name;
+        const std::string& b = objectName(world, start.refB);
         if (!objectSelected(a) && !objectSelected(b)) continue;
-        const char* decision = c.maxNormalImpulse <= 0 ? "no (never pushed)"
-                               : c.restitution <= 0    ? "no (resting, or e = 0)"
-                                                       : "yes";
-        const DynamicObject& bodyA = bodies[c.indexA];
-        const Vec3 vA = bodyA.velocity + glm::cross(bodyA.angularVelocity, c.rA);
-        const Vec3 vB = surfaceVelocityOfB(world, c);
+        const char* decision = c.maxNormalImpulse <= 0  ? "no (never pushed)"
+                               : start.restitution <= 0 ? "no (resting, or e = 0)"
+                                                        : "yes";
+        const DynamicObject& bodyA = bodies[start.indexA];
+        const Vec3 vA = bodyA.velocity + glm::cross(bodyA.angularVelocity, start.rA);
+        const Vec3 vB = surfaceVelocityOfB(world, start);
         line(head, a + "|" + b,
-             "v_c " + num(c.approachAtTouch) + " m/s  e " + num(c.restitution) + "  bounce " + decision + "  j " +
+             "v_c " + num(start.approachAtTouch) + " m/s  e " + num(start.restitution) + "  bounce " + decision + "  j " +
                  num(c.normalImpulse) + " N*s  j_max " + num(c.maxNormalImpulse) + " N*s  v_n " + num(glm::dot(vB - vA, c.normal)) + " m/s");
     }
     for (std::size_t i = 0; i < world.joints().size(); ++i) {

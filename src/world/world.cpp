@@ -272,11 +272,11 @@ void World::stepWithSequentialImpulses() {
         //    (src/dynamics/joints/*.cpp, src/dynamics/contact_solver.cpp, src/integrators/velocity_change_drift.cpp)
         runStage(Stage::SolveConstraints, [&] {
             recordVelocities(dynamics_, solverWorkspace_.velocityBefore, solverWorkspace_.angularVelocityBefore);
-            if (plan_.jointSolver.runs) warmStartJoints(jointWorkspace_, solverWorkspace_.dynamicPoses);
+            if (plan_.jointSolver.runs) warmStartJoints(jointWorkspace_, solverWorkspace_.poses);
             warmStartContacts(solverWorkspace_, settings_.accumulateImpulses);
             for (int pass = 0; pass < settings_.velocityIterations; ++pass) {
                 if (plan_.jointSolver.runs) {
-                    solveJoints(jointWorkspace_, solverWorkspace_.dynamicPoses, jointSettings, true);
+                    solveJoints(jointWorkspace_, solverWorkspace_.poses, jointSettings, true);
                 }
                 solveContacts(solverWorkspace_, contactSettings, true);
             }
@@ -289,7 +289,7 @@ void World::stepWithSequentialImpulses() {
             recordPoses(bodies(), solverWorkspace_);  // where the drift left them
             for (int pass = 0; pass < settings_.relaxIterations; ++pass) {
                 if (plan_.jointSolver.runs) {
-                    solveJoints(jointWorkspace_, solverWorkspace_.dynamicPoses, jointSettings, false);
+                    solveJoints(jointWorkspace_, solverWorkspace_.poses, jointSettings, false);
                 }
                 solveContacts(solverWorkspace_, contactSettings, false);
             }

@@ -78,6 +78,8 @@ public:
     const StageRecords& stageRecords() const { return stageRecords_; }           ///< Per-stage timing.
     /// @brief The sequential-impulse solver's constraints of the last step (effective masses, accumulated impulses).
     const std::vector<SolverContact>& solverContacts() const { return solverWorkspace_.contacts; }
+    /// @brief Where each of those constraints came from (bodies, lever arms, start gap) and its bounce; same order.
+    const std::vector<ContactStart>& solverContactStarts() const { return solverWorkspace_.starts; }
     const Broadphase& broadphase() const { return broadphase_; }  ///< Stage 4's state: which kind ran, Auto's reason.
     /// @brief What each step runs and why (src/world/step_plan.hpp), as of the last step
     /// (or construction); `stepwise run --explain` prints it.

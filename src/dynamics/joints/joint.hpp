@@ -38,7 +38,7 @@
 /// cannot pull, get the last word), the drift, solveJoints(useBias = false)
 /// in the relax pass; after the substeps finishJoints() breaks the joints
 /// that pulled harder than their MaxForce. C is measured at the poses the
-/// contact solver records (SolverWorkspace::dynamicPoses): the start of the
+/// contact solver records (SolverWorkspace::poses): the start of the
 /// substep in the solve, so that the bias means "C after this substep"
 /// exactly as in Box2D, and where the drift left the bodies in the relax.
 ///
