@@ -41,30 +41,6 @@ std::uint32_t recordOf(SolverWorkspace& w, std::uint32_t index) {
     return record;
 }
 
-/// Gather: copies the velocities of the bodies in contacts from the World's
-/// objects into their records (the integrator, the drift or a joint may have
-/// changed them since the last pass).
-void gatherVelocities(SolverWorkspace& w) {
-    for (std::size_t i = 1; i < w.bodies.size(); ++i) {
-        const DynamicObject& body = w.dynamics[w.inertias[i].body];
-        w.bodies[i].velocity = body.velocity;
-        w.bodies[i].angularVelocity = body.angularVelocity;
-    }
-}
-
-/// Scatter: writes the records' velocities back to the World's objects, for
-/// the joints, the drift and the integrator. The pass changed ω by I⁻¹·ΔL with
-/// the step's world I⁻¹, so the angular momentum changed by ΔL = I·Δω.
-void scatterVelocities(SolverWorkspace& w) {
-    for (std::size_t i = 1; i < w.bodies.size(); ++i) {
-        const SolverBody& s = w.bodies[i];
-        DynamicObject& body = w.dynamics[w.inertias[i].body];
-        body.velocity = s.velocity;
-        body.angularMomentum += w.inertias[i].inertia * (s.angularVelocity - body.angularVelocity);
-        body.angularVelocity = s.angularVelocity;
-    }
-}
-
 /// J·v along the normal: B's surface velocity minus A's, m/s (< 0: approaching).
 inline Real normalVelocity(const SolverContact& c, const std::vector<SolverBody>& bodies) {
     return rowVelocity(bodies[c.bodyA], bodies[c.bodyB], c.normal, c.normalRow) + c.normalSurfaceSpeed;
@@ -200,6 +176,25 @@ void recordPoses(const BodySet& bodies, SolverWorkspace& workspace) {
     workspace.poses.back() = Pose{};  // the planes' fixed pose at the origin
 }
 
+void copyVelocitiesIn(SolverWorkspace& workspace) {
+    for (std::size_t i = 1; i < workspace.bodies.size(); ++i) {
+        const DynamicObject& body = workspace.dynamics[workspace.inertias[i].body];
+        workspace.bodies[i].velocity = body.velocity;
+        workspace.bodies[i].angularVelocity = body.angularVelocity;
+    }
+}
+
+void copyVelocitiesOut(SolverWorkspace& workspace) {
+    for (std::size_t i = 1; i < workspace.bodies.size(); ++i) {
+        const SolverBody& s = workspace.bodies[i];
+        DynamicObject& body = workspace.dynamics[workspace.inertias[i].body];
+        body.velocity = s.velocity;
+        // The passes changed ω by I⁻¹·ΔL with the step's world I⁻¹, so L changed by ΔL = I·Δω.
+        body.angularMomentum += workspace.inertias[i].inertia * (s.angularVelocity - body.angularVelocity);
+        body.angularVelocity = s.angularVelocity;
+    }
+}
+
 void warmStartContacts(SolverWorkspace& workspace, bool accumulate) {
     if (!accumulate) {
         // Without accumulation each substep's impulses stand alone (Box2D-Lite
@@ -211,7 +206,6 @@ void warmStartContacts(SolverWorkspace& workspace, bool accumulate) {
         }
         return;
     }
-    gatherVelocities(workspace);
     std::vector<SolverBody>& bodies = workspace.bodies;
     for (const SolverContact& c : workspace.contacts) {
         SolverBody a = bodies[c.bodyA];  // copies: kept in registers, stored once (solver_body.hpp)
@@ -221,13 +215,11 @@ void warmStartContacts(SolverWorkspace& workspace, bool accumulate) {
         bodies[c.bodyA] = a;
         bodies[c.bodyB] = b;
     }
-    scatterVelocities(workspace);
 }
 
 void solveContacts(SolverWorkspace& workspace, const ContactSolverSettings& settings, bool useBias) {
     const Real inverseSubstep = Real(1) / settings.substep;
     std::vector<SolverBody>& bodies = workspace.bodies;
-    gatherVelocities(workspace);
     for (SolverContact& c : workspace.contacts) {
         // Normal: λ = −K⁻¹·s_m·(v_n + bias) − s_i·λ_acc (softness.hpp).
         const Real separation = currentSeparation(c, workspace);
@@ -284,11 +276,9 @@ void solveContacts(SolverWorkspace& workspace, const ContactSolverSettings& sett
         bodies[c.bodyA] = a;
         bodies[c.bodyB] = b;
     }
-    scatterVelocities(workspace);
 }
 
 void applyRestitution(SolverWorkspace& workspace) {
-    gatherVelocities(workspace);
     for (std::size_t i = 0; i < workspace.contacts.size(); ++i) {
         SolverContact& c = workspace.contacts[i];
         const ContactStart& start = workspace.starts[i];
@@ -300,7 +290,6 @@ void applyRestitution(SolverWorkspace& workspace) {
         applyNormalImpulse(c, workspace.bodies, total - c.normalImpulse);
         c.normalImpulse = total;
     }
-    scatterVelocities(workspace);
 }
 
 void storeContactImpulses(std::span<const Contact> contacts, SolverWorkspace& workspace,

@@ -147,7 +147,7 @@ struct SolverWorkspace {
     std::vector<SolverBody> bodies;              ///< Record 0 static, then one per dynamic body in a contact (solver_body.hpp).
     std::vector<SolverBodyInertia> inertias;     ///< The same records' inertia and body index (cold: prepare and write-back).
     std::vector<std::uint32_t> bodyRecord;       ///< Per dynamic body: its record in `bodies`, or kStaticSolverBody if none.
-    std::span<DynamicObject> dynamics;           ///< The World's dynamic bodies, as prepareContacts() saw them (gather, scatter).
+    std::span<DynamicObject> dynamics;           ///< The World's dynamic bodies, as prepareContacts() saw them (copyVelocitiesIn(), copyVelocitiesOut()).
     std::vector<CachedImpulse> previousImpulses; ///< Last step's impulses, sorted by key.
     std::vector<CachedImpulse> currentImpulses;  ///< This step's, swapped in at the end.
     /// The poses separations are measured at: the dynamic bodies (by index, as the joints read them), then the
@@ -183,12 +183,21 @@ void prepareContacts(const BodySet& bodies, std::span<const Contact> contacts, R
 /// solved velocity). The relax pass measures C where they are after the drift.
 void recordPoses(const BodySet& bodies, SolverWorkspace& workspace);
 
+/// @brief Copies the velocities of the bodies in contacts from the World's objects into their solver bodies.
+///
+/// The contact passes (warmStartContacts(), solveContacts(),
+/// applyRestitution()) read and write only the solver bodies
+/// (solver_body.hpp); the integrators, the drift and the joints work on the
+/// objects. So the step copies the velocities in before a run of contact
+/// passes and out after it, not around every pass: once per stage when the
+/// scene has no joints.
+void copyVelocitiesIn(SolverWorkspace& workspace);
+
+/// @brief Writes the solver bodies' velocities back to the World's objects; the angular momentum follows, ΔL = I·Δω.
+void copyVelocitiesOut(SolverWorkspace& workspace);
+
 /// @brief Applies every contact's accumulated impulses (the warm start), at the start of a substep.
 /// With @p accumulate off, instead starts each contact's impulses from zero.
-///
-/// Like solveContacts() and applyRestitution(), it copies the velocities of the
-/// bodies in contacts into their solver bodies first and back into the
-/// objects at the end (solver_body.hpp), so joints and integrators see them.
 void warmStartContacts(SolverWorkspace& workspace, bool accumulate);
 
 /// @brief One Gauss–Seidel pass over all contacts.

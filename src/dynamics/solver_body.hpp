@@ -7,9 +7,11 @@
 /// shape, forces, sleep state…), so reading them through the object costs
 /// several cache lines per body. Catto's Box2D v3 solves on *solver bodies*
 /// instead: the solver copies what it needs of each body it touches into a
-/// packed array at the start of a pass (gather), the contacts refer to those
-/// records by a 32-bit index, and the pass writes the velocities back at the
-/// end (scatter). The world inverse inertia I⁻¹ = R·I_body⁻¹·Rᵀ is computed
+/// packed array before a run of passes (gather: copyVelocitiesIn() in
+/// contact_solver.hpp), the contacts refer to those records by a 32-bit
+/// index, and the velocities are written back after it (scatter:
+/// copyVelocitiesOut()), once per solve and once per relax stage when the
+/// scene has no joints. The world inverse inertia I⁻¹ = R·I_body⁻¹·Rᵀ is computed
 /// once per body per step (the solver holds it fixed through the step, see
 /// point_impulse.hpp) and goes into the contacts' rows (ContactRow below),
 /// not into the record a pass reads.

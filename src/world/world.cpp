@@ -270,29 +270,31 @@ void World::stepWithSequentialImpulses() {
 
         // 6. Warm start, soft solve (joints first, then contacts), and move by what the solve changed
         //    (src/dynamics/joints/*.cpp, src/dynamics/contact_solver.cpp, src/integrators/velocity_change_drift.cpp)
+        //    The contact passes work on packed copies of the velocities (src/dynamics/solver_body.hpp),
+        //    the joints and the drift on the objects: copied in before, out after.
         runStage(Stage::SolveConstraints, [&] {
             recordVelocities(dynamics_, solverWorkspace_.velocityBefore, solverWorkspace_.angularVelocityBefore);
             if (plan_.jointSolver.runs) warmStartJoints(jointWorkspace_, solverWorkspace_.poses);
+            copyVelocitiesIn(solverWorkspace_);
             warmStartContacts(solverWorkspace_, settings_.accumulateImpulses);
             for (int pass = 0; pass < settings_.velocityIterations; ++pass) {
-                if (plan_.jointSolver.runs) {
-                    solveJoints(jointWorkspace_, solverWorkspace_.poses, jointSettings, true);
-                }
+                if (plan_.jointSolver.runs) solveJointsBetweenContactPasses(jointSettings, true);
                 solveContacts(solverWorkspace_, contactSettings, true);
             }
+            copyVelocitiesOut(solverWorkspace_);
             driftByVelocityChange(dynamics_, solverWorkspace_.velocityBefore, solverWorkspace_.angularVelocityBefore, hs,
                                   settings_.integrator);
         });
 
-        // 7. Relax: the same passes without the push-out bias, so the push-out leaves no speed behind
+        // 7. Relax: the same passes without the push-out bias, so the push-out leaves no speed behind.
+        //    The drift moved the bodies but left their velocities alone: the copies are still current.
         runStage(Stage::RelaxConstraints, [&] {
             recordPoses(bodies(), solverWorkspace_);  // where the drift left them
             for (int pass = 0; pass < settings_.relaxIterations; ++pass) {
-                if (plan_.jointSolver.runs) {
-                    solveJoints(jointWorkspace_, solverWorkspace_.poses, jointSettings, false);
-                }
+                if (plan_.jointSolver.runs) solveJointsBetweenContactPasses(jointSettings, false);
                 solveContacts(solverWorkspace_, contactSettings, false);
             }
+            copyVelocitiesOut(solverWorkspace_);
         });
     }
 
@@ -306,7 +308,9 @@ void World::stepWithSequentialImpulses() {
     // 8. Bounces, once per step, from the approach speed at touch (src/dynamics/contact_solver.cpp);
     //    joints that pulled harder than their MaxForce break (src/dynamics/joints/joint.cpp)
     runStage(Stage::Restitution, [&] {
+        copyVelocitiesIn(solverWorkspace_);  // the continuous stage may have stopped a body
         applyRestitution(solverWorkspace_);
+        copyVelocitiesOut(solverWorkspace_);
         impulses_.resize(contacts_.size());
         storeContactImpulses(contacts_, solverWorkspace_, impulses_);
         if (plan_.jointSolver.runs) finishJoints(jointWorkspace_, joints_, hs, stepCount_ + 1, time_ + h, links_);
@@ -316,6 +320,17 @@ void World::stepWithSequentialImpulses() {
     if (settings_.sleeping) {
         runStage(Stage::Sleep, [&] { updateSleep(bodies(), contacts_, links_, settings_, islandWorkspace_); });
     }
+}
+
+/// A joint pass works on the objects' velocities, a contact pass on the solver
+/// bodies' copies: hand the velocities across around the joints. With no joint
+/// acting there is nothing to hand across (and the copies stay as they are,
+/// bit for bit, whether or not the step plan skips the joint solver).
+void World::solveJointsBetweenContactPasses(const JointSolverSettings& jointSettings, bool useBias) {
+    if (jointWorkspace_.joints.empty()) return;
+    copyVelocitiesOut(solverWorkspace_);
+    solveJoints(jointWorkspace_, solverWorkspace_.poses, jointSettings, useBias);
+    copyVelocitiesIn(solverWorkspace_);
 }
 
 template <class StageBody>

@@ -112,6 +112,7 @@ private:
     void stepWithImpulses();
     void measureSweeps(Real h);
     void stepWithSequentialImpulses();
+    void solveJointsBetweenContactPasses(const JointSolverSettings& jointSettings, bool useBias);
     void integrate(Real h, const AccelerationFunction& forces);
     BodySet bodies();
 
