@@ -261,10 +261,10 @@ void solveContacts(SolverWorkspace& workspace, const ContactSolverSettings& sett
         }
         // Back onto Coulomb's circle: scale = min(1, μλ_n/|λ_t|), which is exactly 1
         // for a point that sticks and 0 for one that does not push (λ_n = 0, a
-        // speculative gap). Written without a branch: in a pile, sticking and
-        // slipping points alternate at random, and a mispredicted branch costs
-        // more than the square root. (The squares would overflow only for
-        // impulses near 1e154 N·s.)
+        // speculative gap). Only a slipping point pays for the division: written
+        // as std::min(1, μλ_n/|λ_t|), which divides for every point, the 1k rain
+        // ran 2 % slower. (The squares would overflow only for impulses near
+        // 1e154 N·s.)
         const Real magnitude = std::sqrt(total[0] * total[0] + total[1] * total[1]);
         const Real scale = magnitude > limit ? limit / magnitude : Real(1);
         total[0] *= scale;
