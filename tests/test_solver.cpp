@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "config/scene_loader.hpp"
+#include "dynamics/contact_solver.hpp"
 #include "dynamics/inertia.hpp"
 #include "dynamics/solver_body.hpp"
 #include "test_support.hpp"
@@ -154,6 +155,39 @@ TEST_CASE("A sleeping tower wakes when a sphere hits it, and does not wake for a
     // The woken island is the whole tower: its boxes touch, so they wake together.
     for (std::size_t i = 0; i < 20; ++i) CHECK_FALSE(world.dynamics()[i].asleep);
     CHECK(world.dynamics()[9].velocity.x > 0);  // pushed the way the ball flew
+}
+
+TEST_CASE("The solver measures a gap where the anchors are: a sphere's support, a box's turning corner", "[solver]") {
+    // currentSeparation() (contact_solver.hpp) keeps one constant per contact and a box's corner in its
+    // body frame. Against plain geometry on the ground y = 0: a ball's gap is its height minus its radius,
+    // however it turns; a box corner's gap is the height of that material point, which turns with the box.
+    std::vector<DynamicObject> dynamics{test::sphere("ball", Vec3(0, 0.52, 0)),
+                                        test::dynamicBox("box", Vec3(3, 0.5, 0), Vec3(1), 1, 0.5)};
+    const std::vector<KinematicsObject> kinematics;
+    const std::vector<CollisionPlane> planes{test::ground()};
+    const BodySet bodies{dynamics, kinematics, planes};
+    const Vec3 down(0, -1, 0);                    // the normal, from the body (A) towards the ground (B)
+    const Vec3 cornerInBox(0.5, -0.5, 0.5);       // the box's corner on the ground, body frame, m
+    const std::vector<Contact> contacts{
+        {0, BodyRef{BodyKind::Plane, 0}, down, Vec3(0, 0.01, 0), Real(-0.02), 0},  // 2 cm gap, point mid-gap
+        {1, BodyRef{BodyKind::Plane, 0}, down, Vec3(3.5, 0, 0.5), Real(0), 1}};    // the corner touching
+    SolverWorkspace workspace;
+    prepareContacts(bodies, contacts, Real(1) / 60, false, workspace);
+    recordPoses(bodies, workspace);
+    CHECK(currentSeparation(workspace.contacts[0], workspace) == Approx(0.02).margin(1e-12));
+    CHECK(currentSeparation(workspace.contacts[1], workspace) == Approx(0).margin(1e-12));
+
+    // The ball rises 5 cm, slides and turns a quarter turn; the box turns 0.3 rad about z and rises 1 cm.
+    dynamics[0].position += Vec3(0.3, 0.05, -0.2);
+    dynamics[0].orientation = glm::angleAxis(Real(1.5707963267948966), glm::normalize(Vec3(1, 2, 3)));
+    const Quat boxTurn = glm::angleAxis(Real(0.3), Vec3(0, 0, 1));
+    dynamics[1].orientation = boxTurn;
+    dynamics[1].position.y += Real(0.01);
+    recordPoses(bodies, workspace);
+    CHECK(currentSeparation(workspace.contacts[0], workspace) == Approx(dynamics[0].position.y - 0.5).margin(1e-12));
+    const Vec3 corner = dynamics[1].position + boxTurn * cornerInBox;
+    CHECK(currentSeparation(workspace.contacts[1], workspace) == Approx(corner.y).margin(1e-12));
+    CHECK(corner.y > Real(0.1));  // the turn lifted the corner by far more than the rise: the anchor really turned
 }
 
 TEST_CASE("A contact row is J: its J*v and its impulse are the point-impulse formulas", "[solver]") {

@@ -12,21 +12,6 @@ namespace stepwise {
 
 namespace {
 
-/// C at the recorded poses: the centres' separation along n plus what is
-/// fixed through the step, plus the turning anchors' part for a box
-/// (SolverContact in contact_solver.hpp). Box2D v3 tracks separation the same
-/// way between collision passes: no new collision test is needed.
-Real currentSeparation(const SolverContact& c, const SolverWorkspace& w) {
-    const Pose& poseA = w.poses[c.poseA];
-    const Pose& poseB = w.poses[c.poseB];
-    Real separation = glm::dot(poseB.position - poseA.position, c.normal) + c.separationOffset;
-    if (c.turningAnchors != kNoTurningAnchors) {
-        const TurningAnchors& anchors = w.turningAnchors[c.turningAnchors];
-        separation += glm::dot(poseB.orientation * anchors.localB - poseA.orientation * anchors.localA, c.normal);
-    }
-    return separation;
-}
-
 /// The solver-body record of dynamic body @p index, made on first use: its
 /// mass, and its world inertia and inverse inertia, once per body per step.
 std::uint32_t recordOf(SolverWorkspace& w, std::uint32_t index) {
@@ -139,6 +124,17 @@ SolverContact prepareOne(const BodySet& bodies, const Contact& contact, Real h, 
 }
 
 }  // namespace
+
+Real currentSeparation(const SolverContact& c, const SolverWorkspace& w) {
+    const Pose& poseA = w.poses[c.poseA];
+    const Pose& poseB = w.poses[c.poseB];
+    Real separation = glm::dot(poseB.position - poseA.position, c.normal) + c.separationOffset;
+    if (c.turningAnchors != kNoTurningAnchors) {
+        const TurningAnchors& anchors = w.turningAnchors[c.turningAnchors];
+        separation += glm::dot(poseB.orientation * anchors.localB - poseA.orientation * anchors.localA, c.normal);
+    }
+    return separation;
+}
 
 void prepareContacts(const BodySet& bodies, std::span<const Contact> contacts, Real h, bool warmStart,
                      SolverWorkspace& workspace) {

@@ -183,6 +183,13 @@ void prepareContacts(const BodySet& bodies, std::span<const Contact> contacts, R
 /// solved velocity). The relax pass measures C where they are after the drift.
 void recordPoses(const BodySet& bodies, SolverWorkspace& workspace);
 
+/// @brief C of contact @p c at the poses recordPoses() last recorded, m (> 0: a gap).
+///
+/// The centres' separation along n plus what is fixed through the step, plus
+/// the turning anchors' part for a box (SolverContact above). Box2D v3 tracks
+/// separation the same way between collision passes: no new collision test is needed.
+Real currentSeparation(const SolverContact& c, const SolverWorkspace& workspace);
+
 /// @brief Copies the velocities of the bodies in contacts from the World's objects into their solver bodies.
 ///
 /// The contact passes (warmStartContacts(), solveContacts(),
