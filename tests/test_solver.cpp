@@ -12,6 +12,7 @@
 #include "config/scene_loader.hpp"
 #include "dynamics/contact_solver.hpp"
 #include "dynamics/inertia.hpp"
+#include "dynamics/softness.hpp"
 #include "dynamics/solver_body.hpp"
 #include "test_support.hpp"
 
@@ -188,6 +189,56 @@ TEST_CASE("The solver measures a gap where the anchors are: a sphere's support, 
     const Vec3 corner = dynamics[1].position + boxTurn * cornerInBox;
     CHECK(currentSeparation(workspace.contacts[1], workspace) == Approx(corner.y).margin(1e-12));
     CHECK(corner.y > Real(0.1));  // the turn lifted the corner by far more than the rise: the anchor really turned
+}
+
+TEST_CASE("A later substep's warm start per body equals the warm start per contact", "[solver]") {
+    // warmStartFromLastSubstep() (contact_solver.hpp) adds to each body what the contacts did to it in the
+    // last substep, instead of re-applying every contact's λ. Same rows, same λ: the same velocities. Two
+    // balls on each other and on the ground, and a box turned on its corner (lever arms off the centre,
+    // so the angular parts matter), one substep solved, then both warm starts of the next substep.
+    std::vector<DynamicObject> dynamics{test::sphere("low", Vec3(0, 0.5, 0), Vec3(0.3, -1, 0.1)),
+                                        test::sphere("high", Vec3(0.1, 1.49, 0), Vec3(-0.2, -2, 0.4)),
+                                        test::dynamicBox("box", Vec3(3, 0.5, 0), Vec3(1), 2, 0.5)};
+    dynamics[2].velocity = Vec3(0.5, -0.8, 0.2);
+    dynamics[2].angularVelocity = Vec3(0.3, -0.4, 1.1);
+    dynamics[2].angularMomentum = worldInertia(dynamics[2].orientation, dynamics[2].inertiaBody) * dynamics[2].angularVelocity;
+    const std::vector<KinematicsObject> kinematics;
+    const std::vector<CollisionPlane> planes{test::ground()};
+    const BodySet bodies{dynamics, kinematics, planes};
+    const BodyRef ground{BodyKind::Plane, 0};
+    const Vec3 down(0, -1, 0);
+    const Vec3 up = glm::normalize(dynamics[1].position - dynamics[0].position);
+    std::vector<Contact> contacts{{0, ground, down, Vec3(0, 0, 0), Real(0.001), 0},
+                                  {0, BodyRef{BodyKind::Dynamic, 1}, up, dynamics[0].position + Real(0.4995) * up, Real(0.01), 1}};
+    for (std::uint32_t corner = 0; corner < 4; ++corner) {
+        const Vec3 local((corner & 1) ? 0.5 : -0.5, -0.5, (corner & 2) ? 0.5 : -0.5);
+        contacts.push_back({2, ground, down, dynamics[2].position + local, Real(0.002), 2 + corner});
+    }
+    const Real hs = Real(1) / 960;
+    ContactSolverSettings settings;
+    settings.substep = hs;
+    settings.softness = makeSoftness(240, 1, hs);
+    SolverWorkspace workspace;
+    prepareContacts(bodies, contacts, Real(1) / 60, false, workspace);
+    recordPoses(bodies, workspace);
+    copyVelocitiesIn(workspace);
+    warmStartContacts(workspace, true);
+    solveContacts(workspace, settings, true);
+    solveContacts(workspace, settings, false);
+    copyVelocitiesOut(workspace);
+    for (DynamicObject& body : dynamics) body.velocity += hs * Vec3(0, -kStandardGravity, 0);  // the next free flight
+
+    SolverWorkspace perBody = workspace;
+    copyVelocitiesIn(workspace);
+    warmStartContacts(workspace, true);
+    warmStartFromLastSubstep(perBody);
+    REQUIRE(workspace.contacts[1].normalImpulse > 0);  // the substep did push: there is something to repeat
+    for (std::size_t i = 1; i < workspace.bodies.size(); ++i) {
+        for (int k = 0; k < 3; ++k) {
+            CHECK(perBody.bodies[i].velocity[k] == Approx(workspace.bodies[i].velocity[k]).margin(1e-12));
+            CHECK(perBody.bodies[i].angularVelocity[k] == Approx(workspace.bodies[i].angularVelocity[k]).margin(1e-12));
+        }
+    }
 }
 
 TEST_CASE("A contact row is J: its J*v and its impulse are the point-impulse formulas", "[solver]") {

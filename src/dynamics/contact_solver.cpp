@@ -12,6 +12,13 @@ namespace stepwise {
 
 namespace {
 
+/// Keeps each record's velocities as this substep's contact passes find
+/// them, for warmStartFromLastSubstep() in the next substep.
+void rememberSubstepStart(SolverWorkspace& w) {
+    w.substepStart.resize(w.bodies.size());
+    for (std::size_t i = 1; i < w.bodies.size(); ++i) w.substepStart[i] = {w.bodies[i].velocity, w.bodies[i].angularVelocity};
+}
+
 /// The solver-body record of dynamic body @p index, made on first use: its
 /// mass, and its world inertia and inverse inertia, once per body per step.
 std::uint32_t recordOf(SolverWorkspace& w, std::uint32_t index) {
@@ -203,6 +210,7 @@ void warmStartContacts(SolverWorkspace& workspace, bool accumulate) {
         return;
     }
     std::vector<SolverBody>& bodies = workspace.bodies;
+    rememberSubstepStart(workspace);
     for (const SolverContact& c : workspace.contacts) {
         SolverBody a = bodies[c.bodyA];  // copies: kept in registers, stored once (solver_body.hpp)
         SolverBody b = bodies[c.bodyB];
@@ -210,6 +218,20 @@ void warmStartContacts(SolverWorkspace& workspace, bool accumulate) {
         for (int k = 0; k < 2; ++k) applyRowImpulse(a, b, c.tangent[k], c.tangentRow[k], c.tangentImpulse[k]);
         bodies[c.bodyA] = a;
         bodies[c.bodyB] = b;
+    }
+}
+
+void warmStartFromLastSubstep(SolverWorkspace& workspace) {
+    for (std::size_t i = 1; i < workspace.bodies.size(); ++i) {
+        SolverBody& record = workspace.bodies[i];
+        BodyVelocity& start = workspace.substepStart[i];
+        // What the contacts did to this body in the last substep: Σ_c λ_c·M⁻¹J_cᵀ (contact_solver.hpp).
+        const Vec3 change = record.velocity - start.velocity;
+        const Vec3 turn = record.angularVelocity - start.angularVelocity;
+        const DynamicObject& body = workspace.dynamics[workspace.inertias[i].body];
+        start = {body.velocity, body.angularVelocity};
+        record.velocity = body.velocity + change;
+        record.angularVelocity = body.angularVelocity + turn;
     }
 }
 

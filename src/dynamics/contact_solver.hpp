@@ -131,6 +131,12 @@ struct ContactStart {
     Vec3 staticVelocity{0, 0, 0};    ///< Velocity of a kinematic B's surface at the point, m/s (zero for a plane or a dynamic B).
 };
 
+/// @brief A body's linear and angular velocity, m/s and rad/s.
+struct BodyVelocity {
+    Vec3 velocity{0, 0, 0};         ///< v, m/s.
+    Vec3 angularVelocity{0, 0, 0};  ///< ω, world frame, rad/s.
+};
+
 /// @brief What the contact solver needs of the World's settings for one substep.
 struct ContactSolverSettings {
     Real substep = 0;                ///< h_s = h / substeps, s.
@@ -153,6 +159,7 @@ struct SolverWorkspace {
     /// The poses separations are measured at: the dynamic bodies (by index, as the joints read them), then the
     /// kinematic bodies, then one fixed pose at the origin that every plane contact's B uses.
     std::vector<Pose> poses;
+    std::vector<BodyVelocity> substepStart;      ///< Per record: v and ω before this substep's warm start.
     std::vector<Vec3> velocityBefore;            ///< Per dynamic body: v before this substep's solve, m/s.
     std::vector<Vec3> angularVelocityBefore;     ///< Per dynamic body: ω before this substep's solve, rad/s.
 };
@@ -206,6 +213,23 @@ void copyVelocitiesOut(SolverWorkspace& workspace);
 /// @brief Applies every contact's accumulated impulses (the warm start), at the start of a substep.
 /// With @p accumulate off, instead starts each contact's impulses from zero.
 void warmStartContacts(SolverWorkspace& workspace, bool accumulate);
+
+/// @brief The same warm start in a later substep of the step, per body instead of per contact;
+/// copies the velocities in from the objects as copyVelocitiesIn() does.
+///
+/// The warm start gives each body Σ_c λ_c·M⁻¹J_cᵀ over its contacts, with the
+/// accumulated impulses λ_c as the last substep left them. Within a step the
+/// rows of J are fixed (solver_body.hpp), and between the end of one substep
+/// and the warm start of the next no λ_c changes, so that sum is exactly the
+/// velocity change the contact passes made to the body in the last substep:
+/// Δv = v_end − v_start, Δω = ω_end − ω_start. Adding it per body gives the
+/// same velocities, to rounding, without reading the contacts: a pass over the
+/// bodies instead of over the (several times more, and ten times larger)
+/// contacts. It holds only when nothing but the contact passes changed the
+/// records during the last substep: not in the first substep (the λ_c come
+/// from the last step, with other rows), not with joints (a joint pass changes
+/// the velocities too), and not without accumulated impulses.
+void warmStartFromLastSubstep(SolverWorkspace& workspace);
 
 /// @brief One Gauss–Seidel pass over all contacts.
 /// @param useBias true for the solve (soft push-out), false for the relax pass.

@@ -275,8 +275,13 @@ void World::stepWithSequentialImpulses() {
         runStage(Stage::SolveConstraints, [&] {
             recordVelocities(dynamics_, solverWorkspace_.velocityBefore, solverWorkspace_.angularVelocityBefore);
             if (plan_.jointSolver.runs) warmStartJoints(jointWorkspace_, solverWorkspace_.poses);
-            copyVelocitiesIn(solverWorkspace_);
-            warmStartContacts(solverWorkspace_, settings_.accumulateImpulses);
+            // From the second substep on, the warm start is what the contacts did in the last one (no joints)
+            if (substep > 0 && settings_.accumulateImpulses && jointWorkspace_.joints.empty()) {
+                warmStartFromLastSubstep(solverWorkspace_);
+            } else {
+                copyVelocitiesIn(solverWorkspace_);
+                warmStartContacts(solverWorkspace_, settings_.accumulateImpulses);
+            }
             for (int pass = 0; pass < settings_.velocityIterations; ++pass) {
                 if (plan_.jointSolver.runs) solveJointsBetweenContactPasses(jointSettings, true);
                 solveContacts(solverWorkspace_, contactSettings, true);
