@@ -130,6 +130,37 @@ SolverContact prepareOne(const BodySet& bodies, const Contact& contact, Real h, 
     return c;
 }
 
+/// One friction pass of contact @p c on the bodies' copies @p a, @p b (solveContacts()).
+inline void solveFriction(SolverContact& c, SolverBody& a, SolverBody& b) {
+    // Friction on what is left sliding, inside Coulomb's circle |λ_t| ≤ μ·λ_n.
+    // Both tangent velocities are read after the normal impulse (friction acts
+    // on the sliding that is left) and before either friction impulse, so the
+    // pair is clamped to the circle together. A point that does not push
+    // (λ_n = 0: a speculative gap, or surfaces parting) and holds no friction
+    // impulse would be clamped back to zero friction: nothing to do.
+    const Real limit = c.friction * c.normalImpulse;
+    if (limit == Real(0) && c.tangentImpulse[0] == Real(0) && c.tangentImpulse[1] == Real(0)) return;
+    Real total[2];
+    for (int k = 0; k < 2; ++k) {
+        const Real vt = rowVelocity(a, b, c.tangent[k], c.tangentRow[k]) + c.tangentSurfaceSpeed[k];
+        total[k] = c.tangentImpulse[k] - c.tangentMass[k] * vt;
+    }
+    // Back onto Coulomb's circle: scale = min(1, μλ_n/|λ_t|), which is exactly 1
+    // for a point that sticks and 0 for one that does not push (λ_n = 0, a
+    // speculative gap). Only a slipping point pays for the division: written
+    // as std::min(1, μλ_n/|λ_t|), which divides for every point, the 1k rain
+    // ran 2 % slower. (The squares would overflow only for impulses near
+    // 1e154 N·s.)
+    const Real magnitude = std::sqrt(total[0] * total[0] + total[1] * total[1]);
+    const Real scale = magnitude > limit ? limit / magnitude : Real(1);
+    total[0] *= scale;
+    total[1] *= scale;
+    for (int k = 0; k < 2; ++k) {
+        applyRowImpulse(a, b, c.tangent[k], c.tangentRow[k], total[k] - c.tangentImpulse[k]);
+        c.tangentImpulse[k] = total[k];
+    }
+}
+
 }  // namespace
 
 Real currentSeparation(const SolverContact& c, const SolverWorkspace& w) {
@@ -267,30 +298,7 @@ void solveContacts(SolverWorkspace& workspace, const ContactSolverSettings& sett
         c.maxNormalImpulse = std::max(c.maxNormalImpulse, c.normalImpulse);
         applyRowImpulse(a, b, c.normal, c.normalRow, applied);
 
-        // Friction on what is left sliding, inside Coulomb's circle |λ_t| ≤ μ·λ_n.
-        // Both tangent velocities are read after the normal impulse (friction acts
-        // on the sliding that is left) and before either friction impulse, so the
-        // pair is clamped to the circle together.
-        const Real limit = c.friction * c.normalImpulse;
-        Real total[2];
-        for (int k = 0; k < 2; ++k) {
-            const Real vt = rowVelocity(a, b, c.tangent[k], c.tangentRow[k]) + c.tangentSurfaceSpeed[k];
-            total[k] = c.tangentImpulse[k] - c.tangentMass[k] * vt;
-        }
-        // Back onto Coulomb's circle: scale = min(1, μλ_n/|λ_t|), which is exactly 1
-        // for a point that sticks and 0 for one that does not push (λ_n = 0, a
-        // speculative gap). Only a slipping point pays for the division: written
-        // as std::min(1, μλ_n/|λ_t|), which divides for every point, the 1k rain
-        // ran 2 % slower. (The squares would overflow only for impulses near
-        // 1e154 N·s.)
-        const Real magnitude = std::sqrt(total[0] * total[0] + total[1] * total[1]);
-        const Real scale = magnitude > limit ? limit / magnitude : Real(1);
-        total[0] *= scale;
-        total[1] *= scale;
-        for (int k = 0; k < 2; ++k) {
-            applyRowImpulse(a, b, c.tangent[k], c.tangentRow[k], total[k] - c.tangentImpulse[k]);
-            c.tangentImpulse[k] = total[k];
-        }
+        solveFriction(c, a, b);
         bodies[c.bodyA] = a;
         bodies[c.bodyB] = b;
     }
