@@ -27,6 +27,11 @@ constexpr Real kSeriesHalfAngle = Real(0.1);
 /// of unit quaternions (|q|² − 1 of a few ε) it is far below rounding.
 constexpr Real kNearUnitLength = Real(1e-6);
 
+/// The Taylor coefficients of cos φ after the 1, in powers of φ²: −1/2!, 1/4!, −1/6!, 1/8!, −1/10!.
+constexpr Real kCosine[] = {Real(-1.0 / 2), Real(1.0 / 24), Real(-1.0 / 720), Real(1.0 / 40320), Real(-1.0 / 3628800)};
+/// The same of sin φ / φ: −1/3!, 1/5!, −1/7!, 1/9!.
+constexpr Real kSinc[] = {Real(-1.0 / 6), Real(1.0 / 120), Real(-1.0 / 5040), Real(1.0 / 362880)};
+
 namespace {
 
 /// q / |q| for a quaternion that rounding has nudged off unit length. One
@@ -52,9 +57,12 @@ Quat rotateByAngularVelocity(const Quat& orientation, const Vec3& omega, Real h)
     Real cosine = 0;
     Real sinc = 0;  // sin φ / φ
     if (p <= kSeriesHalfAngle * kSeriesHalfAngle) {
-        // Horner form of 1 − φ²/2! + φ⁴/4! − … − φ¹⁰/10! and 1 − φ²/3! + φ⁴/5! − … + φ⁸/9!
-        cosine = 1 - p / 2 * (1 - p / 12 * (1 - p / 30 * (1 - p / 56 * (1 - p / 90))));
-        sinc = 1 - p / 6 * (1 - p / 20 * (1 - p / 42 * (1 - p / 72)));
+        // Horner form of 1 − φ²/2! + φ⁴/4! − … − φ¹⁰/10! and 1 − φ²/3! + φ⁴/5! − … + φ⁸/9!,
+        // in powers of p = φ² with the coefficients ±1/n! rounded once at compile time:
+        // multiplications only (a division by 12 or 30 is not a multiplication to the
+        // compiler, whose reciprocal is inexact, and costs several times as much).
+        cosine = 1 + p * (kCosine[0] + p * (kCosine[1] + p * (kCosine[2] + p * (kCosine[3] + p * kCosine[4]))));
+        sinc = 1 + p * (kSinc[0] + p * (kSinc[1] + p * (kSinc[2] + p * kSinc[3])));
     } else {
         const Real halfAngle = std::sqrt(p);
         cosine = std::cos(halfAngle);
