@@ -70,8 +70,9 @@ inline constexpr std::uint32_t kNoTurningAnchors = 0xffffffffu;
 
 /// @brief One contact point held by the sequential-impulse solver through a step: what every pass reads.
 ///
-/// A pass streams this array once per pass, 48 passes a step at the default
-/// 16 substeps, so it holds only what a pass reads; where the contact came
+/// A pass streams this array, 33 times a step at the default 16 substeps (a
+/// solve and a relax pass in each, and the first substep's warm start), so it
+/// holds only what a pass reads; where the contact came
 /// from (its bodies, lever arms, point and start gap) and its bounce are in
 /// the parallel ContactStart array. The bodies are named by their
 /// solver-body records (solver_body.hpp), not by pointers into the World's
