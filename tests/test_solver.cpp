@@ -11,6 +11,7 @@
 
 #include "config/scene_loader.hpp"
 #include "dynamics/contact_solver.hpp"
+#include "dynamics/impulse_resolver.hpp"
 #include "dynamics/inertia.hpp"
 #include "dynamics/softness.hpp"
 #include "dynamics/solver_body.hpp"
@@ -281,4 +282,91 @@ TEST_CASE("A contact row is J: its J*v and its impulse are the point-impulse for
     }
     // And K is what it claims: an impulse λ changes J·v by K·λ.
     CHECK(rowVelocity(a, b, d, row) - expected == Approx(k * lambda).margin(1e-12));
+}
+
+TEST_CASE("A round contact's computed rows are J: the point-impulse formulas for two balls", "[solver]") {
+    // Two balls touching along n: the point lies on the line through the centres, so r_A = ℓ_A·n
+    // and r_B = ℓ_B·n, and each ball's I⁻¹ is a number (solid ⅖·m·r², hollow ⅔·m·r²). The
+    // computed rows (solver_body.hpp) must give the textbook J·v, impulse and K along the normal
+    // and both tangents, with the tangent basis the solver uses.
+    const Real massA = 2, radiusA = Real(0.4);
+    const Real massB = 3, radiusB = Real(0.3);
+    const Real inertiaA = Real(0.4) * massA * radiusA * radiusA;        // solid ball, kg·m²
+    const Real inertiaB = Real(2) / Real(3) * massB * radiusB * radiusB; // hollow ball, kg·m²
+    SolverBody a{Vec3(0.3, -1.2, 0.5), Vec3(2.0, -0.7, 1.1), 1 / massA, 1 / inertiaA};
+    SolverBody b{Vec3(-0.4, 0.2, 0.9), Vec3(-1.5, 0.3, 0.8), 1 / massB, 1 / inertiaB};
+    const Vec3 n = glm::normalize(Vec3(0.2, 1, -0.3));
+    const Real depth = Real(0.02);                      // m
+    const Real leverA = radiusA - depth / 2;            // the point halfway into the overlap
+    const Real leverB = -(radiusB - depth / 2);
+    const Vec3 rA = leverA * n;
+    const Vec3 rB = leverB * n;
+    Vec3 t[2];
+    tangentBasis(n, t);
+    // The identity the pass relies on for the arm directions u = n × t.
+    for (int i = 0; i < 3; ++i) {
+        CHECK(glm::cross(n, t[0])[i] == Approx(t[1][i]).margin(1e-15));
+        CHECK(glm::cross(n, t[1])[i] == Approx(-t[0][i]).margin(1e-15));
+    }
+
+    const auto pointVelocity = [](const SolverBody& s, const Vec3& r) { return s.velocity + glm::cross(s.angularVelocity, r); };
+    const auto textbookVelocity = [&](const SolverBody& x, const SolverBody& y, const Vec3& d) {
+        return glm::dot(pointVelocity(y, rB) - pointVelocity(x, rA), d);
+    };
+    CHECK(roundNormalVelocity(a, b, n) == Approx(textbookVelocity(a, b, n)).margin(1e-12));
+    const Real lambda = Real(0.8);  // N·s
+    for (int k = 0; k < 2; ++k) {
+        const Vec3 u = glm::cross(n, t[k]);
+        CHECK(roundRowVelocity(a, b, t[k], u, leverA, leverB) == Approx(textbookVelocity(a, b, t[k])).margin(1e-12));
+        const Vec3 armA = glm::cross(rA, t[k]);
+        const Vec3 armB = glm::cross(rB, t[k]);
+        CHECK(roundTangentInverseMass(a, b, leverA, leverB) ==
+              Approx(1 / massA + 1 / massB + glm::dot(armA, armA) / inertiaA + glm::dot(armB, armB) / inertiaB));
+
+        SolverBody a1 = a;
+        SolverBody b1 = b;
+        applyRoundRowImpulse(a1, b1, t[k], u, leverA, leverB, lambda);
+        for (int i = 0; i < 3; ++i) {
+            CHECK(a1.velocity[i] == Approx(a.velocity[i] - lambda / massA * t[k][i]).margin(1e-12));
+            CHECK(b1.velocity[i] == Approx(b.velocity[i] + lambda / massB * t[k][i]).margin(1e-12));
+            CHECK(a1.angularVelocity[i] == Approx(a.angularVelocity[i] - glm::cross(rA, lambda * t[k])[i] / inertiaA).margin(1e-12));
+            CHECK(b1.angularVelocity[i] == Approx(b.angularVelocity[i] + glm::cross(rB, lambda * t[k])[i] / inertiaB).margin(1e-12));
+        }
+    }
+    SolverBody a1 = a;
+    SolverBody b1 = b;
+    applyRoundNormalImpulse(a1, b1, n, lambda);
+    // Along n an impulse changes J·v by K·λ with K = m_A⁻¹ + m_B⁻¹, and turns neither ball.
+    CHECK(textbookVelocity(a1, b1, n) - textbookVelocity(a, b, n) == Approx((1 / massA + 1 / massB) * lambda));
+    CHECK(a1.angularVelocity == a.angularVelocity);
+    CHECK(b1.angularVelocity == b.angularVelocity);
+}
+
+TEST_CASE("Ball-ball and ball-plane contacts have computed rows; a box's or a kinematic body's are stored", "[solver]") {
+    Scene scene = parseScene(
+        "World, Solver=SequentialImpulse, Gravity=(0,-9.81,0), TimeStep=1/60\n"
+        "CollisionPlane, Position=(0,0,0), Normal=(0,1,0)\n"
+        "DynamicObject, Shape=Sphere, Position=(0,0.5,0), Radius=0.5, Name=low\n"
+        "DynamicObject, Shape=Sphere, Position=(0,1.5,0), Radius=0.5, Name=high\n"
+        "DynamicObject, Shape=Box, Position=(3,0.5,0), Scale=(1,1,1), Name=box\n"
+        "KinematicsObject, Shape=Sphere, Position=(6,0.5,0), Radius=0.5, Name=pusher\n"
+        "DynamicObject, Shape=Sphere, Position=(7,0.5,0), Radius=0.5, Name=pushed\n",
+        "rows.scene");
+    World world(std::move(scene));
+    world.step();
+    int round = 0;
+    int stored = 0;
+    for (std::size_t i = 0; i < world.solverContacts().size(); ++i) {
+        const ContactStart& start = world.solverContactStarts()[i];
+        const DynamicObject& a = world.dynamics()[start.indexA];
+        const bool ballOnBallOrPlane =
+            a.shape == Shape::Sphere && (start.refB.kind == BodyKind::Plane ||
+                                         (start.refB.kind == BodyKind::Dynamic &&
+                                          world.dynamics()[start.refB.index].shape == Shape::Sphere));
+        const bool computed = world.solverContacts()[i].rows == kRoundContact;
+        CHECK(computed == ballOnBallOrPlane);
+        (computed ? round : stored) += 1;
+    }
+    CHECK(round == 3);   // low–plane, high–low, pushed–plane
+    CHECK(stored >= 2);  // the box's corners on the plane, pushed–pusher
 }

@@ -26,20 +26,57 @@ std::uint32_t recordOf(SolverWorkspace& w, std::uint32_t index) {
     if (record == kStaticSolverBody) {
         const DynamicObject& body = w.dynamics[index];
         record = static_cast<std::uint32_t>(w.bodies.size());
-        w.bodies.push_back({body.velocity, body.angularVelocity, body.inverseMass});
+        // A ball's I⁻¹ is the same about every axis (round contacts use it as a number); a box's is a tensor.
+        const Real ballInverseInertia = body.shape == Shape::Sphere ? body.inverseInertiaBody.x : Real(0);
+        w.bodies.push_back({body.velocity, body.angularVelocity, body.inverseMass, ballInverseInertia});
         w.inertias.push_back({worldInverseInertia(body.orientation, body.inverseInertiaBody),
                               worldInertia(body.orientation, body.inertiaBody), index});
     }
     return record;
 }
 
-/// J·v along the normal: B's surface velocity minus A's, m/s (< 0: approaching).
-inline Real normalVelocity(const SolverContact& c, const std::vector<SolverBody>& bodies) {
-    return rowVelocity(bodies[c.bodyA], bodies[c.bodyB], c.normal, c.normalRow) + c.normalSurfaceSpeed;
-}
+/// The three rows of a round contact, computed from its normal, tangents and
+/// levers (solver_body.hpp). With tangentBasis()'s n × t₁ = t₂, the arm
+/// directions u = n × t are t₂ for t₁ and −t₁ for t₂.
+struct RoundRows {
+    const SolverContact& c;
+    Real normalVelocity(const SolverBody& a, const SolverBody& b) const { return roundNormalVelocity(a, b, c.normal); }
+    void applyNormal(SolverBody& a, SolverBody& b, Real lambda) const { applyRoundNormalImpulse(a, b, c.normal, lambda); }
+    Real tangentVelocity(int k, const SolverBody& a, const SolverBody& b) const {
+        return roundRowVelocity(a, b, c.tangent[k], armDirection(k), c.leverA, c.leverB);
+    }
+    void applyTangent(int k, SolverBody& a, SolverBody& b, Real lambda) const {
+        applyRoundRowImpulse(a, b, c.tangent[k], armDirection(k), c.leverA, c.leverB, lambda);
+    }
+    Vec3 armDirection(int k) const { return k == 0 ? c.tangent[1] : -c.tangent[0]; }
+};
 
-inline void applyNormalImpulse(const SolverContact& c, std::vector<SolverBody>& bodies, Real lambda) {
-    applyRowImpulse(bodies[c.bodyA], bodies[c.bodyB], c.normal, c.normalRow, lambda);
+/// The three rows of any other contact, read from SolverWorkspace::rows; a
+/// kinematic B's own surface speed is part of J·v.
+struct StoredRows {
+    const SolverContact& c;
+    const ContactRows& r;
+    Real normalVelocity(const SolverBody& a, const SolverBody& b) const {
+        return rowVelocity(a, b, c.normal, r.normal) + r.normalSurfaceSpeed;
+    }
+    void applyNormal(SolverBody& a, SolverBody& b, Real lambda) const { applyRowImpulse(a, b, c.normal, r.normal, lambda); }
+    Real tangentVelocity(int k, const SolverBody& a, const SolverBody& b) const {
+        return rowVelocity(a, b, c.tangent[k], r.tangent[k]) + r.tangentSurfaceSpeed[k];
+    }
+    void applyTangent(int k, SolverBody& a, SolverBody& b, Real lambda) const {
+        applyRowImpulse(a, b, c.tangent[k], r.tangent[k], lambda);
+    }
+};
+
+/// Calls @p work with contact @p c's rows, round or stored: the one branch per
+/// contact a pass takes on the kind of contact.
+template <class Work>
+inline void withRows(const SolverContact& c, const SolverWorkspace& w, Work&& work) {
+    if (c.rows == kRoundContact) {
+        work(RoundRows{c});
+    } else {
+        work(StoredRows{c, w.rows[c.rows]});
+    }
 }
 
 /// Index of the fixed pose at the origin (the last one): a plane's "centre".
@@ -98,26 +135,40 @@ SolverContact prepareOne(const BodySet& bodies, const Contact& contact, Real h, 
         w.turningAnchors.push_back(anchors);
     }
 
-    const SolverBodyInertia& inertiaA = w.inertias[c.bodyA];
-    const SolverBodyInertia& inertiaB = w.inertias[c.bodyB];
     const SolverBody& bodyA = w.bodies[c.bodyA];
     const SolverBody& bodyB = w.bodies[c.bodyB];
     tangentBasis(c.normal, c.tangent);
     // J's angular parts and K, once per step: r, d and I⁻¹ are fixed through it (solver_body.hpp).
-    c.normalRow = makeContactRow(inertiaA, inertiaB, start.rA, start.rB, c.normal);
-    c.normalMass = Real(1) / inverseEffectiveMass(bodyA, bodyB, c.normalRow);
-    c.normalSurfaceSpeed = glm::dot(start.staticVelocity, c.normal);
-    for (int k = 0; k < 2; ++k) {
-        c.tangentRow[k] = makeContactRow(inertiaA, inertiaB, start.rA, start.rB, c.tangent[k]);
-        c.tangentMass[k] = Real(1) / inverseEffectiveMass(bodyA, bodyB, c.tangentRow[k]);
-        c.tangentSurfaceSpeed[k] = glm::dot(start.staticVelocity, c.tangent[k]);
+    // A ball on a ball or a plane: levers along n, rows computed by the pass.
+    const bool round = a.shape == Shape::Sphere && (contact.b.kind == BodyKind::Plane ||
+                                                    (other.dynamic && other.dynamic->shape == Shape::Sphere));
+    if (round) {
+        c.leverA = glm::dot(start.rA, c.normal);
+        c.leverB = glm::dot(start.rB, c.normal);
+        c.normalMass = Real(1) / (bodyA.inverseMass + bodyB.inverseMass);
+        c.tangentMass[0] = c.tangentMass[1] = Real(1) / roundTangentInverseMass(bodyA, bodyB, c.leverA, c.leverB);
+    } else {
+        const SolverBodyInertia& inertiaA = w.inertias[c.bodyA];
+        const SolverBodyInertia& inertiaB = w.inertias[c.bodyB];
+        ContactRows rows;
+        rows.normal = makeContactRow(inertiaA, inertiaB, start.rA, start.rB, c.normal);
+        c.normalMass = Real(1) / inverseEffectiveMass(bodyA, bodyB, rows.normal);
+        rows.normalSurfaceSpeed = glm::dot(start.staticVelocity, c.normal);
+        for (int k = 0; k < 2; ++k) {
+            rows.tangent[k] = makeContactRow(inertiaA, inertiaB, start.rA, start.rB, c.tangent[k]);
+            c.tangentMass[k] = Real(1) / inverseEffectiveMass(bodyA, bodyB, rows.tangent[k]);
+            rows.tangentSurfaceSpeed[k] = glm::dot(start.staticVelocity, c.tangent[k]);
+        }
+        c.rows = static_cast<std::uint32_t>(w.rows.size());
+        w.rows.push_back(rows);
     }
     c.friction = combineFriction(a.friction, other.friction);
 
     // The bounce, decided before any impulse (contact_solver.hpp): the
     // approach speed when the surfaces meet, v_c² = v_n² + 2·a·C, with a the
     // approach acceleration −(a_B − a_A)·n.
-    const Real vn = normalVelocity(c, w.bodies);
+    Real vn = 0;
+    withRows(c, w, [&](const auto& rows) { vn = rows.normalVelocity(bodyA, bodyB); });
     const Real approachAcceleration = -glm::dot(other.acceleration - a.acceleration, c.normal);
     if (vn < 0) {
         start.approachAtTouch =
@@ -130,8 +181,9 @@ SolverContact prepareOne(const BodySet& bodies, const Contact& contact, Real h, 
     return c;
 }
 
-/// One friction pass of contact @p c on the bodies' copies @p a, @p b (solveContacts()).
-inline void solveFriction(SolverContact& c, SolverBody& a, SolverBody& b) {
+/// One friction pass of contact @p c, whose rows are @p rows, on the bodies' copies @p a, @p b (solveContacts()).
+template <class Rows>
+inline void solveFriction(SolverContact& c, const Rows& rows, SolverBody& a, SolverBody& b) {
     // Friction on what is left sliding, inside Coulomb's circle |λ_t| ≤ μ·λ_n.
     // Both tangent velocities are read after the normal impulse (friction acts
     // on the sliding that is left) and before either friction impulse, so the
@@ -142,7 +194,7 @@ inline void solveFriction(SolverContact& c, SolverBody& a, SolverBody& b) {
     if (limit == Real(0) && c.tangentImpulse[0] == Real(0) && c.tangentImpulse[1] == Real(0)) return;
     Real total[2];
     for (int k = 0; k < 2; ++k) {
-        const Real vt = rowVelocity(a, b, c.tangent[k], c.tangentRow[k]) + c.tangentSurfaceSpeed[k];
+        const Real vt = rows.tangentVelocity(k, a, b);
         total[k] = c.tangentImpulse[k] - c.tangentMass[k] * vt;
     }
     // Back onto Coulomb's circle: scale = min(1, μλ_n/|λ_t|), which is exactly 1
@@ -156,7 +208,7 @@ inline void solveFriction(SolverContact& c, SolverBody& a, SolverBody& b) {
     total[0] *= scale;
     total[1] *= scale;
     for (int k = 0; k < 2; ++k) {
-        applyRowImpulse(a, b, c.tangent[k], c.tangentRow[k], total[k] - c.tangentImpulse[k]);
+        rows.applyTangent(k, a, b, total[k] - c.tangentImpulse[k]);
         c.tangentImpulse[k] = total[k];
     }
 }
@@ -185,6 +237,7 @@ void prepareContacts(const BodySet& bodies, std::span<const Contact> contacts, R
     workspace.inertias.emplace_back();
     workspace.contacts.resize(contacts.size());
     workspace.starts.resize(contacts.size());
+    workspace.rows.clear();
     workspace.turningAnchors.clear();
     for (std::size_t i = 0; i < contacts.size(); ++i) {
         SolverContact& c = workspace.contacts[i];
@@ -245,8 +298,10 @@ void warmStartContacts(SolverWorkspace& workspace, bool accumulate) {
     for (const SolverContact& c : workspace.contacts) {
         SolverBody a = bodies[c.bodyA];  // copies: kept in registers, stored once (solver_body.hpp)
         SolverBody b = bodies[c.bodyB];
-        applyRowImpulse(a, b, c.normal, c.normalRow, c.normalImpulse);
-        for (int k = 0; k < 2; ++k) applyRowImpulse(a, b, c.tangent[k], c.tangentRow[k], c.tangentImpulse[k]);
+        withRows(c, workspace, [&](const auto& rows) {
+            rows.applyNormal(a, b, c.normalImpulse);
+            for (int k = 0; k < 2; ++k) rows.applyTangent(k, a, b, c.tangentImpulse[k]);
+        });
         bodies[c.bodyA] = a;
         bodies[c.bodyB] = b;
     }
@@ -284,21 +339,22 @@ void solveContacts(SolverWorkspace& workspace, const ContactSolverSettings& sett
         }
         SolverBody a = bodies[c.bodyA];  // copies: kept in registers, stored once (solver_body.hpp)
         SolverBody b = bodies[c.bodyB];
-        const Real vn = rowVelocity(a, b, c.normal, c.normalRow) + c.normalSurfaceSpeed;
-        const Real impulse = -c.normalMass * massScale * (vn + bias) - impulseScale * c.normalImpulse;
-        Real applied = 0;
-        if (settings.accumulate) {
-            const Real total = std::max(c.normalImpulse + impulse, Real(0));
-            applied = total - c.normalImpulse;
-            c.normalImpulse = total;
-        } else {  // Box2D-Lite's switch: clamp each increment, which cannot undo an earlier overshoot
-            applied = std::max(impulse, Real(0));
-            c.normalImpulse += applied;
-        }
-        c.maxNormalImpulse = std::max(c.maxNormalImpulse, c.normalImpulse);
-        applyRowImpulse(a, b, c.normal, c.normalRow, applied);
-
-        solveFriction(c, a, b);
+        withRows(c, workspace, [&](const auto& rows) {
+            const Real vn = rows.normalVelocity(a, b);
+            const Real impulse = -c.normalMass * massScale * (vn + bias) - impulseScale * c.normalImpulse;
+            Real applied = 0;
+            if (settings.accumulate) {
+                const Real total = std::max(c.normalImpulse + impulse, Real(0));
+                applied = total - c.normalImpulse;
+                c.normalImpulse = total;
+            } else {  // Box2D-Lite's switch: clamp each increment, which cannot undo an earlier overshoot
+                applied = std::max(impulse, Real(0));
+                c.normalImpulse += applied;
+            }
+            c.maxNormalImpulse = std::max(c.maxNormalImpulse, c.normalImpulse);
+            rows.applyNormal(a, b, applied);
+            solveFriction(c, rows, a, b);
+        });
         bodies[c.bodyA] = a;
         bodies[c.bodyB] = b;
     }
@@ -310,11 +366,14 @@ void applyRestitution(SolverWorkspace& workspace) {
         const ContactStart& start = workspace.starts[i];
         if (start.restitution == Real(0) || c.maxNormalImpulse == Real(0)) continue;
         // Drive v_n to e·v_c (separating), never pulling: the accumulated λ stays ≥ 0.
-        const Real vn = normalVelocity(c, workspace.bodies);
-        const Real impulse = c.normalMass * (start.restitution * start.approachAtTouch - vn);
-        const Real total = std::max(c.normalImpulse + impulse, Real(0));
-        applyNormalImpulse(c, workspace.bodies, total - c.normalImpulse);
-        c.normalImpulse = total;
+        SolverBody& a = workspace.bodies[c.bodyA];
+        SolverBody& b = workspace.bodies[c.bodyB];
+        withRows(c, workspace, [&](const auto& rows) {
+            const Real impulse = c.normalMass * (start.restitution * start.approachAtTouch - rows.normalVelocity(a, b));
+            const Real total = std::max(c.normalImpulse + impulse, Real(0));
+            rows.applyNormal(a, b, total - c.normalImpulse);
+            c.normalImpulse = total;
+        });
     }
 }
 

@@ -68,6 +68,9 @@ struct Pose {
 /// @brief Index of SolverContact::turningAnchors for a contact whose anchors both stay at fixed offsets (spheres, planes).
 inline constexpr std::uint32_t kNoTurningAnchors = 0xffffffffu;
 
+/// @brief SolverContact::rows of a *round* contact, whose rows are computed from its normal (solver_body.hpp).
+inline constexpr std::uint32_t kRoundContact = 0xffffffffu;
+
 /// @brief One contact point held by the sequential-impulse solver through a step: what every pass reads.
 ///
 /// A pass streams this array, 33 times a step at the default 16 substeps (a
@@ -77,6 +80,16 @@ inline constexpr std::uint32_t kNoTurningAnchors = 0xffffffffu;
 /// the parallel ContactStart array. The bodies are named by their
 /// solver-body records (solver_body.hpp), not by pointers into the World's
 /// objects.
+///
+/// **Rows stored or computed.** The Jacobian's angular parts, ContactRow per
+/// direction, are 288 bytes. A contact between two balls, or a ball and a
+/// plane, does not need them: its lever arms lie along the normal and a ball's
+/// inertia is a number, so the rows follow from the levers ℓ_A = r_A·n and
+/// ℓ_B = r_B·n (solver_body.hpp, "Rows of a round contact"). Such a *round*
+/// contact has `rows == kRoundContact` and a pass computes its rows; any other
+/// (a box, a kinematic body) keeps them in the side array
+/// SolverWorkspace::rows, which a pass reads at index `rows`. The pass stays
+/// one loop in one order; only the way it gets a contact's rows differs.
 ///
 /// **The separation without the contact point.** An anchor either turns with
 /// its body (a box's material point: p = c + R·l, with l fixed in the body)
@@ -94,22 +107,29 @@ struct SolverContact {
     std::uint32_t bodyA = 0;         ///< A's record in SolverWorkspace::bodies.
     std::uint32_t bodyB = kStaticSolverBody; ///< B's record, or kStaticSolverBody for a plane or kinematic body.
     Vec3 normal{0, 1, 0};            ///< From A towards B, fixed for the step.
-    Vec3 tangent[2];                 ///< Friction directions across the normal.
-    ContactRow normalRow;            ///< J's angular parts along n (solver_body.hpp), fixed for the step.
-    ContactRow tangentRow[2];        ///< The same along each tangent.
+    Vec3 tangent[2];                 ///< Friction directions across the normal, with n × t₁ = t₂ (tangentBasis()).
     Real normalMass = 0;             ///< K⁻¹ along n, kg.
     Real tangentMass[2] = {0, 0};    ///< K⁻¹ along each tangent, kg.
     Real friction = 0;               ///< μ of the pair.
     Real normalImpulse = 0;          ///< Accumulated λ_n of the current substep, N·s.
     Real tangentImpulse[2] = {0, 0}; ///< Accumulated friction impulses, N·s.
     Real maxNormalImpulse = 0;       ///< Largest λ_n seen this step (0: never pushed), N·s.
-    Real normalSurfaceSpeed = 0;     ///< A kinematic B's surface velocity along n, m/s (zero for a plane or a dynamic B).
-    Real tangentSurfaceSpeed[2] = {0, 0}; ///< The same along each tangent, m/s.
+    Real leverA = 0;                 ///< Round contact: ℓ_A = r_A·n, the lever arm along the normal, m.
+    Real leverB = 0;                 ///< Round contact: ℓ_B = r_B·n (zero against a plane), m.
     // The separation at the recorded poses (currentSeparation() in contact_solver.cpp).
+    Real separationOffset = 0;       ///< C_offset: C₀ and the fixed anchor offsets along n, m.
     std::uint32_t poseA = 0;         ///< A's pose in SolverWorkspace::poses.
     std::uint32_t poseB = 0;         ///< B's pose there (a plane: the fixed pose at the origin).
-    Real separationOffset = 0;       ///< C_offset: C₀ and the fixed anchor offsets along n, m.
+    std::uint32_t rows = kRoundContact; ///< Index in SolverWorkspace::rows, or kRoundContact: computed from n, ℓ_A, ℓ_B.
     std::uint32_t turningAnchors = kNoTurningAnchors; ///< Index in SolverWorkspace::turningAnchors, if an anchor turns.
+};
+
+/// @brief The stored Jacobian rows of a contact that is not round (a box, a kinematic body), read by every pass.
+struct ContactRows {
+    ContactRow normal;                    ///< J's angular parts along n (solver_body.hpp), fixed for the step.
+    ContactRow tangent[2];                ///< The same along each tangent.
+    Real normalSurfaceSpeed = 0;          ///< A kinematic B's surface velocity along n, m/s (zero for a plane or a dynamic B).
+    Real tangentSurfaceSpeed[2] = {0, 0}; ///< The same along each tangent, m/s.
 };
 
 /// @brief The anchors of a contact that turn with their body, in body frames (zero for a side that does not turn), m.
@@ -150,6 +170,7 @@ struct ContactSolverSettings {
 struct SolverWorkspace {
     std::vector<SolverContact> contacts;         ///< One per contact point, this step: what the passes read.
     std::vector<ContactStart> starts;            ///< The same contacts' origin and bounce (cold: prepare, bounce, trace).
+    std::vector<ContactRows> rows;               ///< Rows of the contacts that are not round (boxes, kinematic bodies).
     std::vector<TurningAnchors> turningAnchors;  ///< Anchors of the contacts with a turning anchor (boxes).
     std::vector<SolverBody> bodies;              ///< Record 0 static, then one per dynamic body in a contact (solver_body.hpp).
     std::vector<SolverBodyInertia> inertias;     ///< The same records' inertia and body index (cold: prepare and write-back).

@@ -42,7 +42,7 @@ namespace stepwise {
 /// @brief Record 0 of the solver-body array: the immovable B of a contact with a plane or kinematic body.
 inline constexpr std::uint32_t kStaticSolverBody = 0;
 
-/// @brief What a contact pass reads and writes of one dynamic body: 56 bytes, so a pass's bodies stay in cache.
+/// @brief What a contact pass reads and writes of one dynamic body: 64 bytes, one cache line.
 ///
 /// A pass copies both records of a contact into local variables, solves the
 /// contact's three rows on the copies, and stores them back once. The copies
@@ -52,6 +52,10 @@ struct SolverBody {
     Vec3 velocity{0, 0, 0};         ///< Linear velocity of the centre of mass, m/s.
     Vec3 angularVelocity{0, 0, 0};  ///< Angular velocity, world frame, rad/s.
     Real inverseMass = 0;           ///< 1/m, 1/kg (zero: static).
+    /// A ball's I⁻¹, the same about every axis, 1/(kg·m²): what a *round*
+    /// contact's friction turns it by (roundRowVelocity() below). Zero for a box,
+    /// whose contacts keep their turn per unit impulse in stored rows.
+    Real inverseInertia = 0;
 };
 
 /// @brief What only prepare and the write-back read of a body: its inertia for the step, and which body it is.
@@ -122,5 +126,57 @@ inline void applyRowImpulse(SolverBody& a, SolverBody& b, const Vec3& d, const C
     b.velocity += (lambda * b.inverseMass) * d;
     b.angularVelocity += lambda * row.turnB;
 }
+
+/// @name Rows of a round contact: computed from the normal, not stored
+///
+/// A *round* contact is one between a ball and a ball, or a ball and a plane
+/// (SolverContact::rows in contact_solver.hpp). Its lever arms lie along the
+/// normal: the point is on the line through the centres, or under the
+/// ball's centre, so r_A = ℓ_A·n and r_B = ℓ_B·n with ℓ = r·n (a plane's
+/// "centre" does not move, ℓ_B = 0). A ball's I⁻¹ is a number, the same about
+/// every axis. So the four vectors of a ContactRow follow from two numbers:
+/// along the normal, r × n = 0, and a push through the centres turns neither
+/// ball; along a tangent t, with u = n × t,
+/// \f[ r_A\times t = \ell_A\,u,\qquad I_A^{-1}(r_A\times t) = I_A^{-1}\ell_A\,u . \f]
+/// The pass computes them on the fly instead of reading 288 bytes of rows per
+/// contact: the rain's contact array is 2.6 times smaller, and what does not
+/// have to come from memory is what a pass over tens of thousands of contacts
+/// waits for (bench/solver_performance.md, fourth round).
+///@{
+
+/// @brief J·v along the normal of a round contact: (v_B − v_A)·n, m/s.
+inline Real roundNormalVelocity(const SolverBody& a, const SolverBody& b, const Vec3& n) {
+    return glm::dot(b.velocity - a.velocity, n);
+}
+
+/// @brief Impulse λ along the normal of a round contact: it moves the centres only.
+inline void applyRoundNormalImpulse(SolverBody& a, SolverBody& b, const Vec3& n, Real lambda) {
+    a.velocity -= (lambda * a.inverseMass) * n;
+    b.velocity += (lambda * b.inverseMass) * n;
+}
+
+/// @brief J·v along tangent @p t of a round contact, whose arms are ℓ·u with u = n × t:
+/// t·(v_B − v_A) + ℓ_B·u·ω_B − ℓ_A·u·ω_A, m/s.
+inline Real roundRowVelocity(const SolverBody& a, const SolverBody& b, const Vec3& t, const Vec3& u, Real leverA,
+                             Real leverB) {
+    return glm::dot(b.velocity - a.velocity, t) + leverB * glm::dot(u, b.angularVelocity) -
+           leverA * glm::dot(u, a.angularVelocity);
+}
+
+/// @brief Impulse λ along tangent @p t of a round contact: Δv = ∓λ·m⁻¹·t, Δω = ∓λ·I⁻¹·ℓ·u.
+inline void applyRoundRowImpulse(SolverBody& a, SolverBody& b, const Vec3& t, const Vec3& u, Real leverA, Real leverB,
+                                 Real lambda) {
+    a.velocity -= (lambda * a.inverseMass) * t;
+    a.angularVelocity -= (lambda * a.inverseInertia * leverA) * u;
+    b.velocity += (lambda * b.inverseMass) * t;
+    b.angularVelocity += (lambda * b.inverseInertia * leverB) * u;
+}
+
+/// @brief K = J·M⁻¹·Jᵀ along a tangent of a round contact (|u| = 1): m_A⁻¹ + m_B⁻¹ + ℓ_A²·I_A⁻¹ + ℓ_B²·I_B⁻¹, 1/kg.
+/// Along the normal the arms vanish and K = m_A⁻¹ + m_B⁻¹.
+inline Real roundTangentInverseMass(const SolverBody& a, const SolverBody& b, Real leverA, Real leverB) {
+    return a.inverseMass + b.inverseMass + leverA * leverA * a.inverseInertia + leverB * leverB * b.inverseInertia;
+}
+///@}
 
 }  // namespace stepwise
