@@ -19,20 +19,34 @@ void rememberSubstepStart(SolverWorkspace& w) {
     for (std::size_t i = 1; i < w.bodies.size(); ++i) w.substepStart[i] = {w.bodies[i].velocity, w.bodies[i].angularVelocity};
 }
 
-/// The solver-body record of dynamic body @p index, made on first use: its
-/// mass, and its world inertia and inverse inertia, once per body per step.
-std::uint32_t recordOf(SolverWorkspace& w, std::uint32_t index) {
-    std::uint32_t& record = w.bodyRecord[index];
-    if (record == kStaticSolverBody) {
-        const DynamicObject& body = w.dynamics[index];
-        record = static_cast<std::uint32_t>(w.bodies.size());
+/// Gives every dynamic body in a contact its solver-body record, numbered in
+/// the order of the World's dynamic array: its mass, and its world inertia and
+/// inverse inertia, once per body per step. In that order the copies in and
+/// out of the records (copyVelocitiesIn(), copyVelocitiesOut(),
+/// warmStartFromLastSubstep()) walk the objects front to back, as the memory
+/// prefetcher likes, instead of jumping about a many-megabyte array in the
+/// order the contacts happen to meet their bodies.
+void makeBodyRecords(const BodySet& bodies, std::span<const Contact> contacts, SolverWorkspace& w) {
+    constexpr std::uint32_t kInContact = 1;  // any value but kStaticSolverBody, overwritten below
+    w.bodyRecord.assign(bodies.dynamics.size(), kStaticSolverBody);
+    for (const Contact& contact : contacts) {
+        w.bodyRecord[contact.a] = kInContact;
+        if (contact.b.kind == BodyKind::Dynamic) w.bodyRecord[contact.b.index] = kInContact;
+    }
+    w.bodies.clear();
+    w.inertias.clear();
+    w.bodies.emplace_back();  // record 0: the static body (m⁻¹ = 0, I⁻¹ = 0, at rest)
+    w.inertias.emplace_back();
+    for (std::uint32_t index = 0; index < w.bodyRecord.size(); ++index) {
+        if (w.bodyRecord[index] == kStaticSolverBody) continue;
+        const DynamicObject& body = bodies.dynamics[index];
+        w.bodyRecord[index] = static_cast<std::uint32_t>(w.bodies.size());
         // A ball's I⁻¹ is the same about every axis (round contacts use it as a number); a box's is a tensor.
         const Real ballInverseInertia = body.shape == Shape::Sphere ? body.inverseInertiaBody.x : Real(0);
         w.bodies.push_back({body.velocity, body.angularVelocity, body.inverseMass, ballInverseInertia});
         w.inertias.push_back({worldInverseInertia(body.orientation, body.inverseInertiaBody),
                               worldInertia(body.orientation, body.inertiaBody), index});
     }
-    return record;
 }
 
 /// The three rows of a round contact, computed from its normal, tangents and
@@ -90,7 +104,7 @@ SolverContact prepareOne(const BodySet& bodies, const Contact& contact, Real h, 
     SolverContact c;
     const DynamicObject& a = bodies.dynamics[contact.a];
     const ContactBody other = contactBody(bodies, contact.b, contact.point);
-    c.bodyA = recordOf(w, contact.a);
+    c.bodyA = w.bodyRecord[contact.a];
     c.poseA = contact.a;
     start = ContactStart{};
     start.indexA = contact.a;
@@ -108,7 +122,7 @@ SolverContact prepareOne(const BodySet& bodies, const Contact& contact, Real h, 
     const Quat* orientationB = nullptr;
     c.poseB = planePose(bodies);
     if (other.dynamic) {
-        c.bodyB = recordOf(w, contact.b.index);
+        c.bodyB = w.bodyRecord[contact.b.index];
         c.poseB = contact.b.index;
         centreB = other.dynamic->position;
         orientationB = &other.dynamic->orientation;
@@ -229,12 +243,7 @@ Real currentSeparation(const SolverContact& c, const SolverWorkspace& w) {
 void prepareContacts(const BodySet& bodies, std::span<const Contact> contacts, Real h, bool warmStart,
                      SolverWorkspace& workspace) {
     workspace.dynamics = bodies.dynamics;
-    // Records are made as the contacts first meet their bodies; last step's are dropped.
-    workspace.bodyRecord.assign(bodies.dynamics.size(), kStaticSolverBody);
-    workspace.bodies.clear();
-    workspace.inertias.clear();
-    workspace.bodies.emplace_back();  // record 0: the static body (m⁻¹ = 0, I⁻¹ = 0, at rest)
-    workspace.inertias.emplace_back();
+    makeBodyRecords(bodies, contacts, workspace);  // last step's records are dropped
     workspace.contacts.resize(contacts.size());
     workspace.starts.resize(contacts.size());
     workspace.rows.clear();
