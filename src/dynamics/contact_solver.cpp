@@ -82,15 +82,12 @@ struct StoredRows {
     }
 };
 
-/// Calls @p work with contact @p c's rows, round or stored: the one branch per
-/// contact a pass takes on the kind of contact.
+/// Calls @p work with contact @p c's rows, round or stored, and returns what it
+/// returns: the one branch per contact a pass takes on the kind of contact.
 template <class Work>
-inline void withRows(const SolverContact& c, const SolverWorkspace& w, Work&& work) {
-    if (c.rows == kRoundContact) {
-        work(RoundRows{c});
-    } else {
-        work(StoredRows{c, w.rows[c.rows]});
-    }
+inline decltype(auto) withRows(const SolverContact& c, const SolverWorkspace& w, Work&& work) {
+    if (c.rows == kRoundContact) return work(RoundRows{c});
+    return work(StoredRows{c, w.rows[c.rows]});
 }
 
 /// Index of the fixed pose at the origin (the last one): a plane's "centre".
@@ -153,10 +150,8 @@ SolverContact prepareOne(const BodySet& bodies, const Contact& contact, Real h, 
     const SolverBody& bodyB = w.bodies[c.bodyB];
     tangentBasis(c.normal, c.tangent);
     // J's angular parts and K, once per step: r, d and I⁻¹ are fixed through it (solver_body.hpp).
-    // A ball on a ball or a plane: levers along n, rows computed by the pass.
-    const bool round = a.shape == Shape::Sphere && (contact.b.kind == BodyKind::Plane ||
-                                                    (other.dynamic && other.dynamic->shape == Shape::Sphere));
-    if (round) {
+    // A ball on a ball or a plane (no anchor turns, no surface moves): levers along n, rows computed by the pass.
+    if (!turnsA && !turnsB && contact.b.kind != BodyKind::Kinematic) {
         c.leverA = glm::dot(start.rA, c.normal);
         c.leverB = glm::dot(start.rB, c.normal);
         c.normalMass = Real(1) / (bodyA.inverseMass + bodyB.inverseMass);
@@ -181,8 +176,7 @@ SolverContact prepareOne(const BodySet& bodies, const Contact& contact, Real h, 
     // The bounce, decided before any impulse (contact_solver.hpp): the
     // approach speed when the surfaces meet, v_c² = v_n² + 2·a·C, with a the
     // approach acceleration −(a_B − a_A)·n.
-    Real vn = 0;
-    withRows(c, w, [&](const auto& rows) { vn = rows.normalVelocity(bodyA, bodyB); });
+    const Real vn = withRows(c, w, [&](const auto& rows) { return rows.normalVelocity(bodyA, bodyB); });
     const Real approachAcceleration = -glm::dot(other.acceleration - a.acceleration, c.normal);
     if (vn < 0) {
         start.approachAtTouch =

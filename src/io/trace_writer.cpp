@@ -380,6 +380,13 @@ Vec3 surfaceVelocityOfB(const World& world, const ContactStart& start) {
     return b.velocity + glm::cross(b.angularVelocity, start.rB);
 }
 
+/// v_n of a constraint now: B's material point minus A's along the normal, m/s (< 0: approaching).
+Real normalVelocityNow(const World& world, const SolverContact& c, const ContactStart& start) {
+    const DynamicObject& bodyA = world.dynamics()[start.indexA];
+    const Vec3 vA = bodyA.velocity + glm::cross(bodyA.angularVelocity, start.rA);
+    return glm::dot(surfaceVelocityOfB(world, start) - vA, c.normal);
+}
+
 }  // namespace
 
 void TraceObserver::writeSolve(const std::string& head, const World& world) {
@@ -390,12 +397,9 @@ void TraceObserver::writeSolve(const std::string& head, const World& world) {
         const std::string& a = bodies[start.indexA].name;
         const std::string& b = objectName(world, start.refB);
         if (!objectSelected(a) && !objectSelected(b)) continue;
-        const DynamicObject& bodyA = bodies[start.indexA];
-        const Vec3 vA = bodyA.velocity + glm::cross(bodyA.angularVelocity, start.rA);
-        const Vec3 vB = surfaceVelocityOfB(world, start);
         line(head, a + "|" + b,
              "j " + num(c.normalImpulse) + " N*s  j_t " + num(std::hypot(c.tangentImpulse[0], c.tangentImpulse[1])) +
-                 " N*s  j_max " + num(c.maxNormalImpulse) + " N*s  v_n " + num(glm::dot(vB - vA, c.normal)) + " m/s");
+                 " N*s  j_max " + num(c.maxNormalImpulse) + " N*s  v_n " + num(normalVelocityNow(world, c, start)) + " m/s");
     }
     writeMotion(head, world);
 }
@@ -422,12 +426,9 @@ void TraceObserver::writeRestitution(const std::string& head, const World& world
         const char* decision = c.maxNormalImpulse <= 0  ? "no (never pushed)"
                                : start.restitution <= 0 ? "no (resting, or e = 0)"
                                                         : "yes";
-        const DynamicObject& bodyA = bodies[start.indexA];
-        const Vec3 vA = bodyA.velocity + glm::cross(bodyA.angularVelocity, start.rA);
-        const Vec3 vB = surfaceVelocityOfB(world, start);
         line(head, a + "|" + b,
              "v_c " + num(start.approachAtTouch) + " m/s  e " + num(start.restitution) + "  bounce " + decision + "  j " +
-                 num(c.normalImpulse) + " N*s  j_max " + num(c.maxNormalImpulse) + " N*s  v_n " + num(glm::dot(vB - vA, c.normal)) + " m/s");
+                 num(c.normalImpulse) + " N*s  j_max " + num(c.maxNormalImpulse) + " N*s  v_n " + num(normalVelocityNow(world, c, start)) + " m/s");
     }
     for (std::size_t i = 0; i < world.joints().size(); ++i) {
         const Joint& joint = world.joints()[i];
