@@ -206,6 +206,45 @@ TEST_CASE("Trajectories are bit-identical with and without the plan on the confi
     }
 }
 
+TEST_CASE("Forces are worked out once a step unless a spring or an attractor follows the bodies", "[plan]") {
+    // Two balls dropping onto a floor under the sequential impulse (4 substeps), one of them on a
+    // spring or both pulled by an attractor. Gravity alone gives a = g and τ = 0 whatever the state,
+    // so the substeps after the first need not work them out again; a spring's or an attractor's pull
+    // changes as the bodies move, and skipping it would change the trajectory (requireSameTrajectory
+    // compares it bit for bit with StepPlan=Off, which works the forces out in every substep).
+    constexpr int kSubsteps = 4;
+    constexpr int kSteps = 90;  // 1.5 s: both balls land and roll
+    Scene scene = test::emptyScene();
+    scene.settings.substeps = kSubsteps;
+    scene.planes = {test::ground()};
+    scene.dynamics = {test::sphere("a", Vec3(0, 2, 0), Vec3(1, 0, 0)), test::sphere("b", Vec3(0.3, 3.2, 0.1))};
+    std::uint64_t forceRunsPerStep = 0;
+    SECTION("gravity only: once a step") {
+        CHECK_FALSE(planOf(scene).substepForces.runs);
+        forceRunsPerStep = 1;
+    }
+    SECTION("a spring: every substep") {
+        Spring spring;
+        spring.name = "spring";
+        spring.bodyA = 1;
+        spring.anchorB = Vec3(0.3, 4, 0.1);
+        spring.stiffness = 2000;
+        spring.restLength = 1;
+        scene.springs = {spring};
+        CHECK(planOf(scene).substepForces.runs);
+        forceRunsPerStep = kSubsteps;
+    }
+    SECTION("an attractor: every substep") {
+        scene.attractors = {Attractor{"sun", Vec3(2, 1, 0), 40}};
+        CHECK(planOf(scene).substepForces.runs);
+        forceRunsPerStep = kSubsteps;
+    }
+    requireSameTrajectory(scene, kSteps);
+    World world(scene);
+    for (int i = 0; i < kSteps; ++i) world.step();
+    CHECK(world.stageRecords()[static_cast<std::size_t>(Stage::ApplyForces)].runs == forceRunsPerStep * kSteps);
+}
+
 TEST_CASE("A sleeping tower is bit-identical with and without the plan, and the plan saves its idle steps", "[plan]") {
     Scene tower = configScene("lesson08_tower.scene");
     tower.settings.sleeping = true;  // the file turns sleep off so every step is solved

@@ -75,6 +75,14 @@ PlanDecision rotationOf(const PlanInputs& in) {
     return skip("skipped: only spheres, no spin, no friction, no torque: still spheres skip the angular update");
 }
 
+/// Forces that depend on where the bodies are must follow them through the substeps.
+PlanDecision substepForcesOf(const PlanInputs& in) {
+    if (in.settings.solver == SolverKind::Impulse) return skip("not in the Impulse pipeline (one step, one force evaluation)");
+    if (!in.springs.empty()) return run("runs: springs pull by where their ends are, which changes every substep");
+    if (!in.attractors.empty()) return run("runs: attractors pull by where a body is, which changes every substep");
+    return skip("skipped: only uniform forces (gravity, ConstantAcceleration): the step's a and torque hold for every substep");
+}
+
 PlanDecision jointSolverOf(const PlanInputs& in) {
     if (in.settings.solver == SolverKind::Impulse) return skip("skipped: the Impulse solver has no joints");
     if (in.joints.empty()) return skip("skipped: no joints in the scene");
@@ -224,6 +232,7 @@ StepPlan makeStepPlan(const PlanInputs& in) {
         plan.boxBoxSat = boxBoxOf(in, false);  // what the narrowphase does, plan or not
         plan.manifoldClipping = boxBoxOf(in, true);
         plan.rotation = kOff;
+        plan.substepForces = in.settings.solver == SolverKind::SequentialImpulse ? kOff : substepForcesOf(in);
         if (in.settings.solver == SolverKind::SequentialImpulse) plan.jointSolver = kOff;
         plan.idleSkip = skip("off: StepPlan=Off solves every step");
     } else {
@@ -231,6 +240,7 @@ StepPlan makeStepPlan(const PlanInputs& in) {
         plan.boxBoxSat = boxBoxOf(in, false);
         plan.manifoldClipping = boxBoxOf(in, true);
         plan.rotation = rotationOf(in);
+        plan.substepForces = substepForcesOf(in);
         plan.idleSkip = idleSkipOf(in);
     }
     for (std::size_t i = 0; i < kStageCount; ++i) plan.stages[i] = run(runReason(static_cast<Stage>(i), plan.enabled));
@@ -261,8 +271,11 @@ std::string describeStepPlan(const StepPlan& plan) {
         inSubsteps = substep;
         const std::string name = std::string(substep ? "  " : "") + stageName(slot.stage);
         PlanDecision decision = plan.stage(slot.stage);
+        // apply-forces again in later substeps: only when the forces can change within a step
+        const bool laterSubsteps = slot.repeat == StageRepeat::LaterSubsteps;
+        if (laterSubsteps && decision.runs && !plan.substepForces.runs) decision = plan.substepForces;
         std::string reason = decision.reason;
-        if (slot.repeat == StageRepeat::LaterSubsteps) reason += " (again from substep 2 on)";
+        if (laterSubsteps && decision.runs) reason += " (again from substep 2 on)";
         decision.reason = reason.c_str();
         line(name.c_str(), decision);
     }
@@ -278,6 +291,7 @@ std::string describeStepPlan(const StepPlan& plan) {
     line("box-box SAT", plan.boxBoxSat);
     line("manifold clipping", plan.manifoldClipping);
     line("rotation", plan.rotation);
+    line("forces per substep", plan.substepForces);
     line("joint solver", plan.jointSolver);
     line("idle step skip", plan.idleSkip);
     text += "  broadphase kind       ";

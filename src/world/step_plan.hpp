@@ -23,6 +23,7 @@
 #include <string>
 
 #include "dynamics/joints/joint.hpp"
+#include "forces/attractor.hpp"
 #include "forces/spring.hpp"
 #include "objects/game_object.hpp"
 #include "world/stages.hpp"
@@ -71,6 +72,7 @@ struct StepPlan {
     PlanDecision boxBoxSat;        ///< Will the narrowphase ever run the box–box separating-axis test?
     PlanDecision manifoldClipping; ///< Will it clip a box face against another (the second half of box–box)?
     PlanDecision rotation;         ///< Can any body start to turn? If not, still spheres skip the angular update.
+    PlanDecision substepForces;    ///< Sequential impulse: are the forces worked out again in every substep after the first?
     PlanDecision jointSolver;      ///< Do the joint calls (prepare, warm start, solve, break) run?
     PlanDecision idleSkip;         ///< Does a step with nothing awake and nothing moving return at once?
     SolverKind solver = SolverKind::SequentialImpulse; ///< The pipeline the scene runs (pipelineOrder()).
@@ -91,6 +93,7 @@ struct PlanInputs {
     std::span<const KinematicsObject> kinematics; ///< Prescribed-motion bodies.
     std::span<const CollisionPlane> planes;       ///< Infinite planes.
     std::span<const Spring> springs;              ///< Springs (their anchors may apply torque).
+    std::span<const Attractor> attractors;        ///< Attractors (their pull depends on where a body is).
     std::span<const Joint> joints;                ///< Joints, broken ones included.
 };
 
@@ -119,6 +122,14 @@ struct PlanInputs {
 ///   is, and I⁻¹·0 = 0). Because that check is made per body, a push from
 ///   outside (the viewer's mouse, which applies torque) or the rounding of
 ///   a lever arm cannot be lost: such a body gets the full update.
+/// - **Forces in later substeps** (sequential impulse): apply-forces runs
+///   before the broadphase, and again at the start of every substep after
+///   the first, because a spring's or an attractor's pull depends on where
+///   the bodies have moved to. With neither, every body's acceleration is
+///   g + its ConstantAcceleration and its torque is zero, whatever its state,
+///   so working them out again writes the very numbers already there; only
+///   the step's first apply-forces runs. Nothing else in a step writes a or τ
+///   (Verlet evaluates the same uniform forces inside its own step).
 /// - **Joint solver**: with no joints, every joint call loops over nothing.
 /// - **Moving kinematic bodies**: a kinematic body with zero velocity and
 ///   angular velocity moves by h·0 and turns by a zero rotation, so the stage is skipped.

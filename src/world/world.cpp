@@ -125,7 +125,7 @@ World::World(Scene scene)
 
 /// The step plan from what the World holds now (src/world/step_plan.cpp); it allocates nothing.
 void World::replan() {
-    plan_ = makeStepPlan({settings_, dynamics_, kinematics_, planes_, springs_, joints_});
+    plan_ = makeStepPlan({settings_, dynamics_, kinematics_, planes_, springs_, attractors_, joints_});
     for (DynamicObject& body : dynamics_) body.canTurn = plan_.rotation.runs;  // read by the integrators
     planStale_ = false;
 }
@@ -259,7 +259,8 @@ void World::stepWithSequentialImpulses() {
                                             settings_.contactDampingRatio, hs);
     const JointSolverSettings jointSettings = jointSolverSettings(settings_, hs);
 
-    // 1. Forces → accelerations (src/forces/apply_forces.cpp); again at every substep.
+    // 1. Forces → accelerations (src/forces/apply_forces.cpp); again at every substep when
+    //    springs or attractors make them depend on where the bodies are (step_plan.hpp).
     //    How far each body can move this step sets how far ahead contacts are looked for.
     runStage(Stage::ApplyForces, [&] {
         forces(dynamics_);
@@ -293,7 +294,7 @@ void World::stepWithSequentialImpulses() {
     for (int substep = 0; substep < settings_.substeps; ++substep) {
         substep_ = substep;  // for the observer's StageEvent
         // 5. Free flight for h_s (src/integrators/*.cpp, kinematic_motion.cpp)
-        if (substep > 0) runStage(Stage::ApplyForces, [&] { forces(dynamics_); });
+        if (substep > 0 && plan_.substepForces.runs) runStage(Stage::ApplyForces, [&] { forces(dynamics_); });
         runStage(Stage::Integrate, [&] {
             // The solve measures separations from here (nothing to measure when it is skipped)
             if (plan_.runs(Stage::SolveConstraints)) recordPoses(bodies(), solverWorkspace_);
