@@ -249,8 +249,8 @@ TEST_CASE("A contact row is J: its J*v and its impulse are the point-impulse for
     // rows fails here, long before a stack would show it.
     const Quat boxTurn = glm::normalize(Quat(0.9, 0.2, -0.3, 0.1));
     const Vec3 boxInverseBody = Real(1) / solidBoxInertia(Real(2), Vec3(1, 0.5, 0.25));
-    SolverBodyInertia inertiaA{worldInverseInertia(boxTurn, boxInverseBody), Mat3(0), 0};
-    SolverBodyInertia inertiaB{Mat3(Real(1) / (Real(0.4) * Real(3) * Real(0.09))), Mat3(0), 1};  // sphere, 3 kg, r = 0.3 m
+    SolverBodyInertia inertiaA{worldInverseInertia(boxTurn, boxInverseBody), Mat3(0)};
+    SolverBodyInertia inertiaB{Mat3(Real(1) / (Real(0.4) * Real(3) * Real(0.09))), Mat3(0)};  // sphere, 3 kg, r = 0.3 m
     SolverBody a{Vec3(0.3, -1.2, 0.5), Vec3(2.0, -0.7, 1.1), Real(1) / Real(2)};
     SolverBody b{Vec3(-0.4, 0.2, 0.9), Vec3(-1.5, 0.3, 0.8), Real(1) / Real(3)};
     const Vec3 rA(0.35, 0.2, -0.1);

@@ -35,8 +35,10 @@ void makeBodyRecords(const BodySet& bodies, std::span<const Contact> contacts, S
     }
     w.bodies.clear();
     w.inertias.clear();
+    w.recordBody.clear();
     w.bodies.emplace_back();  // record 0: the static body (m⁻¹ = 0, I⁻¹ = 0, at rest)
     w.inertias.emplace_back();
+    w.recordBody.push_back(0);  // never read: the loops over records start at 1
     for (std::uint32_t index = 0; index < w.bodyRecord.size(); ++index) {
         if (w.bodyRecord[index] == kStaticSolverBody) continue;
         const DynamicObject& body = bodies.dynamics[index];
@@ -45,7 +47,8 @@ void makeBodyRecords(const BodySet& bodies, std::span<const Contact> contacts, S
         const Real ballInverseInertia = body.shape == Shape::Sphere ? body.inverseInertiaBody.x : Real(0);
         w.bodies.push_back({body.velocity, body.angularVelocity, body.inverseMass, ballInverseInertia});
         w.inertias.push_back({worldInverseInertia(body.orientation, body.inverseInertiaBody),
-                              worldInertia(body.orientation, body.inertiaBody), index});
+                              worldInertia(body.orientation, body.inertiaBody)});
+        w.recordBody.push_back(index);
     }
 }
 
@@ -268,7 +271,7 @@ void recordPoses(const BodySet& bodies, SolverWorkspace& workspace) {
 
 void copyVelocitiesIn(SolverWorkspace& workspace) {
     for (std::size_t i = 1; i < workspace.bodies.size(); ++i) {
-        const DynamicObject& body = workspace.dynamics[workspace.inertias[i].body];
+        const DynamicObject& body = workspace.dynamics[workspace.recordBody[i]];
         workspace.bodies[i].velocity = body.velocity;
         workspace.bodies[i].angularVelocity = body.angularVelocity;
     }
@@ -277,10 +280,12 @@ void copyVelocitiesIn(SolverWorkspace& workspace) {
 void copyVelocitiesOut(SolverWorkspace& workspace) {
     for (std::size_t i = 1; i < workspace.bodies.size(); ++i) {
         const SolverBody& s = workspace.bodies[i];
-        DynamicObject& body = workspace.dynamics[workspace.inertias[i].body];
+        DynamicObject& body = workspace.dynamics[workspace.recordBody[i]];
         body.velocity = s.velocity;
-        // The passes changed ω by I⁻¹·ΔL with the step's world I⁻¹, so L changed by ΔL = I·Δω.
-        body.angularMomentum += workspace.inertias[i].inertia * (s.angularVelocity - body.angularVelocity);
+        // The passes changed ω by I⁻¹·ΔL with the step's world I⁻¹, so L changed by ΔL = I·Δω;
+        // for a ball I is the number 1/I⁻¹ its record carries.
+        const Vec3 turn = s.angularVelocity - body.angularVelocity;
+        body.angularMomentum += s.inverseInertia != Real(0) ? turn / s.inverseInertia : workspace.inertias[i].inertia * turn;
         body.angularVelocity = s.angularVelocity;
     }
 }
@@ -317,7 +322,7 @@ void warmStartFromLastSubstep(SolverWorkspace& workspace) {
         // What the contacts did to this body in the last substep: Σ_c λ_c·M⁻¹J_cᵀ (contact_solver.hpp).
         const Vec3 change = record.velocity - start.velocity;
         const Vec3 turn = record.angularVelocity - start.angularVelocity;
-        const DynamicObject& body = workspace.dynamics[workspace.inertias[i].body];
+        const DynamicObject& body = workspace.dynamics[workspace.recordBody[i]];
         start = {body.velocity, body.angularVelocity};
         record.velocity = body.velocity + change;
         record.angularVelocity = body.angularVelocity + turn;
@@ -398,7 +403,7 @@ void storeContactImpulses(std::span<const Contact> contacts, SolverWorkspace& wo
     std::swap(workspace.previousImpulses, workspace.currentImpulses);
     // ω was updated alongside L with the step's fixed I⁻¹; make them agree exactly again.
     // Once per body in a contact: the result depends only on L and the orientation.
-    for (std::size_t i = 1; i < workspace.bodies.size(); ++i) updateAngularVelocity(workspace.dynamics[workspace.inertias[i].body]);
+    for (std::size_t i = 1; i < workspace.bodies.size(); ++i) updateAngularVelocity(workspace.dynamics[workspace.recordBody[i]]);
 }
 
 }  // namespace stepwise

@@ -173,7 +173,8 @@ struct SolverWorkspace {
     std::vector<ContactRows> rows;               ///< Rows of the contacts that are not round (boxes, kinematic bodies).
     std::vector<TurningAnchors> turningAnchors;  ///< Anchors of the contacts with a turning anchor (boxes).
     std::vector<SolverBody> bodies;              ///< Record 0 static, then one per dynamic body in a contact (solver_body.hpp).
-    std::vector<SolverBodyInertia> inertias;     ///< The same records' inertia and body index (cold: prepare and write-back).
+    std::vector<SolverBodyInertia> inertias;     ///< The same records' inertia (cold: prepare, and a box's write-back).
+    std::vector<std::uint32_t> recordBody;       ///< Per record: its body's index in the World's dynamic array (the copies in and out).
     std::vector<std::uint32_t> bodyRecord;       ///< Per dynamic body: its record in `bodies`, or kStaticSolverBody if none.
     std::span<DynamicObject> dynamics;           ///< The World's dynamic bodies, as prepareContacts() saw them (copyVelocitiesIn(), copyVelocitiesOut()).
     std::vector<CachedImpulse> previousImpulses; ///< Last step's impulses, sorted by key.

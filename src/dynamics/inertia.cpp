@@ -60,6 +60,13 @@ void initialiseMassProperties(DynamicObject& body) {
 }
 
 void updateAngularVelocity(DynamicObject& body) {
+    const Vec3& d = body.inverseInertiaBody;
+    // Three equal moments: ω = s·L in every orientation, the same numbers the tensor
+    // product gives (rotateDiagonal() returns s·E), without building it every substep.
+    if (d.x == d.y && d.y == d.z) {
+        body.angularVelocity = d.x * body.angularMomentum;
+        return;
+    }
     body.angularVelocity = worldInverseInertia(body.orientation, body.inverseInertiaBody) * body.angularMomentum;
 }
 

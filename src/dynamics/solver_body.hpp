@@ -58,15 +58,16 @@ struct SolverBody {
     Real inverseInertia = 0;
 };
 
-/// @brief What only prepare and the write-back read of a body: its inertia for the step, and which body it is.
+/// @brief What only prepare and a box's write-back read of a body: its inertia for the step.
 ///
 /// The pass changes ω only. The angular momentum follows at the write-back,
 /// ΔL = I_world·Δω (with the same world tensor the pass used), once per body
-/// instead of once per row of every contact.
+/// instead of once per row of every contact. A ball's I is one number, so its
+/// write-back needs only the record (ΔL = Δω / I⁻¹) and never reads these
+/// 144 bytes.
 struct SolverBodyInertia {
     Mat3 inverseInertia{0};  ///< World I⁻¹ at the start of the step, 1/(kg·m²) (zero: static).
     Mat3 inertia{0};         ///< World I at the start of the step, kg·m² (zero: static).
-    std::uint32_t body = 0;  ///< Index of the body in the World's dynamic array.
 };
 
 /// @brief One row of a contact's Jacobian: what an impulse λ along a unit direction d does to A and B.
