@@ -28,8 +28,9 @@ bool isFinite(Real x) { return std::isfinite(x); }
 /// only those after the stage: a stage that sets forces, or only velocities,
 /// does not pay for reading the whole body, which at 64k bodies is tens of
 /// megabytes several times a substep. A stage that writes a quantity outside
-/// its set would have a non-finite value named one stage late (every
-/// integrate checks everything), never missed.
+/// its set would have a non-finite value named late, never missed: a non-finite
+/// force reaches the velocity at the next integrate, and the stages that run
+/// once a step check everything.
 enum StateParts : unsigned {
     kPose = 1u << 0,    ///< position, orientation
     kMotion = 1u << 1,  ///< velocity, angular velocity, angular momentum
@@ -37,9 +38,11 @@ enum StateParts : unsigned {
     kEverything = kPose | kMotion | kForces,
 };
 
-unsigned statePartsWrittenBy(Stage stage) {
+unsigned statePartsWrittenBy(Stage stage, IntegratorKind integrator) {
     switch (stage) {
         case Stage::ApplyForces: return kForces;
+        // Verlet works the forces out at the new positions inside its step; the others only move
+        case Stage::Integrate: return integrator == IntegratorKind::Verlet ? kEverything : kPose | kMotion;
         case Stage::Broadphase:
         case Stage::Narrowphase:
         case Stage::PrepareConstraints:  // wakes islands: flags, not numbers
@@ -48,7 +51,7 @@ unsigned statePartsWrittenBy(Stage stage) {
         case Stage::ResolveImpulses:
         case Stage::RelaxConstraints:
         case Stage::Restitution: return kMotion;
-        default: return kEverything;  // integrate (Verlet evaluates forces too), and the once-a-step stages
+        default: return kEverything;  // the once-a-step stages
     }
 }
 
@@ -296,8 +299,10 @@ void World::stepWithSequentialImpulses() {
         // 5. Free flight for h_s (src/integrators/*.cpp, kinematic_motion.cpp)
         if (substep > 0 && plan_.substepForces.runs) runStage(Stage::ApplyForces, [&] { forces(dynamics_); });
         runStage(Stage::Integrate, [&] {
-            // The solve measures separations from here (nothing to measure when it is skipped)
-            if (plan_.runs(Stage::SolveConstraints)) recordPoses(bodies(), solverWorkspace_);
+            // The solve measures separations from here (nothing to measure when it is skipped). From the
+            // second substep on, the last relax recorded these very poses: nothing has moved since.
+            const bool posesCurrent = substep > 0 && plan_.runs(Stage::RelaxConstraints);
+            if (plan_.runs(Stage::SolveConstraints) && !posesCurrent) recordPoses(bodies(), solverWorkspace_);
             integrate(hs, forces);
         });
         runStage(Stage::MoveKinematics, [&] { moveKinematics(kinematics_, hs); });
@@ -409,7 +414,7 @@ void World::checkFinite(Stage stage) const {
                               std::string("non-finite ") + quantity +
                                   " (check masses, time step and forces in the scene)");
     };
-    const unsigned parts = statePartsWrittenBy(stage);
+    const unsigned parts = statePartsWrittenBy(stage, settings_.integrator);
     if (parts != 0) {
         for (const DynamicObject& body : dynamics_) {
             if (finiteProbe(body, parts) == Real(0)) continue;  // all finite: nothing to name
