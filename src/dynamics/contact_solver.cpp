@@ -36,9 +36,11 @@ void makeBodyRecords(const BodySet& bodies, std::span<const Contact> contacts, S
     w.bodies.clear();
     w.inertias.clear();
     w.recordBody.clear();
+    w.ballInertia.clear();
     w.bodies.emplace_back();  // record 0: the static body (m⁻¹ = 0, I⁻¹ = 0, at rest)
     w.inertias.emplace_back();
     w.recordBody.push_back(0);  // never read: the loops over records start at 1
+    w.ballInertia.push_back(0);
     for (std::uint32_t index = 0; index < w.bodyRecord.size(); ++index) {
         if (w.bodyRecord[index] == kStaticSolverBody) continue;
         const DynamicObject& body = bodies.dynamics[index];
@@ -49,6 +51,7 @@ void makeBodyRecords(const BodySet& bodies, std::span<const Contact> contacts, S
         w.inertias.push_back({worldInverseInertia(body.orientation, body.inverseInertiaBody),
                               worldInertia(body.orientation, body.inertiaBody)});
         w.recordBody.push_back(index);
+        w.ballInertia.push_back(body.shape == Shape::Sphere ? body.inertiaBody.x : Real(0));
     }
 }
 
@@ -283,9 +286,10 @@ void copyVelocitiesOut(SolverWorkspace& workspace) {
         DynamicObject& body = workspace.dynamics[workspace.recordBody[i]];
         body.velocity = s.velocity;
         // The passes changed ω by I⁻¹·ΔL with the step's world I⁻¹, so L changed by ΔL = I·Δω;
-        // for a ball I is the number 1/I⁻¹ its record carries.
+        // a ball's I is one number (the same product as with its tensor I·E, without reading it).
         const Vec3 turn = s.angularVelocity - body.angularVelocity;
-        body.angularMomentum += s.inverseInertia != Real(0) ? turn / s.inverseInertia : workspace.inertias[i].inertia * turn;
+        const Real ballInertia = workspace.ballInertia[i];
+        body.angularMomentum += ballInertia != Real(0) ? ballInertia * turn : workspace.inertias[i].inertia * turn;
         body.angularVelocity = s.angularVelocity;
     }
 }

@@ -175,6 +175,7 @@ struct SolverWorkspace {
     std::vector<SolverBody> bodies;              ///< Record 0 static, then one per dynamic body in a contact (solver_body.hpp).
     std::vector<SolverBodyInertia> inertias;     ///< The same records' inertia (cold: prepare, and a box's write-back).
     std::vector<std::uint32_t> recordBody;       ///< Per record: its body's index in the World's dynamic array (the copies in and out).
+    std::vector<Real> ballInertia;               ///< Per record: a ball's I, kg·m², for ΔL = I·Δω at the write-back (zero: a box).
     std::vector<std::uint32_t> bodyRecord;       ///< Per dynamic body: its record in `bodies`, or kStaticSolverBody if none.
     std::span<DynamicObject> dynamics;           ///< The World's dynamic bodies, as prepareContacts() saw them (copyVelocitiesIn(), copyVelocitiesOut()).
     std::vector<CachedImpulse> previousImpulses; ///< Last step's impulses, sorted by key.

@@ -62,9 +62,9 @@ struct SolverBody {
 ///
 /// The pass changes ω only. The angular momentum follows at the write-back,
 /// ΔL = I_world·Δω (with the same world tensor the pass used), once per body
-/// instead of once per row of every contact. A ball's I is one number, so its
-/// write-back needs only the record (ΔL = Δω / I⁻¹) and never reads these
-/// 144 bytes.
+/// instead of once per row of every contact. A ball's I is one number, kept in
+/// a small array of its own (SolverWorkspace::ballInertia), so its write-back
+/// never reads these 144 bytes.
 struct SolverBodyInertia {
     Mat3 inverseInertia{0};  ///< World I⁻¹ at the start of the step, 1/(kg·m²) (zero: static).
     Mat3 inertia{0};         ///< World I at the start of the step, kg·m² (zero: static).
