@@ -45,13 +45,15 @@ void makeBodyRecords(const BodySet& bodies, std::span<const Contact> contacts, S
         if (w.bodyRecord[index] == kStaticSolverBody) continue;
         const DynamicObject& body = bodies.dynamics[index];
         w.bodyRecord[index] = static_cast<std::uint32_t>(w.bodies.size());
-        // A ball's I⁻¹ is the same about every axis (round contacts use it as a number); a box's is a tensor.
-        const Real ballInverseInertia = body.shape == Shape::Sphere ? body.inverseInertiaBody.x : Real(0);
-        w.bodies.push_back({body.velocity, body.angularVelocity, body.inverseMass, ballInverseInertia});
+        // A ball's I and I⁻¹ are the same about every axis: numbers for its round contacts and
+        // its write-back (zero marks a box, whose inertia is a tensor).
+        const bool ball = body.shape == Shape::Sphere;
+        w.bodies.push_back({body.velocity, body.angularVelocity, body.inverseMass,
+                            ball ? body.inverseInertiaBody.x : Real(0)});
         w.inertias.push_back({worldInverseInertia(body.orientation, body.inverseInertiaBody),
                               worldInertia(body.orientation, body.inertiaBody)});
         w.recordBody.push_back(index);
-        w.ballInertia.push_back(body.shape == Shape::Sphere ? body.inertiaBody.x : Real(0));
+        w.ballInertia.push_back(ball ? body.inertiaBody.x : Real(0));
     }
 }
 
