@@ -29,10 +29,12 @@ Mat3 parallelAxis(const Mat3& inertiaAboutCentre, Real mass, const Vec3& offset)
 }
 
 namespace {
+/// Three equal moments (a sphere, a cube): R·(s·E)·Rᵀ = s·R·Rᵀ = s·E in every orientation.
+bool equalMoments(const Vec3& diagonal) { return diagonal.x == diagonal.y && diagonal.y == diagonal.z; }
+
 Mat3 rotateDiagonal(const Quat& orientation, const Vec3& diagonal) {
-    // Three equal moments (a sphere, a cube): R·(s·E)·Rᵀ = s·R·Rᵀ = s·E in every
-    // orientation, so the rotation (two 3×3 products) is skipped.
-    if (diagonal.x == diagonal.y && diagonal.y == diagonal.z) return Mat3(diagonal.x);
+    // The same in every orientation: the rotation (two 3×3 products) is skipped.
+    if (equalMoments(diagonal)) return Mat3(diagonal.x);
     const Mat3 r = glm::mat3_cast(orientation);
     Mat3 d(0);
     d[0][0] = diagonal.x;
@@ -60,11 +62,10 @@ void initialiseMassProperties(DynamicObject& body) {
 }
 
 void updateAngularVelocity(DynamicObject& body) {
-    const Vec3& d = body.inverseInertiaBody;
     // Three equal moments: ω = s·L in every orientation, the same numbers the tensor
     // product gives (rotateDiagonal() returns s·E), without building it every substep.
-    if (d.x == d.y && d.y == d.z) {
-        body.angularVelocity = d.x * body.angularMomentum;
+    if (equalMoments(body.inverseInertiaBody)) {
+        body.angularVelocity = body.inverseInertiaBody.x * body.angularMomentum;
         return;
     }
     body.angularVelocity = worldInverseInertia(body.orientation, body.inverseInertiaBody) * body.angularMomentum;

@@ -57,16 +57,15 @@ unsigned statePartsWrittenBy(Stage stage, IntegratorKind integrator) {
 
 /// x·0 is 0 for a finite x and NaN for ±∞ or NaN, and a sum of zeros cannot overflow.
 Real zeroIfFinite(const Vec3& v) { return v.x * Real(0) + v.y * Real(0) + v.z * Real(0); }
+/// The same for the four components of a quaternion.
+Real zeroIfFinite(const Quat& q) { return q.w * Real(0) + q.x * Real(0) + q.y * Real(0) + q.z * Real(0); }
 
 /// Zero exactly when the @p parts of the body's state are finite. checkFinite()
 /// runs after every stage, several times per substep, so it first takes this
 /// branch-free sum and searches component by component only when it fails.
 Real finiteProbe(const DynamicObject& body, unsigned parts) {
     Real probe = 0;
-    if (parts & kPose) {
-        const Quat& q = body.orientation;
-        probe += zeroIfFinite(body.position) + (q.w * Real(0) + q.x * Real(0) + q.y * Real(0) + q.z * Real(0));
-    }
+    if (parts & kPose) probe += zeroIfFinite(body.position) + zeroIfFinite(body.orientation);
     if (parts & kMotion) {
         probe += zeroIfFinite(body.velocity) + zeroIfFinite(body.angularVelocity) + zeroIfFinite(body.angularMomentum);
     }
