@@ -260,6 +260,7 @@ void prepareContacts(const BodySet& bodies, std::span<const Contact> contacts, R
             for (int k = 0; k < 2; ++k) c.tangentImpulse[k] = glm::dot(cached->frictionImpulse, c.tangent[k]);
         }
     }
+    batchRoundContacts(workspace);
 }
 
 void recordPoses(const BodySet& bodies, SolverWorkspace& workspace) {
@@ -305,11 +306,14 @@ void warmStartContacts(SolverWorkspace& workspace, bool accumulate) {
             c.normalImpulse = 0;
             c.tangentImpulse[0] = c.tangentImpulse[1] = 0;
         }
+        clearRoundContactImpulses(workspace);
         return;
     }
     std::vector<SolverBody>& bodies = workspace.bodies;
     rememberSubstepStart(workspace);
-    for (const SolverContact& c : workspace.contacts) {
+    warmStartRoundContacts(workspace);
+    for (const std::uint32_t index : workspace.otherContacts) {
+        const SolverContact& c = workspace.contacts[index];
         SolverBody a = bodies[c.bodyA];  // copies: kept in registers, stored once (solver_body.hpp)
         SolverBody b = bodies[c.bodyB];
         withRows(c, workspace, [&](const auto& rows) {
@@ -338,7 +342,9 @@ void warmStartFromLastSubstep(SolverWorkspace& workspace) {
 void solveContacts(SolverWorkspace& workspace, const ContactSolverSettings& settings, bool useBias) {
     const Real inverseSubstep = Real(1) / settings.substep;
     std::vector<SolverBody>& bodies = workspace.bodies;
-    for (SolverContact& c : workspace.contacts) {
+    solveRoundContacts(workspace, settings, useBias);  // four at a time (round_contact_lanes.hpp)
+    for (const std::uint32_t index : workspace.otherContacts) {
+        SolverContact& c = workspace.contacts[index];
         // Normal: λ = −K⁻¹·s_m·(v_n + bias) − s_i·λ_acc (softness.hpp).
         const Real separation = currentSeparation(c, workspace);
         Real bias = 0;
@@ -375,6 +381,7 @@ void solveContacts(SolverWorkspace& workspace, const ContactSolverSettings& sett
 }
 
 void applyRestitution(SolverWorkspace& workspace) {
+    syncRoundContacts(workspace);
     for (std::size_t i = 0; i < workspace.contacts.size(); ++i) {
         SolverContact& c = workspace.contacts[i];
         const ContactStart& start = workspace.starts[i];

@@ -47,6 +47,7 @@
 
 #include "collision/contact.hpp"
 #include "dynamics/impulse_resolver.hpp"
+#include "dynamics/round_contact_lanes.hpp"
 #include "dynamics/softness.hpp"
 #include "dynamics/solver_body.hpp"
 #include "world/body_set.hpp"
@@ -88,8 +89,16 @@ inline constexpr std::uint32_t kRoundContact = 0xffffffffu;
 /// ℓ_B = r_B·n (solver_body.hpp, "Rows of a round contact"). Such a *round*
 /// contact has `rows == kRoundContact` and a pass computes its rows; any other
 /// (a box, a kinematic body) keeps them in the side array
-/// SolverWorkspace::rows, which a pass reads at index `rows`. The pass stays
-/// one loop in one order; only the way it gets a contact's rows differs.
+/// SolverWorkspace::rows, which a pass reads at index `rows`.
+///
+/// **Four at a time.** Round contacts are also the ones a pass can solve four
+/// at a time in SIMD lanes: once a step they are coloured so that no two of a
+/// colour share a dynamic body, and packed four of a colour to a RoundBatch
+/// (round_contact_lanes.hpp). A pass solves the batches colour by colour,
+/// then the other contacts one at a time in their order (otherContacts).
+/// Through the substeps a round contact's impulses live in its batch; they
+/// are copied back here before the bounce and whenever a StepObserver looks
+/// (syncRoundContacts()).
 ///
 /// **The separation without the contact point.** An anchor either turns with
 /// its body (a box's material point: p = c + R·l, with l fixed in the body)
@@ -186,6 +195,13 @@ struct SolverWorkspace {
     std::vector<BodyVelocity> substepStart;      ///< Per record: v and ω before this substep's warm start.
     std::vector<Vec3> velocityBefore;            ///< Per dynamic body: v before this substep's solve, m/s.
     std::vector<Vec3> angularVelocityBefore;     ///< Per dynamic body: ω before this substep's solve, rad/s.
+    /// The round contacts, four of one colour per batch (round_contact_lanes.hpp). Through the
+    /// substeps their impulses live here; syncRoundContacts() copies them into `contacts`.
+    std::vector<RoundBatch> roundBatches;
+    std::vector<std::uint32_t> otherContacts;    ///< The contacts solved one at a time, in order: stored rows, and round ones left without a colour.
+    std::vector<std::uint32_t> colourMask;       ///< Per record: the colours its contacts took (scratch of batchRoundContacts()).
+    std::vector<std::uint32_t> colourOf;         ///< Per contact: its colour (scratch).
+    bool roundBatchesAhead = false;              ///< The batches hold newer impulses than `contacts` (syncRoundContacts()).
 };
 
 /// @brief Builds one SolverContact per contact: anchors, effective masses,
@@ -255,7 +271,8 @@ void warmStartContacts(SolverWorkspace& workspace, bool accumulate);
 /// the velocities too), and not without accumulated impulses.
 void warmStartFromLastSubstep(SolverWorkspace& workspace);
 
-/// @brief One Gauss–Seidel pass over all contacts.
+/// @brief One Gauss–Seidel pass over all contacts: the round ones four at a time, colour by
+/// colour (round_contact_lanes.hpp), then the others one at a time in their order.
 /// @param useBias true for the solve (soft push-out), false for the relax pass.
 void solveContacts(SolverWorkspace& workspace, const ContactSolverSettings& settings, bool useBias);
 

@@ -400,7 +400,10 @@ void World::runStage(Stage stage, StageBody&& body) {
     record.lastSeconds += seconds;
     record.totalSeconds += seconds;
     checkFinite(stage);
-    if (observer_) observer_->afterStage(event, *this);
+    if (observer_) {
+        syncRoundContacts(solverWorkspace_);  // what solverContacts() shows: the impulses the lanes hold (round_contact_lanes.hpp)
+        observer_->afterStage(event, *this);
+    }
 }
 
 void StepObserver::beforeStage(const StageEvent&, const World&) {}

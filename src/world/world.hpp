@@ -77,6 +77,9 @@ public:
     const std::vector<ImpulseReport>& impulses() const { return impulses_; }     ///< One per contact, last step.
     const StageRecords& stageRecords() const { return stageRecords_; }           ///< Per-stage timing.
     /// @brief The sequential-impulse solver's constraints of the last step (effective masses, accumulated impulses).
+    ///
+    /// Current between steps and in a StepObserver's afterStage(); inside a stage the round
+    /// contacts' impulses are held in SIMD lanes (round_contact_lanes.hpp) and copied back here.
     const std::vector<SolverContact>& solverContacts() const { return solverWorkspace_.contacts; }
     /// @brief Where each of those constraints came from (bodies, lever arms, start gap) and its bounce; same order.
     const std::vector<ContactStart>& solverContactStarts() const { return solverWorkspace_.starts; }

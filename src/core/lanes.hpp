@@ -1,0 +1,115 @@
+/// @file lanes.hpp
+/// @brief Four numbers handled as one: the same formula on four contacts at once (SIMD lanes).
+///
+/// A `Lanes` value holds four `Real`s, and `+ − × ÷` and comparisons work on
+/// all four, lane by lane. It is GCC's and Clang's vector extension
+/// (`__attribute__((vector_size))`): the compiler turns one operation on
+/// Lanes into the processor's vector instructions — two SSE2 instructions
+/// for four doubles on any x86-64, one AVX instruction where the build
+/// targets it — and into four ordinary ones where there are none.
+/// Each lane is rounded exactly as the scalar operation would be (IEEE 754
+/// does not depend on the width of the register), so a formula written on
+/// Lanes gives, lane by lane, the numbers the same formula gives on Reals.
+///
+/// `Vec3Lanes` is four 3-vectors stored as three Lanes (x of all four, y of
+/// all four, z of all four: "structure of arrays"), so that a dot product of
+/// four pairs of vectors is three multiplications and two additions of Lanes.
+///
+/// Reference: GCC manual, "Using Vector Instructions through Built-in
+/// Functions"; Catto, Box2D v3 `contact_solver.c` (contacts solved in SIMD
+/// lanes, 2024).
+#pragma once
+
+// GCC warns that passing a 32-byte vector by value would use another calling
+// convention with AVX than without. These functions are inline and never
+// cross a library boundary, so no two builds ever call each other with them.
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wpsabi"
+#endif
+
+#include <cmath>
+#include <cstdint>
+#include <type_traits>
+
+#include "core/types.hpp"
+
+/// Every function on Lanes is inlined into its caller: a caller compiled for
+/// AVX (a `target_clones` function, round_contact_lanes.cpp) must never call an
+/// out-of-line copy compiled without it, which would expect its arguments elsewhere.
+#define STEPWISE_LANES_INLINE inline __attribute__((always_inline))
+
+/// A function on Lanes marked with this is compiled twice: for processors with
+/// AVX2 (four doubles per instruction) and for any x86-64 (SSE2, two); the
+/// program picks the copy for the processor it runs on when it starts. Both
+/// copies give the same numbers. Define STEPWISE_NO_AVX_COPY to build only the
+/// second (to compare them, or for a compiler without `target_clones`).
+#if defined(__x86_64__) && !defined(STEPWISE_NO_AVX_COPY)
+#define STEPWISE_LANES_COPIES __attribute__((target_clones("avx2", "default")))
+#else
+#define STEPWISE_LANES_COPIES
+#endif
+
+namespace stepwise {
+
+/// How many contacts a Lanes value carries.
+inline constexpr int kLanes = 4;
+
+/// @brief Four Reals, operated on together. Aligned to their whole size: a
+/// build without AVX would align four doubles to 16 bytes only, while the AVX
+/// copy of a function reads them as one aligned 32-byte load.
+using Lanes = Real __attribute__((vector_size(kLanes * sizeof(Real)), aligned(kLanes * sizeof(Real))));
+
+/// @brief The same value in all four lanes.
+STEPWISE_LANES_INLINE Lanes splat(Real x) { return Lanes{x, x, x, x}; }
+
+/// @brief Lane by lane, `keep ? a : b` (keep from a comparison of Lanes).
+template <class Mask>
+STEPWISE_LANES_INLINE Lanes select(Mask keep, Lanes a, Lanes b) {
+    return keep ? a : b;
+}
+
+/// @brief Lane by lane std::max(a, b): (a < b) ? b : a, the same NaN behaviour.
+STEPWISE_LANES_INLINE Lanes maxLanes(Lanes a, Lanes b) { return a < b ? b : a; }
+
+/// @brief Lanes picked from @p a (indices 0–3) and @p b (4–7): lane i of the result is lane I_i of [a b].
+template <int I0, int I1, int I2, int I3>
+STEPWISE_LANES_INLINE Lanes shuffleLanes(Lanes a, Lanes b) {
+#if defined(__clang__)
+    return __builtin_shufflevector(a, b, I0, I1, I2, I3);
+#else
+    using Index = std::conditional_t<sizeof(Real) == 8, std::int64_t, std::int32_t>;
+    using Indices = Index __attribute__((vector_size(kLanes * sizeof(Real))));
+    return __builtin_shuffle(a, b, Indices{I0, I1, I2, I3});
+#endif
+}
+
+/// @brief Lane by lane square root.
+STEPWISE_LANES_INLINE Lanes sqrtLanes(Lanes x) {
+    Lanes r;
+    for (int i = 0; i < kLanes; ++i) r[i] = std::sqrt(x[i]);
+    return r;
+}
+
+/// @brief Four 3-vectors, stored by component.
+struct Vec3Lanes {
+    Lanes x, y, z;
+    /// Lane @p i as a Vec3.
+    STEPWISE_LANES_INLINE Vec3 lane(int i) const { return Vec3(x[i], y[i], z[i]); }
+    /// Sets lane @p i to @p v.
+    STEPWISE_LANES_INLINE void setLane(int i, const Vec3& v) {
+        x[i] = v.x;
+        y[i] = v.y;
+        z[i] = v.z;
+    }
+};
+
+STEPWISE_LANES_INLINE Vec3Lanes operator+(const Vec3Lanes& a, const Vec3Lanes& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+STEPWISE_LANES_INLINE Vec3Lanes operator-(const Vec3Lanes& a, const Vec3Lanes& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+STEPWISE_LANES_INLINE Vec3Lanes operator-(const Vec3Lanes& a) { return {-a.x, -a.y, -a.z}; }
+STEPWISE_LANES_INLINE Vec3Lanes operator*(Lanes s, const Vec3Lanes& v) { return {s * v.x, s * v.y, s * v.z}; }
+STEPWISE_LANES_INLINE Vec3Lanes& operator+=(Vec3Lanes& a, const Vec3Lanes& b) { return a = a + b; }
+STEPWISE_LANES_INLINE Vec3Lanes& operator-=(Vec3Lanes& a, const Vec3Lanes& b) { return a = a - b; }
+/// a·b in each lane, summed as glm::dot sums: (x + y) + z.
+STEPWISE_LANES_INLINE Lanes dot(const Vec3Lanes& a, const Vec3Lanes& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+
+}  // namespace stepwise

@@ -1,0 +1,297 @@
+/// @file round_contact_lanes.cpp
+/// @brief The round contacts solved four at a time (the why and the colouring are in round_contact_lanes.hpp).
+#include "dynamics/round_contact_lanes.hpp"
+
+#include <bit>
+#include <cstddef>
+#include <cstring>
+
+#include "dynamics/contact_solver.hpp"
+
+namespace stepwise {
+
+namespace {
+
+// A solver body is two Lanes long, [v_x v_y v_z ω_x] and [ω_y ω_z m⁻¹ I⁻¹], so
+// four of them are read with eight loads and regrouped by transposing (below).
+static_assert(sizeof(SolverBody) == 2 * sizeof(Lanes), "SolverBody must be two Lanes: v, ω, m⁻¹, I⁻¹");
+static_assert(offsetof(SolverBody, angularVelocity) == 3 * sizeof(Real) &&
+                  offsetof(SolverBody, inverseMass) == 6 * sizeof(Real),
+              "SolverBody's layout is read as [v_x v_y v_z ω_x][ω_y ω_z m⁻¹ I⁻¹]");
+
+/// The four bodies of one side (A or B) of a batch, lane by lane.
+struct BodyLanes {
+    Vec3Lanes velocity;
+    Vec3Lanes angularVelocity;
+    Lanes inverseMass;
+    Lanes inverseInertia;
+};
+
+STEPWISE_LANES_INLINE Lanes load(const Real* from) {
+    Lanes lanes;
+    std::memcpy(&lanes, from, sizeof lanes);
+    return lanes;
+}
+
+STEPWISE_LANES_INLINE void store(Real* to, const Lanes& lanes) { std::memcpy(to, &lanes, sizeof lanes); }
+
+/// Rows r₀…r₃ of a 4×4 matrix in, its columns out (in place): lane i of
+/// column j is element j of row i. Its own inverse.
+STEPWISE_LANES_INLINE void transpose(Lanes& r0, Lanes& r1, Lanes& r2, Lanes& r3) {
+    const Lanes t0 = shuffleLanes<0, 4, 2, 6>(r0, r1);  // [r0₀ r1₀ r0₂ r1₂]
+    const Lanes t1 = shuffleLanes<1, 5, 3, 7>(r0, r1);  // [r0₁ r1₁ r0₃ r1₃]
+    const Lanes t2 = shuffleLanes<0, 4, 2, 6>(r2, r3);
+    const Lanes t3 = shuffleLanes<1, 5, 3, 7>(r2, r3);
+    r0 = shuffleLanes<0, 1, 4, 5>(t0, t2);  // [r0₀ r1₀ r2₀ r3₀]
+    r1 = shuffleLanes<0, 1, 4, 5>(t1, t3);
+    r2 = shuffleLanes<2, 3, 6, 7>(t0, t2);
+    r3 = shuffleLanes<2, 3, 6, 7>(t1, t3);
+}
+
+STEPWISE_LANES_INLINE const Real* realsOf(const SolverBody& body) { return &body.velocity.x; }
+STEPWISE_LANES_INLINE Real* realsOf(SolverBody& body) { return &body.velocity.x; }
+
+/// The records @p index of @p bodies, lane by lane.
+STEPWISE_LANES_INLINE BodyLanes gather(const std::vector<SolverBody>& bodies, const std::uint32_t (&index)[kLanes]) {
+    Lanes low[kLanes];   // [v_x v_y v_z ω_x] of each body
+    Lanes high[kLanes];  // [ω_y ω_z m⁻¹ I⁻¹]
+    for (int i = 0; i < kLanes; ++i) {
+        low[i] = load(realsOf(bodies[index[i]]));
+        high[i] = load(realsOf(bodies[index[i]]) + kLanes);
+    }
+    transpose(low[0], low[1], low[2], low[3]);
+    transpose(high[0], high[1], high[2], high[3]);
+    return {{low[0], low[1], low[2]}, {low[3], high[0], high[1]}, high[2], high[3]};
+}
+
+/// Writes the lanes back to records @p index, in lane order (m⁻¹ and I⁻¹ as they were read).
+STEPWISE_LANES_INLINE void scatter(std::vector<SolverBody>& bodies, const std::uint32_t (&index)[kLanes],
+                                   const BodyLanes& lanes) {
+    Lanes low[kLanes] = {lanes.velocity.x, lanes.velocity.y, lanes.velocity.z, lanes.angularVelocity.x};
+    Lanes high[kLanes] = {lanes.angularVelocity.y, lanes.angularVelocity.z, lanes.inverseMass, lanes.inverseInertia};
+    transpose(low[0], low[1], low[2], low[3]);
+    transpose(high[0], high[1], high[2], high[3]);
+    for (int i = 0; i < kLanes; ++i) {
+        store(realsOf(bodies[index[i]]), low[i]);
+        store(realsOf(bodies[index[i]]) + kLanes, high[i]);
+    }
+}
+
+/// The centres of poses @p index, lane by lane (a Pose is a position and then a quaternion,
+/// so the four Reals read from each are x, y, z and one quaternion component, dropped).
+STEPWISE_LANES_INLINE Vec3Lanes gatherPositions(const std::vector<Pose>& poses, const std::uint32_t (&index)[kLanes]) {
+    Lanes rows[kLanes];
+    for (int i = 0; i < kLanes; ++i) rows[i] = load(&poses[index[i]].position.x);
+    transpose(rows[0], rows[1], rows[2], rows[3]);
+    return {rows[0], rows[1], rows[2]};
+}
+
+// The round contact's rows (solver_body.hpp, "Rows of a round contact"), on Lanes.
+
+/// Impulse λ along n: it moves the centres only.
+STEPWISE_LANES_INLINE void applyNormal(BodyLanes& a, BodyLanes& b, const Vec3Lanes& n, Lanes lambda) {
+    a.velocity -= (lambda * a.inverseMass) * n;
+    b.velocity += (lambda * b.inverseMass) * n;
+}
+
+/// J·v along tangent t with arm direction u = n × t: t·(v_B − v_A) + ℓ_B·u·ω_B − ℓ_A·u·ω_A.
+STEPWISE_LANES_INLINE Lanes rowVelocity(const BodyLanes& a, const BodyLanes& b, const Vec3Lanes& t,
+                                        const Vec3Lanes& u, Lanes leverA, Lanes leverB) {
+    return dot(b.velocity - a.velocity, t) + leverB * dot(u, b.angularVelocity) - leverA * dot(u, a.angularVelocity);
+}
+
+/// Impulse λ along tangent t: Δv = ∓λ·m⁻¹·t, Δω = ∓λ·I⁻¹·ℓ·u.
+STEPWISE_LANES_INLINE void applyRow(BodyLanes& a, BodyLanes& b, const Vec3Lanes& t, const Vec3Lanes& u, Lanes leverA,
+                                    Lanes leverB, Lanes lambda) {
+    a.velocity -= (lambda * a.inverseMass) * t;
+    a.angularVelocity -= (lambda * a.inverseInertia * leverA) * u;
+    b.velocity += (lambda * b.inverseMass) * t;
+    b.angularVelocity += (lambda * b.inverseInertia * leverB) * u;
+}
+
+/// A new batch whose four lanes are empty: static record 0 on both sides, zero masses and impulses.
+RoundBatch emptyBatch() {
+    RoundBatch batch;
+    for (int lane = 0; lane < kLanes; ++lane) {
+        batch.contact[lane] = kEmptyLane;
+        batch.bodyA[lane] = batch.bodyB[lane] = kStaticSolverBody;
+        batch.poseA[lane] = batch.poseB[lane] = 0;
+    }
+    const Lanes zero = splat(0);
+    batch.normal = batch.tangent0 = batch.tangent1 = Vec3Lanes{zero, zero, zero};
+    batch.normalMass = batch.tangentMass = batch.friction = zero;
+    batch.leverA = batch.leverB = batch.separationOffset = zero;
+    batch.normalImpulse = batch.tangentImpulse0 = batch.tangentImpulse1 = batch.maxNormalImpulse = zero;
+    return batch;
+}
+
+void setLane(RoundBatch& batch, int lane, std::uint32_t index, const SolverContact& c) {
+    batch.contact[lane] = index;
+    batch.bodyA[lane] = c.bodyA;
+    batch.bodyB[lane] = c.bodyB;
+    batch.poseA[lane] = c.poseA;
+    batch.poseB[lane] = c.poseB;
+    batch.normal.setLane(lane, c.normal);
+    batch.tangent0.setLane(lane, c.tangent[0]);
+    batch.tangent1.setLane(lane, c.tangent[1]);
+    batch.normalMass[lane] = c.normalMass;
+    batch.tangentMass[lane] = c.tangentMass[0];
+    batch.friction[lane] = c.friction;
+    batch.leverA[lane] = c.leverA;
+    batch.leverB[lane] = c.leverB;
+    batch.separationOffset[lane] = c.separationOffset;
+    batch.normalImpulse[lane] = c.normalImpulse;
+    batch.tangentImpulse0[lane] = c.tangentImpulse[0];
+    batch.tangentImpulse1[lane] = c.tangentImpulse[1];
+    batch.maxNormalImpulse[lane] = c.maxNormalImpulse;
+}
+
+}  // namespace
+
+void batchRoundContacts(SolverWorkspace& workspace) {
+    constexpr std::uint32_t kAllColours = (std::uint32_t(1) << kContactColours) - 1;
+    constexpr std::uint32_t kNoColour = kContactColours;
+    workspace.roundBatches.clear();
+    workspace.otherContacts.clear();
+    workspace.roundBatchesAhead = false;
+    workspace.colourMask.assign(workspace.bodies.size(), 0);
+    workspace.colourOf.resize(workspace.contacts.size());
+    std::uint32_t perColour[kContactColours] = {};
+
+    // Greedy colouring, in contact order: the lowest colour neither body has yet.
+    for (std::uint32_t i = 0; i < workspace.contacts.size(); ++i) {
+        const SolverContact& c = workspace.contacts[i];
+        workspace.colourOf[i] = kNoColour;
+        if (c.rows != kRoundContact) continue;
+        const bool bothDynamic = c.bodyB != kStaticSolverBody;
+        const std::uint32_t taken = workspace.colourMask[c.bodyA] | (bothDynamic ? workspace.colourMask[c.bodyB] : 0);
+        const std::uint32_t free = ~taken & kAllColours;
+        if (free == 0) continue;  // every colour taken: solved alone, after the batches
+        const auto colour = static_cast<std::uint32_t>(std::countr_zero(free));
+        workspace.colourOf[i] = colour;
+        ++perColour[colour];
+        workspace.colourMask[c.bodyA] |= std::uint32_t(1) << colour;
+        if (bothDynamic) workspace.colourMask[c.bodyB] |= std::uint32_t(1) << colour;
+    }
+
+    // The batches, colour by colour, four contacts of a colour each, in contact order.
+    std::size_t batches = 0;
+    for (const std::uint32_t count : perColour) batches += (count + kLanes - 1) / kLanes;
+    workspace.roundBatches.reserve(batches);
+    for (std::uint32_t colour = 0; colour < kNoColour; ++colour) {
+        if (perColour[colour] == 0) continue;
+        int lane = kLanes;
+        for (std::uint32_t i = 0; i < workspace.contacts.size(); ++i) {
+            if (workspace.colourOf[i] != colour) continue;
+            if (lane == kLanes) {
+                workspace.roundBatches.push_back(emptyBatch());
+                workspace.roundBatches.back().colour = colour;
+                lane = 0;
+            }
+            setLane(workspace.roundBatches.back(), lane++, i, workspace.contacts[i]);
+        }
+    }
+    for (std::uint32_t i = 0; i < workspace.contacts.size(); ++i) {
+        if (workspace.colourOf[i] == kNoColour) workspace.otherContacts.push_back(i);
+    }
+}
+
+STEPWISE_LANES_COPIES
+void warmStartRoundContacts(SolverWorkspace& workspace) {
+    for (RoundBatch& batch : workspace.roundBatches) {
+        BodyLanes a = gather(workspace.bodies, batch.bodyA);
+        BodyLanes b = gather(workspace.bodies, batch.bodyB);
+        applyNormal(a, b, batch.normal, batch.normalImpulse);
+        // The arm directions: n × t₁ = t₂ and n × t₂ = −t₁ (tangentBasis()).
+        applyRow(a, b, batch.tangent0, batch.tangent1, batch.leverA, batch.leverB, batch.tangentImpulse0);
+        applyRow(a, b, batch.tangent1, -batch.tangent0, batch.leverA, batch.leverB, batch.tangentImpulse1);
+        scatter(workspace.bodies, batch.bodyA, a);
+        scatter(workspace.bodies, batch.bodyB, b);
+    }
+}
+
+void clearRoundContactImpulses(SolverWorkspace& workspace) {
+    for (RoundBatch& batch : workspace.roundBatches) batch.normalImpulse = batch.tangentImpulse0 = batch.tangentImpulse1 = splat(0);
+    workspace.roundBatchesAhead = true;
+}
+
+// solveContacts()'s pass (contact_solver.cpp), line for line, on four contacts at once: each `if`
+// on a contact's own numbers becomes a select between the two results, lane by lane. Compiled
+// twice (STEPWISE_LANES_COPIES, core/lanes.hpp): AVX2 and any x86-64, the same numbers.
+STEPWISE_LANES_COPIES
+void solveRoundContacts(SolverWorkspace& workspace, const ContactSolverSettings& settings, bool useBias) {
+    const bool pushOut = useBias && settings.positionCorrection;
+    const Lanes zero = splat(0);
+    const Lanes one = splat(1);
+    const Lanes inverseSubstep = splat(Real(1) / settings.substep);
+    const Lanes biasRate = splat(settings.softness.biasRate);
+    const Lanes slowestPushOut = splat(-kMaxPushOutSpeed);
+    const Lanes softMassScale = splat(pushOut ? settings.softness.massScale : Real(1));
+    const Lanes softImpulseScale = splat(pushOut ? settings.softness.impulseScale : Real(0));
+    for (RoundBatch& batch : workspace.roundBatches) {
+        const Vec3Lanes& n = batch.normal;
+        // Normal: λ = −K⁻¹·s_m·(v_n + bias) − s_i·λ_acc (softness.hpp); a gap closes in this substep, no further.
+        const Lanes separation =
+            dot(gatherPositions(workspace.poses, batch.poseB) - gatherPositions(workspace.poses, batch.poseA), n) + batch.separationOffset;
+        const auto gap = separation > zero;
+        const Lanes softBias = pushOut ? maxLanes(biasRate * separation, slowestPushOut) : zero;
+        const Lanes bias = select(gap, separation * inverseSubstep, softBias);
+        const Lanes massScale = select(gap, one, softMassScale);
+        const Lanes impulseScale = select(gap, zero, softImpulseScale);
+
+        BodyLanes a = gather(workspace.bodies, batch.bodyA);
+        BodyLanes b = gather(workspace.bodies, batch.bodyB);
+        const Lanes vn = dot(b.velocity - a.velocity, n);
+        const Lanes impulse = -batch.normalMass * massScale * (vn + bias) - impulseScale * batch.normalImpulse;
+        Lanes applied;
+        if (settings.accumulate) {
+            const Lanes total = maxLanes(batch.normalImpulse + impulse, zero);
+            applied = total - batch.normalImpulse;
+            batch.normalImpulse = total;
+        } else {  // Box2D-Lite's switch: clamp each increment
+            applied = maxLanes(impulse, zero);
+            batch.normalImpulse += applied;
+        }
+        batch.maxNormalImpulse = maxLanes(batch.maxNormalImpulse, batch.normalImpulse);
+        applyNormal(a, b, n, applied);
+
+        // Friction inside Coulomb's circle |λ_t| ≤ μ·λ_n, both tangents read before either is applied.
+        // (A lane that does not push and holds no friction, which the scalar pass skips, computes a
+        // scale of 0 or 1 on a zero impulse here: it changes nothing either.)
+        const Lanes limit = batch.friction * batch.normalImpulse;
+        const Vec3Lanes arm1 = -batch.tangent0;  // n × t₂
+        Lanes total0 = batch.tangentImpulse0 - batch.tangentMass * rowVelocity(a, b, batch.tangent0, batch.tangent1,
+                                                                               batch.leverA, batch.leverB);
+        Lanes total1 = batch.tangentImpulse1 -
+                       batch.tangentMass * rowVelocity(a, b, batch.tangent1, arm1, batch.leverA, batch.leverB);
+        const Lanes magnitude = sqrtLanes(total0 * total0 + total1 * total1);
+        const Lanes scale = select(magnitude > limit, limit / magnitude, one);
+        total0 *= scale;
+        total1 *= scale;
+        applyRow(a, b, batch.tangent0, batch.tangent1, batch.leverA, batch.leverB, total0 - batch.tangentImpulse0);
+        applyRow(a, b, batch.tangent1, arm1, batch.leverA, batch.leverB, total1 - batch.tangentImpulse1);
+        batch.tangentImpulse0 = total0;
+        batch.tangentImpulse1 = total1;
+
+        scatter(workspace.bodies, batch.bodyA, a);
+        scatter(workspace.bodies, batch.bodyB, b);
+    }
+    workspace.roundBatchesAhead = true;
+}
+
+void syncRoundContacts(SolverWorkspace& workspace) {
+    if (!workspace.roundBatchesAhead) return;
+    for (const RoundBatch& batch : workspace.roundBatches) {
+        for (int lane = 0; lane < kLanes; ++lane) {
+            if (batch.contact[lane] == kEmptyLane) continue;
+            SolverContact& c = workspace.contacts[batch.contact[lane]];
+            c.normalImpulse = batch.normalImpulse[lane];
+            c.tangentImpulse[0] = batch.tangentImpulse0[lane];
+            c.tangentImpulse[1] = batch.tangentImpulse1[lane];
+            c.maxNormalImpulse = batch.maxNormalImpulse[lane];
+        }
+    }
+    workspace.roundBatchesAhead = false;
+}
+
+}  // namespace stepwise

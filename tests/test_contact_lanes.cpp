@@ -1,0 +1,187 @@
+// The round contacts solved four at a time (src/dynamics/round_contact_lanes.hpp).
+// Tags: [solver], [lanes].
+//
+// Two claims: the colouring makes the lanes independent (no batch holds two
+// contacts of one dynamic body, every contact is solved exactly once), and a
+// pass in lanes is the scalar pass of contact_solver.cpp on the same contacts
+// in the same order, four at a time: the same velocities and impulses.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <random>
+#include <vector>
+
+#include "collision/broadphase.hpp"
+#include "collision/narrowphase.hpp"
+#include "dynamics/contact_solver.hpp"
+#include "dynamics/inertia.hpp"
+#include "dynamics/round_contact_lanes.hpp"
+#include "dynamics/softness.hpp"
+#include "test_support.hpp"
+
+using namespace stepwise;
+
+namespace {
+
+/// A heap of balls of two sizes and masses, pressed into each other and into
+/// the ground and two walls, moving and spinning at random: many round contacts.
+struct BallHeap {
+    std::vector<DynamicObject> dynamics;
+    std::vector<KinematicsObject> kinematics;
+    std::vector<CollisionPlane> planes;
+    std::vector<Contact> contacts;
+
+    BallHeap() {
+        std::mt19937 random(7);
+        std::uniform_real_distribution<double> jitter(-0.04, 0.04);
+        std::uniform_real_distribution<double> speed(-1.5, 1.5);
+        for (int layer = 0; layer < 4; ++layer) {
+            for (int row = 0; row < 5; ++row) {
+                for (int column = 0; column < 5; ++column) {
+                    // Centres 0.95 m apart: neighbours overlap by about 5 cm (radius 0.5 m)
+                    const Vec3 centre(0.45 + 0.95 * column + jitter(random), 0.47 + 0.93 * layer + jitter(random),
+                                      0.45 + 0.95 * row + jitter(random));
+                    DynamicObject ball = test::sphere("b" + std::to_string(dynamics.size()), centre,
+                                                      Vec3(speed(random), speed(random), speed(random)));
+                    if ((row + column + layer) % 3 == 0) ball.setMass(3);  // a heavier ball now and then
+                    ball.angularVelocity = Vec3(speed(random), speed(random), speed(random));
+                    ball.friction = 0.6;
+                    dynamics.push_back(ball);
+                }
+            }
+        }
+        planes.push_back(test::ground());
+        CollisionPlane wallX;
+        wallX.normal = Vec3(1, 0, 0);
+        CollisionPlane wallZ;
+        wallZ.normal = Vec3(0, 0, 1);
+        planes.push_back(wallX);
+        planes.push_back(wallZ);
+        for (DynamicObject& body : dynamics) initialiseMassProperties(body);
+
+        const BodySet bodies{dynamics, kinematics, planes};
+        std::vector<CandidatePair> pairs;
+        Broadphase().findPairs(BroadphaseKind::BruteForce, bodies, pairs);
+        ThreadPool pool(1);
+        NarrowphaseWorkspace workspace;
+        findContacts(bodies, pairs, contacts, false, kSpeculativeDistance, pool, workspace);
+    }
+    BodySet bodies() { return {dynamics, kinematics, planes}; }
+};
+
+ContactSolverSettings substepSettings() {
+    ContactSolverSettings settings;
+    settings.substep = Real(1) / 960;
+    settings.softness = makeSoftness(240, 1, settings.substep);
+    return settings;
+}
+
+}  // namespace
+
+TEST_CASE("Colouring: no batch holds two contacts of one dynamic body, and every contact is solved once", "[solver][lanes]") {
+    BallHeap heap;
+    SolverWorkspace workspace;
+    prepareContacts(heap.bodies(), heap.contacts, Real(1) / 60, false, workspace);
+    REQUIRE(workspace.contacts.size() > 100);  // a heap, not a handful
+
+    std::vector<int> solved(workspace.contacts.size(), 0);
+    std::vector<std::uint32_t> colourRecords;  // the dynamic records of the current colour's contacts
+    for (std::size_t n = 0; n < workspace.roundBatches.size(); ++n) {
+        const RoundBatch& batch = workspace.roundBatches[n];
+        if (n > 0) CHECK(batch.colour >= workspace.roundBatches[n - 1].colour);  // colour by colour
+        if (n == 0 || batch.colour != workspace.roundBatches[n - 1].colour) {
+            // No two contacts of one colour share a dynamic body, within a batch or across them
+            std::sort(colourRecords.begin(), colourRecords.end());
+            CHECK(std::adjacent_find(colourRecords.begin(), colourRecords.end()) == colourRecords.end());
+            colourRecords.clear();
+        }
+        std::vector<std::uint32_t> records;
+        for (int lane = 0; lane < kLanes; ++lane) {
+            if (batch.contact[lane] == kEmptyLane) {
+                CHECK(batch.bodyA[lane] == kStaticSolverBody);  // an empty lane moves nothing
+                CHECK(batch.bodyB[lane] == kStaticSolverBody);
+                continue;
+            }
+            const SolverContact& c = workspace.contacts[batch.contact[lane]];
+            CHECK(c.rows == kRoundContact);
+            CHECK(batch.bodyA[lane] == c.bodyA);
+            CHECK(batch.bodyB[lane] == c.bodyB);
+            ++solved[batch.contact[lane]];
+            records.push_back(c.bodyA);
+            if (c.bodyB != kStaticSolverBody) records.push_back(c.bodyB);
+        }
+        colourRecords.insert(colourRecords.end(), records.begin(), records.end());
+        std::sort(records.begin(), records.end());
+        CHECK(std::adjacent_find(records.begin(), records.end()) == records.end());
+    }
+    std::sort(colourRecords.begin(), colourRecords.end());
+    CHECK(std::adjacent_find(colourRecords.begin(), colourRecords.end()) == colourRecords.end());
+    for (const std::uint32_t index : workspace.otherContacts) ++solved[index];
+    for (std::size_t i = 0; i < solved.size(); ++i) {
+        INFO("contact " << i);
+        CHECK(solved[i] == 1);
+    }
+    // Balls touch a dozen others at most: every ball-ball and ball-plane contact finds a colour.
+    CHECK(workspace.otherContacts.empty());
+    // Four to a batch, less the last of each colour: the lanes are mostly full.
+    CHECK(workspace.roundBatches.size() * kLanes < workspace.contacts.size() + kContactColours * kLanes);
+}
+
+TEST_CASE("A pass in lanes is the scalar pass, four contacts at a time", "[solver][lanes]") {
+    // The same contacts, solved once by the lanes and once one at a time by the scalar pass
+    // (every contact listed in otherContacts, in the batches' order): warm start, a solve and a
+    // relax pass must leave the same velocities and impulses. Each lane rounds as a scalar does,
+    // so they agree to the last bit in a build without fused multiply-add; the tolerance, a
+    // billionth of the values, only allows for one that fuses differently in the two.
+    BallHeap heap;
+    const ContactSolverSettings settings = substepSettings();
+    SolverWorkspace lanes;
+    prepareContacts(heap.bodies(), heap.contacts, Real(1) / 60, false, lanes);
+    // Something to warm start from: the impulses a previous step might have left.
+    for (SolverContact& c : lanes.contacts) {
+        c.normalImpulse = Real(0.01) * c.normalMass;
+        c.tangentImpulse[0] = Real(0.002) * c.normalMass;
+    }
+    batchRoundContacts(lanes);
+    REQUIRE(lanes.roundBatches.size() > 20);
+
+    SolverWorkspace scalar = lanes;
+    scalar.otherContacts.clear();
+    for (const RoundBatch& batch : lanes.roundBatches) {
+        for (int lane = 0; lane < kLanes; ++lane) {
+            if (batch.contact[lane] != kEmptyLane) scalar.otherContacts.push_back(batch.contact[lane]);
+        }
+    }
+    for (const std::uint32_t index : lanes.otherContacts) scalar.otherContacts.push_back(index);
+    scalar.roundBatches.clear();
+
+    for (SolverWorkspace* w : {&lanes, &scalar}) {
+        recordPoses(heap.bodies(), *w);
+        copyVelocitiesIn(*w);
+        warmStartContacts(*w, true);
+        solveContacts(*w, settings, true);
+        solveContacts(*w, settings, false);
+    }
+    syncRoundContacts(lanes);
+
+    const auto same = [](Real x, Real y) { return x == Approx(y).epsilon(1e-9).margin(1e-12); };
+    int pushing = 0;
+    for (std::size_t i = 0; i < lanes.contacts.size(); ++i) {
+        INFO("contact " << i);
+        CHECK(same(lanes.contacts[i].normalImpulse, scalar.contacts[i].normalImpulse));
+        CHECK(same(lanes.contacts[i].maxNormalImpulse, scalar.contacts[i].maxNormalImpulse));
+        for (int k = 0; k < 2; ++k) CHECK(same(lanes.contacts[i].tangentImpulse[k], scalar.contacts[i].tangentImpulse[k]));
+        if (lanes.contacts[i].normalImpulse > 0) ++pushing;
+    }
+    CHECK(pushing > 50);  // the passes did work: there is something to compare
+    for (std::size_t r = 0; r < lanes.bodies.size(); ++r) {
+        INFO("record " << r);
+        for (int k = 0; k < 3; ++k) {
+            CHECK(same(lanes.bodies[r].velocity[k], scalar.bodies[r].velocity[k]));
+            CHECK(same(lanes.bodies[r].angularVelocity[k], scalar.bodies[r].angularVelocity[k]));
+        }
+    }
+    // The static record stays at rest whatever the empty lanes and plane contacts wrote into it.
+    CHECK(lanes.bodies[kStaticSolverBody].velocity == Vec3(0));
+    CHECK(lanes.bodies[kStaticSolverBody].angularVelocity == Vec3(0));
+}
