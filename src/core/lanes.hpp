@@ -92,7 +92,9 @@ STEPWISE_LANES_INLINE Lanes sqrtLanes(Lanes x) {
 
 /// @brief Four 3-vectors, stored by component.
 struct Vec3Lanes {
-    Lanes x, y, z;
+    Lanes x;  ///< The four x components.
+    Lanes y;  ///< The four y components.
+    Lanes z;  ///< The four z components.
     /// Lane @p i as a Vec3.
     STEPWISE_LANES_INLINE Vec3 lane(int i) const { return Vec3(x[i], y[i], z[i]); }
     /// Sets lane @p i to @p v.
@@ -103,11 +105,17 @@ struct Vec3Lanes {
     }
 };
 
+/// a + b, lane by lane.
 STEPWISE_LANES_INLINE Vec3Lanes operator+(const Vec3Lanes& a, const Vec3Lanes& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+/// a − b, lane by lane.
 STEPWISE_LANES_INLINE Vec3Lanes operator-(const Vec3Lanes& a, const Vec3Lanes& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+/// −a, lane by lane.
 STEPWISE_LANES_INLINE Vec3Lanes operator-(const Vec3Lanes& a) { return {-a.x, -a.y, -a.z}; }
+/// Each lane's vector scaled by that lane's number.
 STEPWISE_LANES_INLINE Vec3Lanes operator*(Lanes s, const Vec3Lanes& v) { return {s * v.x, s * v.y, s * v.z}; }
+/// a = a + b.
 STEPWISE_LANES_INLINE Vec3Lanes& operator+=(Vec3Lanes& a, const Vec3Lanes& b) { return a = a + b; }
+/// a = a − b.
 STEPWISE_LANES_INLINE Vec3Lanes& operator-=(Vec3Lanes& a, const Vec3Lanes& b) { return a = a - b; }
 /// a·b in each lane, summed as glm::dot sums: (x + y) + z.
 STEPWISE_LANES_INLINE Lanes dot(const Vec3Lanes& a, const Vec3Lanes& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
