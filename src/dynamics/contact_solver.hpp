@@ -92,10 +92,13 @@ inline constexpr std::uint32_t kRoundContact = 0xffffffffu;
 /// SolverWorkspace::rows, which a pass reads at index `rows`.
 ///
 /// **Four at a time.** Round contacts are also the ones a pass can solve four
-/// at a time in SIMD lanes: once a step they are coloured so that no two of a
-/// colour share a dynamic body, and packed four of a colour to a RoundBatch
-/// (round_contact_lanes.hpp). A pass solves the batches colour by colour,
-/// then the other contacts one at a time in their order (otherContacts).
+/// at a time in SIMD lanes: once a step they are put in *waves*, each contact
+/// one wave after the last earlier contact on either of its bodies, so that
+/// no two of a wave share a dynamic body and every body meets its contacts in
+/// their order; they are packed four of a wave to a RoundBatch
+/// (round_contact_lanes.hpp). A pass solves the batches wave by wave, which
+/// gives exactly the numbers of solving the round contacts one at a time in
+/// their order, then the other contacts one at a time (otherContacts).
 /// Through the substeps a round contact's impulses live in its batch; they
 /// are copied back here before the bounce and whenever a StepObserver looks
 /// (syncRoundContacts()).
@@ -195,12 +198,14 @@ struct SolverWorkspace {
     std::vector<BodyVelocity> substepStart;      ///< Per record: v and ω before this substep's warm start.
     std::vector<Vec3> velocityBefore;            ///< Per dynamic body: v before this substep's solve, m/s.
     std::vector<Vec3> angularVelocityBefore;     ///< Per dynamic body: ω before this substep's solve, rad/s.
-    /// The round contacts, four of one colour per batch (round_contact_lanes.hpp). Through the
+    /// The round contacts, four of one wave per batch (round_contact_lanes.hpp). Through the
     /// substeps their impulses live here; syncRoundContacts() copies them into `contacts`.
     std::vector<RoundBatch> roundBatches;
-    std::vector<std::uint32_t> otherContacts;    ///< The contacts solved one at a time, in order: stored rows, and round ones left without a colour.
-    std::vector<std::uint32_t> colourMask;       ///< Per record: the colours its contacts took (scratch of batchRoundContacts()).
-    std::vector<std::uint32_t> colourOf;         ///< Per contact: its colour (scratch).
+    std::vector<std::uint32_t> otherContacts;    ///< The contacts solved one at a time, in order, after the batches: those with stored rows.
+    std::vector<std::uint32_t> nextWave;         ///< Per record: the first wave its next contact may take (scratch of batchRoundContacts()).
+    std::vector<std::uint32_t> waveOf;           ///< Per contact: its wave (scratch).
+    std::vector<std::uint32_t> waveStart;        ///< Per wave: where its contacts start in waveOrder (scratch).
+    std::vector<std::uint32_t> waveOrder;        ///< The round contacts, wave by wave (scratch).
     bool roundBatchesAhead = false;              ///< The batches hold newer impulses than `contacts` (syncRoundContacts()).
 };
 
@@ -271,8 +276,8 @@ void warmStartContacts(SolverWorkspace& workspace, bool accumulate);
 /// the velocities too), and not without accumulated impulses.
 void warmStartFromLastSubstep(SolverWorkspace& workspace);
 
-/// @brief One Gauss–Seidel pass over all contacts: the round ones four at a time, colour by
-/// colour (round_contact_lanes.hpp), then the others one at a time in their order.
+/// @brief One Gauss–Seidel pass over all contacts: the round ones four at a time, wave by
+/// wave (round_contact_lanes.hpp), then the others one at a time in their order.
 /// @param useBias true for the solve (soft push-out), false for the relax pass.
 void solveContacts(SolverWorkspace& workspace, const ContactSolverSettings& settings, bool useBias);
 

@@ -1,8 +1,8 @@
 /// @file round_contact_lanes.cpp
-/// @brief The round contacts solved four at a time (the why and the colouring are in round_contact_lanes.hpp).
+/// @brief The round contacts solved four at a time (the why and the waves are in round_contact_lanes.hpp).
 #include "dynamics/round_contact_lanes.hpp"
 
-#include <bit>
+#include <algorithm>
 #include <cstddef>
 #include <cstring>
 
@@ -149,50 +149,57 @@ void setLane(RoundBatch& batch, int lane, std::uint32_t index, const SolverConta
 }  // namespace
 
 void batchRoundContacts(SolverWorkspace& workspace) {
-    constexpr std::uint32_t kAllColours = (std::uint32_t(1) << kContactColours) - 1;
-    constexpr std::uint32_t kNoColour = kContactColours;
+    constexpr std::uint32_t kNotRound = 0xffffffffu;
     workspace.roundBatches.clear();
     workspace.otherContacts.clear();
     workspace.roundBatchesAhead = false;
-    workspace.colourMask.assign(workspace.bodies.size(), 0);
-    workspace.colourOf.resize(workspace.contacts.size());
-    std::uint32_t perColour[kContactColours] = {};
-
-    // Greedy colouring, in contact order: the lowest colour neither body has yet.
+    // Per record: the wave its next contact may take (one after its last contact's), 0 before any.
+    workspace.nextWave.assign(workspace.bodies.size(), 0);
+    workspace.waveOf.resize(workspace.contacts.size());
+    std::uint32_t waves = 0;
     for (std::uint32_t i = 0; i < workspace.contacts.size(); ++i) {
         const SolverContact& c = workspace.contacts[i];
-        workspace.colourOf[i] = kNoColour;
-        if (c.rows != kRoundContact) continue;
-        const bool bothDynamic = c.bodyB != kStaticSolverBody;
-        const std::uint32_t taken = workspace.colourMask[c.bodyA] | (bothDynamic ? workspace.colourMask[c.bodyB] : 0);
-        const std::uint32_t free = ~taken & kAllColours;
-        if (free == 0) continue;  // every colour taken: solved alone, after the batches
-        const auto colour = static_cast<std::uint32_t>(std::countr_zero(free));
-        workspace.colourOf[i] = colour;
-        ++perColour[colour];
-        workspace.colourMask[c.bodyA] |= std::uint32_t(1) << colour;
-        if (bothDynamic) workspace.colourMask[c.bodyB] |= std::uint32_t(1) << colour;
+        if (c.rows != kRoundContact) {
+            workspace.waveOf[i] = kNotRound;
+            workspace.otherContacts.push_back(i);  // solved alone, after the batches
+            continue;
+        }
+        const bool bothDynamic = c.bodyB != kStaticSolverBody;  // nothing moves the static record: no wait
+        const std::uint32_t wave = std::max(workspace.nextWave[c.bodyA], bothDynamic ? workspace.nextWave[c.bodyB] : 0);
+        workspace.waveOf[i] = wave;
+        workspace.nextWave[c.bodyA] = wave + 1;
+        if (bothDynamic) workspace.nextWave[c.bodyB] = wave + 1;
+        waves = std::max(waves, wave + 1);
     }
 
-    // The batches, colour by colour, four contacts of a colour each, in contact order.
-    std::size_t batches = 0;
-    for (const std::uint32_t count : perColour) batches += (count + kLanes - 1) / kLanes;
-    workspace.roundBatches.reserve(batches);
-    for (std::uint32_t colour = 0; colour < kNoColour; ++colour) {
-        if (perColour[colour] == 0) continue;
-        int lane = kLanes;
-        for (std::uint32_t i = 0; i < workspace.contacts.size(); ++i) {
-            if (workspace.colourOf[i] != colour) continue;
-            if (lane == kLanes) {
-                workspace.roundBatches.push_back(emptyBatch());
-                workspace.roundBatches.back().colour = colour;
-                lane = 0;
-            }
-            setLane(workspace.roundBatches.back(), lane++, i, workspace.contacts[i]);
-        }
+    // Counting sort by wave (contact order kept within a wave): each wave's contacts, four to a batch.
+    workspace.waveStart.assign(waves + 1, 0);
+    for (const std::uint32_t wave : workspace.waveOf) {
+        if (wave != kNotRound) ++workspace.waveStart[wave + 1];
     }
+    std::size_t batches = 0;
+    for (std::uint32_t wave = 0; wave < waves; ++wave) {
+        batches += (workspace.waveStart[wave + 1] + kLanes - 1) / kLanes;
+        workspace.waveStart[wave + 1] += workspace.waveStart[wave];
+    }
+    workspace.waveOrder.resize(workspace.waveStart[waves]);
     for (std::uint32_t i = 0; i < workspace.contacts.size(); ++i) {
-        if (workspace.colourOf[i] == kNoColour) workspace.otherContacts.push_back(i);
+        if (workspace.waveOf[i] != kNotRound) workspace.waveOrder[workspace.waveStart[workspace.waveOf[i]]++] = i;
+    }
+    // Placing moved each start to its wave's end; the batches walk the waves in turn.
+    workspace.roundBatches.reserve(batches);
+    std::uint32_t first = 0;
+    for (std::uint32_t wave = 0; wave < waves; ++wave) {
+        const std::uint32_t end = workspace.waveStart[wave];
+        for (std::uint32_t k = first; k < end; ++k) {
+            const int lane = static_cast<int>((k - first) % kLanes);
+            if (lane == 0) {
+                workspace.roundBatches.push_back(emptyBatch());
+                workspace.roundBatches.back().wave = wave;
+            }
+            setLane(workspace.roundBatches.back(), lane, workspace.waveOrder[k], workspace.contacts[workspace.waveOrder[k]]);
+        }
+        first = end;
     }
 }
 

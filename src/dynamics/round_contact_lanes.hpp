@@ -1,42 +1,48 @@
 /// @file round_contact_lanes.hpp
-/// @brief The round contacts (ball–ball, ball–plane) solved four at a time: graph colouring and SIMD lanes.
+/// @brief The round contacts (ball–ball, ball–plane) solved four at a time: waves of independent contacts in SIMD lanes.
 ///
 /// **Why.** A contact pass is a long chain of small dependent operations on
 /// one contact (contact_solver.cpp): about 260 instructions for a ball on a
 /// ball, one after the other. A processor can do the same operation on four
 /// doubles at once (SIMD: SSE2 two, AVX four), but only on four *independent*
-/// contacts: two contacts that push the same body must be solved one after
-/// the other, since Gauss–Seidel's second one reads what the first did.
+/// contacts.
 ///
-/// **Colours.** So the contacts are first *coloured*, as one colours a graph
-/// whose vertices are the contacts and whose edges join contacts sharing a
-/// dynamic body: each contact gets the lowest colour none of its two bodies
-/// has yet (greedy colouring; every body remembers its colours as bits). Two
-/// contacts of one colour never share a dynamic body (the static record 0,
-/// B of every plane contact, does not count: nothing can move it). A pass
-/// then walks the colours in order, and within a colour takes the contacts
-/// four at a time, in the contacts' own order: a *batch*. Solving a batch in
-/// four lanes is exactly solving its four contacts one after the other,
-/// because none of them reads what another writes. A ball touches at most
-/// twelve equal balls and a few walls, so kContactColours colours are plenty;
-/// a contact that finds none free is solved alone after the batches, as is
-/// every contact whose rows are stored (boxes, kinematic bodies).
+/// **Waves.** Gauss–Seidel solves the contacts in order, each one reading
+/// the velocities the earlier ones left. But two contacts that share no
+/// dynamic body do not read each other's results at all: solving them in
+/// either order, or at once, gives the same numbers to the last bit. Only the
+/// order of contacts on the *same* body matters. So each contact is put in
+/// a *wave*: one after the latest wave of any earlier contact on either of
+/// its bodies (the static record 0, B of every plane contact, does not count:
+/// nothing moves it),
+/// \f[ w_c = \max\big(\text{next}(A_c),\ \text{next}(B_c)\big), \qquad
+///     \text{next}(A_c) = \text{next}(B_c) = w_c + 1 , \f]
+/// walking the contacts in their order. Two contacts of one wave never share
+/// a body, and for every body its contacts come in waves in their own order.
+/// A pass then solves wave after wave, four contacts of a wave at a time (a
+/// *batch*): each body meets its contacts in exactly the order the plain
+/// pass would, so the result is the plain pass's, bit for bit, only faster.
+/// (This is list scheduling of the contacts' dependency graph. Colouring
+/// that graph, as Box2D v3 does, fills the batches with fewer, larger groups
+/// but changes the order, and with it how far one pass carries a pile's
+/// weight down: a first try with colours left the 64k rain's worst overlap at
+/// 7.5 mm instead of 2.9; bench/solver_performance.md, sixth round.)
 ///
-/// **The order changes, the physics does not.** Gauss–Seidel's result
-/// depends on the order in which it meets the contacts (to within what the
-/// passes have not yet converged): colour by colour is another order than
-/// the broadphase's, so the trajectory is another one, as it would be with
-/// another broadphase order. It is still one order, fixed by the contacts
-/// alone: the same on every machine, whether the lanes run in AVX, SSE2 or
+/// A contact whose rows are stored (a box, a kinematic body) is solved alone
+/// after the batches, in order: in a scene of boxes only, the order is the
+/// plain one; balls touching boxes see their ball contacts first.
+///
+/// **The order is the contacts'.** The waves follow from the contacts
+/// alone: the same on every machine, whether the lanes run in AVX2, SSE2 or
 /// no vector registers at all (IEEE 754 rounds each lane as a scalar).
 ///
 /// **The formulas** are the round contact's of solver_body.hpp and
 /// contact_solver.cpp, written on Lanes (core/lanes.hpp) instead of Reals:
 /// the same lines, four contacts at a time.
 ///
-/// Reference: Catto, Box2D v3 `constraint_graph.c` (graph colouring of
-/// constraints) and `contact_solver.c` (contacts in SIMD lanes), 2024;
-/// Tonge, "Iterative Rigid Body Solvers" (GDC 2012, parallel batches).
+/// Reference: Catto, Box2D v3 `contact_solver.c` (contacts in SIMD lanes) and
+/// `constraint_graph.c` (the graph colouring it uses instead), 2024; Tonge,
+/// "Iterative Rigid Body Solvers" (GDC 2012, independent batches).
 #pragma once
 
 #include <cstdint>
@@ -49,15 +55,10 @@ namespace stepwise {
 struct SolverWorkspace;
 struct ContactSolverSettings;
 
-/// Colours a round contact may take (bits of a 32-bit mask per body). A ball
-/// among equal balls touches at most twelve and a few walls; a contact that
-/// finds every colour taken is solved alone, after the batches.
-inline constexpr int kContactColours = 24;
-
-/// RoundBatch::contact of an empty lane (the last batch of a colour may not be full).
+/// RoundBatch::contact of an empty lane (the last batch of a wave may not be full).
 inline constexpr std::uint32_t kEmptyLane = 0xffffffffu;
 
-/// @brief Four round contacts of one colour, lane by lane: the SolverContact fields a pass reads.
+/// @brief Four round contacts of one wave, lane by lane: the SolverContact fields a pass reads.
 ///
 /// An empty lane names the static record 0 as both bodies and has zero
 /// masses, so whatever it computes changes nothing.
@@ -67,7 +68,7 @@ struct RoundBatch {
     std::uint32_t bodyB[kLanes];    ///< B's record (kStaticSolverBody for a plane).
     std::uint32_t poseA[kLanes];    ///< A's pose in SolverWorkspace::poses.
     std::uint32_t poseB[kLanes];    ///< B's pose.
-    std::uint32_t colour = 0;       ///< The colour of its contacts: batches come in colour order.
+    std::uint32_t wave = 0;         ///< The wave of its contacts: batches come in wave order.
     Vec3Lanes normal;               ///< n, from A to B.
     Vec3Lanes tangent0;             ///< t₁; t₂ = n × t₁.
     Vec3Lanes tangent1;             ///< t₂.
@@ -83,7 +84,7 @@ struct RoundBatch {
     Lanes maxNormalImpulse;         ///< Largest λ_n this step, N·s.
 };
 
-/// @brief Colours the round contacts of @p workspace and packs them into RoundBatch lanes;
+/// @brief Puts the round contacts of @p workspace in waves and packs them into RoundBatch lanes;
 /// lists every other contact in SolverWorkspace::otherContacts. Once a step, after prepare.
 void batchRoundContacts(SolverWorkspace& workspace);
 
