@@ -1,11 +1,12 @@
 /// @file round_contact_lanes.hpp
 /// @brief The round contacts (ball–ball, ball–plane) solved four at a time: waves of independent contacts in SIMD lanes.
 ///
-/// **Why.** A contact pass is a long chain of small dependent operations on
-/// one contact (contact_solver.cpp): about 260 instructions for a ball on a
-/// ball, one after the other. A processor can do the same operation on four
-/// doubles at once (SIMD: SSE2 two, AVX four), but only on four *independent*
-/// contacts.
+/// **Why.** Solving one contact is a long chain of small operations, most
+/// waiting for the one before (contact_solver.cpp): about 290 instructions
+/// for a ball on a ball, and a pass is bound by them, not by memory (up to
+/// 16k balls; bench/solver_performance.md, sixth round). A processor can do
+/// the same operation on four doubles at once (SIMD: SSE2 two, AVX2 four),
+/// but only on four *independent* contacts.
 ///
 /// **Waves.** Gauss–Seidel solves the contacts in order, each one reading
 /// the velocities the earlier ones left. But two contacts that share no
