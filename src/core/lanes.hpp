@@ -21,9 +21,11 @@
 #pragma once
 
 // GCC warns that passing a 32-byte vector by value would use another calling
-// convention with AVX than without. These functions are inline and never
-// cross a library boundary, so no two builds ever call each other with them.
+// convention with AVX than without. These functions are always inlined and
+// never cross a library boundary, so no two builds ever call each other with
+// them. Silenced here only, not for the files that include this one.
 #if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wpsabi"
 #endif
 
@@ -121,3 +123,7 @@ STEPWISE_LANES_INLINE Vec3Lanes& operator-=(Vec3Lanes& a, const Vec3Lanes& b) { 
 STEPWISE_LANES_INLINE Lanes dot(const Vec3Lanes& a, const Vec3Lanes& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 
 }  // namespace stepwise
+
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic pop
+#endif

@@ -8,6 +8,11 @@
 
 #include "dynamics/contact_solver.hpp"
 
+// This file's helpers pass Lanes by value too, always inlined (see core/lanes.hpp).
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wpsabi"
+#endif
+
 namespace stepwise {
 
 namespace {
