@@ -97,8 +97,6 @@ struct Vec3Lanes {
     Lanes x;  ///< The four x components.
     Lanes y;  ///< The four y components.
     Lanes z;  ///< The four z components.
-    /// Lane @p i as a Vec3.
-    STEPWISE_LANES_INLINE Vec3 lane(int i) const { return Vec3(x[i], y[i], z[i]); }
     /// Sets lane @p i to @p v.
     STEPWISE_LANES_INLINE void setLane(int i, const Vec3& v) {
         x[i] = v.x;
