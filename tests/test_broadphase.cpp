@@ -154,6 +154,7 @@ TEST_CASE("Every broadphase returns brute force's pairs, in its order, step afte
         const Real side = Real(0.9) * std::cbrt(Real(count));
         for (int step = 0; step < 30; ++step) {
             requireAllAgree(b, broadphases, "seed " + std::to_string(seed) + ", step " + std::to_string(step));
+            CHECK(broadphases[2].grid().dense());  // bodies packed in a cube: one slot per cell
             const std::vector<Aabb> boxes = proxyBoxes(b);
             CHECK(broadphases[1].tree().isConsistent({boxes, static_cast<std::uint32_t>(b.dynamics.size())}));
             shake(b, random, side);
@@ -203,6 +204,41 @@ TEST_CASE("The broadphases agree on degenerate scenes", "[broadphase]") {
         for (int i = 0; i < 30; ++i) b.dynamics.push_back(test::sphere("s" + std::to_string(i), Vec3(i * 0.5, 0, 0)));
         b.dynamics.push_back(test::sphere("far", Vec3(1e12, -1e12, 1e12)));
         requireAllAgree(b, broadphases, "far away");
+        // A grid over the box around all 31 would need ~10³⁶ cells: the grid hashes them instead.
+        CHECK_FALSE(broadphases[2].grid().dense());
+    }
+}
+
+TEST_CASE("The grid finds brute force's pairs whether it stores its cells densely or hashed", "[broadphase]") {
+    // The random scenes are packed, so the grid stores them densely; a second copy of
+    // each scene gets a few bodies a kilometre away (a box around all of them would need
+    // millions of cells per body), so it is hashed. Both must give brute force's pairs.
+    for (std::uint32_t seed = 11; seed <= 12; ++seed) {
+        Bodies packed = randomBodies(seed, 400);
+        // Boulders among the pebbles, two of them overlapping: oversize bodies that find their
+        // partners in the cells their boxes cover, and each other.
+        const Real middle = Real(0.45) * std::cbrt(Real(400));
+        for (int i = 0; i < 4; ++i) {
+            packed.dynamics.push_back(test::sphere("boulder" + std::to_string(i), Vec3(middle + (i % 2) * 2, middle - i, middle), Vec3(0), 1.5));
+        }
+        Bodies spread = packed;
+        for (int i = 0; i < 3; ++i) {
+            spread.dynamics.push_back(test::sphere("far" + std::to_string(i), Vec3(1000 + i * 0.8, 500, -1000)));
+        }
+        std::vector<Broadphase> forPacked(std::size(kFastBroadphases));
+        std::vector<Broadphase> forSpread(std::size(kFastBroadphases));
+        std::mt19937 random(seed);
+        const Real side = Real(0.9) * std::cbrt(Real(400));
+        for (int step = 0; step < 10; ++step) {
+            requireAllAgree(packed, forPacked, "packed, seed " + std::to_string(seed) + ", step " + std::to_string(step));
+            CHECK(forPacked[2].grid().dense());
+            CHECK(forPacked[2].grid().oversizeCount() >= 5);  // the slab and the boulders
+            requireAllAgree(spread, forSpread, "spread, seed " + std::to_string(seed) + ", step " + std::to_string(step));
+            CHECK_FALSE(forSpread[2].grid().dense());
+            shake(packed, random, side);
+            std::copy(packed.dynamics.begin(), packed.dynamics.end(), spread.dynamics.begin());
+            spread.kinematics = packed.kinematics;
+        }
     }
 }
 
@@ -263,7 +299,7 @@ TEST_CASE("Sweep and prune sorts along the axis of greatest spread", "[broadphas
     CHECK(pairs.empty());
 }
 
-TEST_CASE("Auto picks brute force for a few bodies, then by count, sizes and rest", "[broadphase]") {
+TEST_CASE("Auto picks brute force for a few bodies, then by count and sizes", "[broadphase]") {
     Bodies b;
     for (int i = 0; i < 10; ++i) b.dynamics.push_back(test::sphere("s" + std::to_string(i), Vec3(i, 0, 0)));
     BroadphaseChoice choice = chooseBroadphase(b.view());
@@ -287,18 +323,21 @@ TEST_CASE("Auto picks brute force for a few bodies, then by count, sizes and res
     CHECK(choice.kind == BroadphaseKind::AabbTree);
     CHECK_THAT(choice.reason, Catch::Matchers::Contains("9 larger"));
 
-    // A wall of boxes standing on a floor, each touching its neighbours: at rest, built.
+    // A wall of bricks at rest is bodies of one size like any other: resting earns no
+    // rule of its own (the grid and sweep and prune cost no more than the tree there).
     Bodies wall;
     for (int i = 0; i < 150; ++i) {
         wall.dynamics.push_back(test::dynamicBox("brick" + std::to_string(i), Vec3(i % 15, 0.5 + i / 15, 0), Vec3(1), 1, 0.5));
     }
     wall.planes.push_back(test::ground());
     const BroadphaseChoice built = chooseBroadphase(wall.view());
-    CHECK(built.kind == BroadphaseKind::AabbTree);
-    CHECK_THAT(built.reason, Catch::Matchers::Contains("150 of 150") && Catch::Matchers::Contains("at rest"));
-    // The same wall thrown apart at 3 m/s is not at rest.
-    for (DynamicObject& brick : wall.dynamics) brick.velocity = Vec3(0, 0, 3);
-    CHECK(chooseBroadphase(wall.view()).kind != BroadphaseKind::AabbTree);
+    CHECK(built.kind == BroadphaseKind::SweepAndPrune);
+    CHECK_THAT(built.reason, Catch::Matchers::Contains("150 bodies of similar size"));
+    // 512 of them (kAutoSweepBelow): the grid.
+    for (int i = 150; i < 512; ++i) {
+        wall.dynamics.push_back(test::dynamicBox("brick" + std::to_string(i), Vec3(i % 15, 0.5 + i / 15, 0), Vec3(1), 1, 0.5));
+    }
+    CHECK(chooseBroadphase(wall.view()).kind == BroadphaseKind::Grid);
 
     // The World resolves Auto on its first step and keeps the reason. (Under
     // SequentialImpulse its bounds also hold each body's sweep, |v|·h + ½|a|·h²,

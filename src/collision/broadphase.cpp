@@ -43,34 +43,6 @@ BroadphaseChoice chooseBroadphase(const BodySet& bodies) {
                       dynamicCount, kAutoBruteForceBelow);
         return {BroadphaseKind::BruteForce, text};
     }
-    // Already built and at rest? Which bodies touch something is what a
-    // broadphase finds; the grid finds it in O(n) (this runs once per World).
-    std::vector<Aabb> boxes;
-    boxes.reserve(dynamicCount + bodies.kinematics.size());
-    for (const DynamicObject& body : bodies.dynamics) boxes.push_back(broadphaseBounds(body));
-    for (const KinematicsObject& body : bodies.kinematics) boxes.push_back(broadphaseBounds(body));
-    std::vector<ProxyPair> overlaps;
-    BroadphaseCounters ignored;
-    UniformGrid().findOverlaps({boxes, static_cast<std::uint32_t>(dynamicCount)}, overlaps, ignored);
-    std::vector<std::uint8_t> touching(dynamicCount, 0);
-    for (const ProxyPair& pair : overlaps) {
-        touching[pair.a] = 1;
-        if (pair.b < dynamicCount) touching[pair.b] = 1;
-    }
-    std::size_t resting = 0;
-    for (std::size_t i = 0; i < dynamicCount; ++i) {
-        const bool onPlane = std::any_of(bodies.planes.begin(), bodies.planes.end(),
-                                         [&](const CollisionPlane& plane) { return aabbTouchesPlane(boxes[i], plane); });
-        if ((touching[i] || onPlane) && glm::length(bodies.dynamics[i].velocity) <= kAutoRestingSpeed) ++resting;
-    }
-    if (Real(resting) >= kAutoRestingFraction * Real(dynamicCount)) {
-        std::snprintf(text, sizeof text,
-                      "%zu of %zu dynamic bodies start at rest and touching (a structure already built): the AABB "
-                      "tree leaves resting bodies where they are",
-                      resting, dynamicCount);
-        return {BroadphaseKind::AabbTree, text};
-    }
-
     // How different are the sizes? The grid's cells are sized from the median body.
     std::vector<Real> sizes;
     sizes.reserve(dynamicCount + bodies.kinematics.size());

@@ -50,33 +50,24 @@ struct BroadphaseChoice {
 /// 0.11 against 0.08 ms at 128 bodies, 1.0 against 0.54 ms at 512.
 inline constexpr std::size_t kAutoBruteForceBelow = 64;
 /// Below this many bodies `Auto` prefers sweep and prune to the grid for
-/// bodies of similar size. Measured, sweep and prune is the fastest from 64
-/// to 1 024 bodies and the grid from 4 096 on: the wider the floor the bodies
-/// spread over, the more of them each sweep interval crosses (sweep and
-/// prune's cost per body grows as √n), while the grid's stays flat.
-inline constexpr std::size_t kAutoSweepBelow = 2048;
+/// bodies of similar size. Measured (docs/broadphase.md), the two cost the
+/// same from 128 to 256 bodies, and from 512 on the grid is the faster, by
+/// 1.5 to 2 times at 1 024 to 2 048: the wider the floor the bodies spread
+/// over, the more of them each sweep interval crosses (sweep and prune's cost
+/// per body grows as √n), while the dense grid's stays flat. Structures at
+/// rest (the pyramids) need no rule of their own: there the grid, rebuilt
+/// every step, still costs less than the AABB tree's descent (whose leaves
+/// stay put), and sweep and prune as little as the tree below 512 bodies.
+inline constexpr std::size_t kAutoSweepBelow = 512;
 /// `Auto` picks the grid when at most this many bodies are oversize for it
 /// (larger than kGridOversizeRatio × the median size). Each oversize body is
 /// tested against every other one, n tests each, so a handful of them cost
 /// about what the grid itself costs; more, and the tree is the better choice.
 inline constexpr std::size_t kAutoGridMaxOversize = 8;
 
-/// `Auto` picks the tree for a structure already built and at rest: when at
-/// least this fraction of the dynamic bodies start slower than
-/// kAutoRestingSpeed and touching something (a stack, a pyramid, a wall).
-inline constexpr Real kAutoRestingFraction = Real(0.9);
-/// A body slower than this counts as at rest for `Auto`, m/s. (On the first
-/// step a resting body has the speed gravity gave it in one step, g·h =
-/// 0.16 m/s at 60 steps per second.)
-inline constexpr Real kAutoRestingSpeed = Real(0.5);
-
 /// @brief What `Auto` chooses for these bodies, with the reason in words.
 ///
 /// - fewer than kAutoBruteForceBelow dynamic bodies: brute force;
-/// - a structure at rest (kAutoRestingFraction of the bodies slow and
-///   touching): the AABB tree, whose leaves stay put while the bodies do, so
-///   a step costs only the descent (2 to 4 times faster than the grid on the
-///   pyramids benchmark, docs/broadphase.md);
 /// - bodies of similar size (at most kAutoGridMaxOversize larger than
 ///   kGridOversizeRatio × the median): sweep and prune below kAutoSweepBelow
 ///   bodies, the grid from there on, whose cost per body stays flat;

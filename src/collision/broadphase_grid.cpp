@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <limits>
 
 namespace stepwise {
 
@@ -58,17 +59,168 @@ void UniformGrid::findOverlaps(const ProxySet& proxies, std::vector<ProxyPair>& 
     oversize_.clear();
     if (n == 0) return;
     chooseCellSize(proxies);
-
-    // Each proxy's cell; the oversize ones are set aside.
-    cells_.resize(n);
     isOversize_.assign(n, 0);
     for (std::uint32_t p = 0; p < n; ++p) {
-        cells_[p] = cellOf(proxies.boxes[p].min);
         if (proxies.boxes[p].longestSide() > oversizeLimit_) {
             isOversize_[p] = 1;
             oversize_.push_back(p);
         }
     }
+
+    dense_ = fitDenseGrid(proxies);
+    if (dense_) {
+        findOverlapsDense(proxies, pairs, counters);
+        findOversizeOverlapsDense(proxies, pairs, counters);
+        return;
+    }
+    findOverlapsHashed(proxies, pairs, counters);
+    // Oversize bodies against every other body; two oversize ones only once.
+    for (const std::uint32_t big : oversize_) {
+        for (std::uint32_t q = 0; q < n; ++q) {
+            if (q == big || (isOversize_[q] && q < big)) continue;
+            if (proxies.isKinematic(big) && proxies.isKinematic(q)) continue;
+            ++counters.pairTests;
+            if (proxies.boxes[big].overlaps(proxies.boxes[q])) pairs.push_back(orderedPair(big, q));
+        }
+    }
+}
+
+bool UniformGrid::fitDenseGrid(const ProxySet& proxies) {
+    // The box around the listed bodies' lowest corners, in cells.
+    Vec3 low(std::numeric_limits<Real>::max());
+    Vec3 high(std::numeric_limits<Real>::lowest());
+    std::size_t listed = 0;
+    for (std::uint32_t p = 0; p < proxies.size(); ++p) {
+        if (isOversize_[p]) continue;
+        low = glm::min(low, proxies.boxes[p].min);
+        high = glm::max(high, proxies.boxes[p].min);
+        ++listed;
+    }
+    if (listed == 0) return false;
+    const Vec3 spans = glm::floor((high - low) / cellSize_) + Real(1);  // cells along each axis (in Real: no overflow)
+    if (spans.x * spans.y * spans.z > kGridDenseCellsPerBody * Real(listed)) return false;
+    origin_ = low;
+    for (int axis = 0; axis < 3; ++axis) columns_[axis] = static_cast<std::int32_t>(spans[axis]);
+    return true;
+}
+
+std::uint32_t UniformGrid::slotOf(std::int32_t x, std::int32_t y, std::int32_t z) const {
+    return static_cast<std::uint32_t>((x * columns_[1] + y) * columns_[2] + z);
+}
+
+void UniformGrid::findOverlapsDense(const ProxySet& proxies, std::vector<ProxyPair>& pairs,
+                                    BroadphaseCounters& counters) {
+    const std::uint32_t n = proxies.size();
+    // Each listed proxy's cell; the clamp only absorbs the rounding of (min − origin)/size at the far edge.
+    cells_.resize(n);
+    for (std::uint32_t p = 0; p < n; ++p) {
+        if (isOversize_[p]) continue;
+        const Vec3 offset = (proxies.boxes[p].min - origin_) / cellSize_;
+        Cell& cell = cells_[p];
+        cell.x = std::clamp(static_cast<std::int32_t>(offset.x), 0, columns_[0] - 1);
+        cell.y = std::clamp(static_cast<std::int32_t>(offset.y), 0, columns_[1] - 1);
+        cell.z = std::clamp(static_cast<std::int32_t>(offset.z), 0, columns_[2] - 1);
+    }
+
+    // Counting sort into the cells' slots, x-major.
+    const std::uint32_t slots = static_cast<std::uint32_t>(columns_[0] * columns_[1] * columns_[2]);
+    bucketStart_.assign(slots + 1, 0);
+    for (std::uint32_t p = 0; p < n; ++p) {
+        if (!isOversize_[p]) ++bucketStart_[slotOf(cells_[p].x, cells_[p].y, cells_[p].z) + 1];
+    }
+    for (std::uint32_t s = 0; s < slots; ++s) bucketStart_[s + 1] += bucketStart_[s];
+    entries_.resize(n - oversize_.size());
+    for (std::uint32_t p = 0; p < n; ++p) {
+        if (isOversize_[p]) continue;
+        const Cell& cell = cells_[p];
+        entries_[bucketStart_[slotOf(cell.x, cell.y, cell.z)]++] = {proxies.boxes[p], cell, p};
+    }
+    // Placing moved each start to its slot's end, i.e. to where the next slot starts: shift them back.
+    for (std::uint32_t s = slots; s > 0; --s) bucketStart_[s] = bucketStart_[s - 1];
+    bucketStart_[0] = 0;
+
+    // Tests entry e against the entries [first, last): all three axes (the run is not sorted along any).
+    const auto testRun = [&](std::uint32_t e, std::uint32_t first, std::uint32_t last) {
+        const Entry& entry = entries_[e];
+        const bool kinematic = proxies.isKinematic(entry.proxy);
+        for (std::uint32_t f = first; f < last; ++f) {
+            const Entry& other = entries_[f];
+            if (kinematic && proxies.isKinematic(other.proxy)) continue;  // neither can be pushed
+            ++counters.pairTests;
+            if (entry.box.overlaps(other.box)) pairs.push_back(orderedPair(entry.proxy, other.proxy));
+        }
+    };
+    // The 13 neighbours ahead of a cell in x-major order, as (x, y) columns whose cells z − 1 … z + 1
+    // are one run: (x, y + 1), and (x + 1, y − 1), (x + 1, y), (x + 1, y + 1). Its own column ahead of
+    // it is the rest of its own cell and cell z + 1.
+    constexpr std::int32_t kColumnsAhead[4][2] = {{0, 1}, {1, -1}, {1, 0}, {1, 1}};
+    for (std::uint32_t e = 0; e < entries_.size(); ++e) {
+        const Cell cell = entries_[e].cell;
+        const std::int32_t zLow = std::max(cell.z - 1, 0);
+        const std::int32_t zHigh = std::min(cell.z + 1, columns_[2] - 1);
+        testRun(e, e + 1, bucketStart_[slotOf(cell.x, cell.y, zHigh) + 1]);
+        for (const auto& step : kColumnsAhead) {
+            const std::int32_t x = cell.x + step[0];
+            const std::int32_t y = cell.y + step[1];
+            if (x >= columns_[0] || y < 0 || y >= columns_[1]) continue;
+            testRun(e, bucketStart_[slotOf(x, y, zLow)], bucketStart_[slotOf(x, y, zHigh) + 1]);
+        }
+    }
+}
+
+void UniformGrid::findOversizeOverlapsDense(const ProxySet& proxies, std::vector<ProxyPair>& pairs,
+                                            BroadphaseCounters& counters) {
+    // A listed body can touch an oversize box B only if its lowest corner lies between
+    // B.min − cellSize and B.max: the cells of that range, column by column, hold all
+    // its listed partners (a falling body's swept box, a boulder among pebbles: a few
+    // dozen cells, not the n bodies of a test against everyone).
+    const auto cellRange = [&](Real low, Real high, int axis, std::int32_t& first, std::int32_t& last) {
+        // In Real, clamped to one cell beyond the grid on either side, before the cast: no overflow.
+        const Real lowest = Real(-1);
+        const Real highest = Real(columns_[axis]);
+        first = static_cast<std::int32_t>(std::clamp(std::floor((low - origin_[axis]) / cellSize_), lowest, highest));
+        last = static_cast<std::int32_t>(std::clamp(std::floor((high - origin_[axis]) / cellSize_), lowest, highest));
+        first = std::max(first, 0);
+        last = std::min(last, columns_[axis] - 1);
+        return first <= last;
+    };
+    for (const std::uint32_t big : oversize_) {
+        const Aabb& box = proxies.boxes[big];
+        const bool kinematic = proxies.isKinematic(big);
+        std::int32_t x0, x1, y0, y1, z0, z1;
+        if (!cellRange(box.min.x - cellSize_, box.max.x, 0, x0, x1) ||
+            !cellRange(box.min.y - cellSize_, box.max.y, 1, y0, y1) ||
+            !cellRange(box.min.z - cellSize_, box.max.z, 2, z0, z1)) {
+            continue;  // beyond the grid's bodies on some axis: no listed body can reach it
+        }
+        for (std::int32_t x = x0; x <= x1; ++x) {
+            for (std::int32_t y = y0; y <= y1; ++y) {
+                for (std::uint32_t e = bucketStart_[slotOf(x, y, z0)]; e < bucketStart_[slotOf(x, y, z1) + 1]; ++e) {
+                    const Entry& entry = entries_[e];
+                    if (kinematic && proxies.isKinematic(entry.proxy)) continue;
+                    ++counters.pairTests;
+                    if (box.overlaps(entry.box)) pairs.push_back(orderedPair(big, entry.proxy));
+                }
+            }
+        }
+    }
+    // The oversize bodies among themselves, each pair once.
+    for (std::size_t i = 0; i < oversize_.size(); ++i) {
+        for (std::size_t j = i + 1; j < oversize_.size(); ++j) {
+            const std::uint32_t p = oversize_[i];
+            const std::uint32_t q = oversize_[j];
+            if (proxies.isKinematic(p) && proxies.isKinematic(q)) continue;
+            ++counters.pairTests;
+            if (proxies.boxes[p].overlaps(proxies.boxes[q])) pairs.push_back(orderedPair(p, q));
+        }
+    }
+}
+
+void UniformGrid::findOverlapsHashed(const ProxySet& proxies, std::vector<ProxyPair>& pairs,
+                                     BroadphaseCounters& counters) {
+    const std::uint32_t n = proxies.size();
+    cells_.resize(n);
+    for (std::uint32_t p = 0; p < n; ++p) cells_[p] = cellOf(proxies.boxes[p].min);
 
     // Counting sort of the listed proxies into buckets.
     const std::size_t buckets = std::bit_ceil(std::max<std::size_t>(kGridBucketsPerBody * n, 2));
@@ -109,16 +261,6 @@ void UniformGrid::findOverlaps(const ProxySet& proxies, std::vector<ProxyPair>& 
                     }
                 }
             }
-        }
-    }
-
-    // Oversize bodies against every other body; two oversize ones only once.
-    for (const std::uint32_t big : oversize_) {
-        for (std::uint32_t q = 0; q < n; ++q) {
-            if (q == big || (isOversize_[q] && q < big)) continue;
-            if (proxies.isKinematic(big) && proxies.isKinematic(q)) continue;
-            ++counters.pairTests;
-            if (proxies.boxes[big].overlaps(proxies.boxes[q])) pairs.push_back(orderedPair(big, q));
         }
     }
 }

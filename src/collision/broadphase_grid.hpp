@@ -8,30 +8,43 @@
 
 namespace stepwise {
 
-/// @brief A uniform grid (Ericson, RTCD §7.1), hashed so that it needs no bounds (Teschner et al. 2003).
+/// @brief A uniform grid (Ericson, RTCD §7.1): dense where the bodies are packed, hashed where they are spread.
 ///
 /// Space is cut into cubes of side `cellSize`, at least as large as any body
 /// listed in it. Each body is listed once, in the cell that holds the lowest
-/// corner of its box. If boxes A and B overlap, B's lowest corner lies
-/// between A.min − size_B and A.max on every axis, so it is in one of the
-/// cells from cell(A.min − cellSize) to cell(A.max): 2 or 3 cells per axis,
-/// at most 27. A body looks for partners only there, and only among bodies
-/// with a higher index (a lower one found the pair already), so each pair is
-/// met exactly once.
+/// corner of its box. If boxes A and B overlap, their lowest corners are less
+/// than one cell apart on every axis (B.min < A.max ≤ A.min + cellSize), so
+/// they lie in the same cell or in neighbouring ones: a body's partners are
+/// in the 3 × 3 × 3 cells around its own.
 ///
 /// **Cell size.** Sized from the bodies each step: the largest box among the
 /// bodies no larger than kGridOversizeRatio × the median size. A larger body
 /// (a floor slab, a wall, a boulder among pebbles) is *oversize*: it is not
-/// listed, and is tested against every other body directly, which is cheaper
+/// listed. In the dense grid it looks for partners in the cells its box
+/// covers (grown by one cell below, as for any body), and the oversize bodies
+/// are tested among themselves; in the hashed grid, which has no cell ranges
+/// to walk, it is tested against every other body. Either way that is cheaper
 /// than making every cell big enough to hold it.
 ///
-/// **Storage.** The grid has no bounds: cell (i, j, k) goes to bucket
-/// hash(i, j, k) of a table of B ≥ 2n buckets, B a power of two. Buckets are
-/// filled by a counting sort, so all entries sit in one array, bucket after
-/// bucket: count the entries of each bucket, take the running sum as each
-/// bucket's start, then place the entries. Different cells may share a
-/// bucket, so each entry keeps its cell's coordinates. Rebuilt every step
-/// in O(n), into arrays that keep their capacity: no allocation once running.
+/// **Storage.** Entries are placed by a counting sort, so all of them sit in
+/// one array, cell after cell: count the entries of each cell, take the
+/// running sum as each cell's start, then place them. Rebuilt every step in
+/// O(n), into arrays that keep their capacity: no allocation once running.
+/// Which cell goes where depends on how the bodies are spread:
+/// - **Dense** (a pile, a rain, a room full of bodies): when the box around
+///   the bodies' lowest corners holds at most kGridDenseCellsPerBody cells per
+///   body, every cell of it has a slot, numbered x-major, (x·n_y + y)·n_z + z.
+///   Cells along z are then neighbours in the array too, so the three cells
+///   z − 1, z, z + 1 of one (x, y) column are *one* run of entries. A body
+///   looks at its own cell's entries after itself and at the cells ahead of it
+///   in that order, 13 of the 26 neighbours (the other 13 look at it): five
+///   runs, no hashing, no check of which cell an entry is in.
+/// - **Hashed** (a few bodies kilometres apart, whose box would need more
+///   cells than memory): cell (i, j, k) goes to bucket hash(i, j, k) of a
+///   table of B ≥ 2n buckets, B a power of two (Teschner et al. 2003).
+///   Different cells may share a bucket, so each entry keeps its cell's
+///   coordinates and the search checks them, and a body looks in all 27
+///   cells, keeping only partners of higher index, so each pair is met once.
 class UniformGrid {
 public:
     /// @brief Rebuilds the grid for this step's boxes, then appends every
@@ -42,6 +55,8 @@ public:
     Real cellSize() const { return cellSize_; }
     /// @brief Number of oversize bodies in the last call (tested against all others).
     std::size_t oversizeCount() const { return oversize_.size(); }
+    /// @brief True when the last call stored the cells densely, false when it hashed them.
+    bool dense() const { return dense_; }
 
 private:
     /// Integer coordinates of a cell.
@@ -60,6 +75,12 @@ private:
     Cell cellOf(const Vec3& point) const;
     std::size_t bucketOf(const Cell& cell) const;
     void chooseCellSize(const ProxySet& proxies);
+    bool fitDenseGrid(const ProxySet& proxies);
+    std::uint32_t slotOf(std::int32_t x, std::int32_t y, std::int32_t z) const;
+    void findOverlapsDense(const ProxySet& proxies, std::vector<ProxyPair>& pairs, BroadphaseCounters& counters);
+    void findOversizeOverlapsDense(const ProxySet& proxies, std::vector<ProxyPair>& pairs,
+                                   BroadphaseCounters& counters);
+    void findOverlapsHashed(const ProxySet& proxies, std::vector<ProxyPair>& pairs, BroadphaseCounters& counters);
 
     Real cellSize_ = 1;                        ///< Side of a cell, m.
     Real oversizeLimit_ = 1;                   ///< Bodies larger than this are oversize, m.
@@ -69,13 +90,22 @@ private:
     std::vector<std::uint8_t> isOversize_;     ///< 1 for a proxy not listed in the grid.
     std::vector<std::uint32_t> bucketStart_;   ///< Start of each bucket in entries_; one extra at the end.
     std::vector<Entry> entries_;               ///< Every listed proxy, bucket after bucket.
-    int bucketBits_ = 0;                       ///< B = 2^bucketBits_ buckets.
+    int bucketBits_ = 0;                       ///< B = 2^bucketBits_ buckets (hashed).
+    bool dense_ = false;                       ///< Whether the last call stored the cells densely.
+    Vec3 origin_{0, 0, 0};                     ///< Lowest corner of the dense grid's cell (0, 0, 0), m.
+    std::int32_t columns_[3] = {1, 1, 1};      ///< Dense grid: number of cells along x, y, z.
 };
 
 /// Bodies up to this many times the median size share the grid, and the
 /// cells are as large as the largest of them; larger bodies are oversize.
 /// With 2, a grid of spheres whose radii vary by ±50 % lists them all.
 inline constexpr Real kGridOversizeRatio = Real(2);
+/// The dense grid is used when the box around the listed bodies needs at
+/// most this many cells per body; a sparser scene is hashed. In a pile there
+/// is about one cell per body, so 8 leaves room for a scene twice as wide on
+/// every axis, while clearing the cell starts (4 bytes each) stays cheaper
+/// than the bodies' own entries.
+inline constexpr Real kGridDenseCellsPerBody = Real(8);
 /// Buckets per listed body, at least: most buckets hold one cell, so a
 /// lookup rarely walks past entries of other cells.
 inline constexpr std::size_t kGridBucketsPerBody = 2;
