@@ -102,6 +102,17 @@ void integrateVerlet(std::span<DynamicObject> bodies, Real h, const Acceleration
 /// any body, with the ω of the step's start.
 Quat rotateByAngularVelocity(const Quat& orientation, const Vec3& omega, Real h);
 
+/// @brief Turns @p orientation by the small angle |@p omega|·@p h about @p omega (world frame):
+/// q ← normalise(q + ½·h·(0, ω)⊗q), Catto's rotation update in Box2D (b2IntegrateRotation).
+///
+/// A turn by 2·atan(|ω|·h/2) instead of |ω|·h: short of the exact
+/// rotateByAngularVelocity() by (|ω|·h)³/12 rad, 10⁻¹⁰ rad for a turn of
+/// 10⁻³ rad. Cheaper (a quaternion product, no series), so used where the
+/// angle is a correction of that size: the drift by the solver's Δω
+/// (velocity_change_drift.cpp). Not for free flight, whose whole rotation it
+/// would make slightly slow, step after step.
+Quat turnBySmallAngle(const Quat& orientation, const Vec3& omega, Real h);
+
 /// @brief The torque-free motion of a rigid body for @p h seconds: the orientation
 /// after the symmetric splitting 1(h/2) 2(h/2) 3(h) 2(h/2) 1(h/2) of the free-body energy.
 ///

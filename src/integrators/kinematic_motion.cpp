@@ -74,6 +74,15 @@ Quat rotateByAngularVelocity(const Quat& orientation, const Vec3& omega, Real h)
     return renormalise(turn * orientation);
 }
 
+Quat turnBySmallAngle(const Quat& orientation, const Vec3& omega, Real h) {
+    // q̇ = ½·(0, ω)⊗q for a world-frame ω; one explicit Euler step of it is
+    // q + ½h·(0, ω)⊗q = (1, φ·n)⊗q with φ = |ω|·h/2 and n = ω/|ω|, which after
+    // normalising is a turn by 2·atan φ = |ω|·h − (|ω|·h)³/12 + …: the exact
+    // turn to third order in the angle, for a quaternion product and no series.
+    const Vec3 half = (Real(0.5) * h) * omega;
+    return renormalise(orientation + Quat(0, half.x, half.y, half.z) * orientation);
+}
+
 void moveKinematics(std::span<KinematicsObject> bodies, Real h) {
     for (KinematicsObject& body : bodies) {
         body.position += h * body.velocity;

@@ -6,7 +6,15 @@
 /// Δv (and the angular velocity by Δω). Had those impulses been there from
 /// the substep's start, the body would also have moved by h_s·Δv and turned
 /// by h_s·Δω, so that is added here:
-/// \f[ x \leftarrow x + h_s\,\Delta v, \qquad q \leftarrow \exp(\tfrac12 h_s\,\Delta\omega)\,q. \f]
+/// \f[ x \leftarrow x + h_s\,\Delta v, \qquad
+///     q \leftarrow \frac{q + \tfrac12 h_s\,(0, \Delta\omega)\otimes q}{\lVert\cdot\rVert}. \f]
+/// The turn is the first-order update Box2D makes for every rotation
+/// (turnBySmallAngle()): h_s·Δω is the solver's correction of one substep, a
+/// milliradian or less, and the update misses the exact turn exp(½h_s Δω)·q
+/// by (h_s|Δω|)³/12, far below what splitting the substep into a free-flight
+/// turn and this one already costs, O(h_s²·|ω|·|Δω|). The exact turn, with
+/// its series for cos and sin, took 5 % of a sphere rain's step here, this
+/// one 2 % (perf, 4 096 spheres).
 /// For symplectic Euler the result is exactly x_n + h_s·v_{n+1}, the
 /// position update every sequential-impulse engine makes after its solve
 /// (Box2D's "integrate positions"). Without this drift a resting body would
@@ -46,7 +54,7 @@ void driftByVelocityChange(std::span<DynamicObject> bodies, std::span<const Vec3
         const Vec3 turn = body.angularVelocity - angularVelocityBefore[i];
         if (change == Vec3(0) && turn == Vec3(0)) continue;  // free flight: the integrator's own step stands
         body.position += h * change + lag * h * h * body.acceleration;
-        if (turn != Vec3(0)) body.orientation = rotateByAngularVelocity(body.orientation, turn, h);
+        if (turn != Vec3(0)) body.orientation = turnBySmallAngle(body.orientation, turn, h);
     }
 }
 
