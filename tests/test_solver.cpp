@@ -371,3 +371,39 @@ TEST_CASE("Ball-ball and ball-plane contacts have computed rows; a box's or a ki
     CHECK(round == 3);   // low–plane, high–low, pushed–plane
     CHECK(stored >= 2);  // the box's corners on the plane, pushed–pusher
 }
+
+TEST_CASE("The warm-start lookup from where the last one ended finds what the plain search finds", "[solver]") {
+    // A cache of 300 keys, a few pairs with several points; lookups in the narrowphase's
+    // order (ascending, with the points of a pair shuffled), with new contacts mixed in
+    // and some old ones gone, and then in no order at all.
+    std::vector<CachedImpulse> cache;
+    for (std::uint32_t a = 0; a < 100; ++a) {
+        for (std::uint32_t feature = 0; feature < (a % 7 == 0 ? 4u : 1u); ++feature) {
+            cache.push_back({{a, a + 1, feature}, Real(a), Vec3(0)});
+        }
+    }
+    std::vector<ContactKey> lookups;
+    for (std::uint32_t a = 0; a < 102; ++a) {
+        if (a % 11 == 5) continue;                                   // gone since last step
+        const std::uint32_t points = a % 7 == 0 ? 4u : 1u;
+        for (std::uint32_t k = 0; k < points; ++k) lookups.push_back({a, a + 1, points - 1 - k});  // features descending
+        if (a % 13 == 0) lookups.push_back({a, a + 2, 0});           // new this step
+    }
+    const auto check = [&](const std::vector<ContactKey>& order) {
+        std::size_t next = 0;
+        std::size_t found = 0;
+        for (const ContactKey& key : order) {
+            const CachedImpulse* plain = findCachedImpulse(cache, key);
+            const CachedImpulse* hinted = findCachedImpulse(cache, key, next);
+            REQUIRE(plain == hinted);
+            if (plain) ++found;
+        }
+        return found;
+    };
+    const std::size_t foundInOrder = check(lookups);
+    CHECK(foundInOrder > 0);
+    std::vector<ContactKey> shuffled = lookups;
+    std::reverse(shuffled.begin(), shuffled.end());
+    std::rotate(shuffled.begin(), shuffled.begin() + 37, shuffled.end());
+    CHECK(check(shuffled) == foundInOrder);
+}

@@ -250,11 +250,12 @@ void prepareContacts(const BodySet& bodies, std::span<const Contact> contacts, R
     workspace.starts.resize(contacts.size());
     workspace.rows.clear();
     workspace.turningAnchors.clear();
+    std::size_t nextCached = 0;  // the contacts come in key order, mostly: each lookup starts where the last ended
     for (std::size_t i = 0; i < contacts.size(); ++i) {
         SolverContact& c = workspace.contacts[i];
         c = prepareOne(bodies, contacts[i], h, workspace, workspace.starts[i]);
         if (!warmStart) continue;
-        if (const CachedImpulse* cached = findCachedImpulse(workspace.previousImpulses, keyOf(contacts[i]))) {
+        if (const CachedImpulse* cached = findCachedImpulse(workspace.previousImpulses, keyOf(contacts[i]), nextCached)) {
             c.normalImpulse = cached->normalImpulse;
             // Tangent axes are rebuilt each step: the friction is carried as a world vector.
             for (int k = 0; k < 2; ++k) c.tangentImpulse[k] = glm::dot(cached->frictionImpulse, c.tangent[k]);
@@ -411,8 +412,12 @@ void storeContactImpulses(std::span<const Contact> contacts, SolverWorkspace& wo
                           glm::length(friction)};
         }
     }
-    std::sort(workspace.currentImpulses.begin(), workspace.currentImpulses.end(),
-              [](const CachedImpulse& x, const CachedImpulse& y) { return x.key < y.key; });
+    // In key order for next step's lookups. The narrowphase's order is the keys' order but for
+    // the points of one pair, whose feature ids need not ascend: most steps there is nothing to sort.
+    const auto byKey = [](const CachedImpulse& x, const CachedImpulse& y) { return x.key < y.key; };
+    if (!std::is_sorted(workspace.currentImpulses.begin(), workspace.currentImpulses.end(), byKey)) {
+        std::sort(workspace.currentImpulses.begin(), workspace.currentImpulses.end(), byKey);
+    }
     std::swap(workspace.previousImpulses, workspace.currentImpulses);
     // ω was updated alongside L with the step's fixed I⁻¹; make them agree exactly again.
     // Once per body in a contact: the result depends only on L and the orientation.

@@ -37,6 +37,18 @@ const CachedImpulse* findCachedImpulse(const std::vector<CachedImpulse>& cache, 
     return (found == cache.end() || found->key != key) ? nullptr : &*found;
 }
 
+const CachedImpulse* findCachedImpulse(const std::vector<CachedImpulse>& cache, const ContactKey& key,
+                                       std::size_t& next) {
+    if (next < cache.size() && cache[next].key == key) return &cache[next++];
+    const bool ahead = next < cache.size() && cache[next].key < key;
+    const auto from = ahead ? cache.begin() + static_cast<std::ptrdiff_t>(next) : cache.begin();
+    const auto found = std::lower_bound(from, cache.end(), key,
+                                        [](const CachedImpulse& entry, const ContactKey& k) { return entry.key < k; });
+    if (found == cache.end() || found->key != key) return nullptr;
+    next = static_cast<std::size_t>(found - cache.begin()) + 1;
+    return &*found;
+}
+
 namespace {
 
 /// Sets up one contact: lever arms, effective masses, and the bounce it aims for.

@@ -104,6 +104,17 @@ ContactKey keyOf(const Contact& contact);
 /// @brief The entry of @p cache (sorted by key) for @p key, or nullptr when that point is new this step.
 const CachedImpulse* findCachedImpulse(const std::vector<CachedImpulse>& cache, const ContactKey& key);
 
+/// @brief The same search for contacts looked up in (mostly) ascending key order,
+/// the narrowphase's order: @p next is where the last lookup ended (0 before the first).
+///
+/// Each contact found again is usually the entry right after the last one
+/// found, so that entry is compared first, and a search is needed only for a
+/// new contact or one out of order (then from @p next on when the key lies
+/// ahead, over the whole cache otherwise). Finds exactly what the plain
+/// search finds, in O(1) instead of O(log n) for most contacts.
+const CachedImpulse* findCachedImpulse(const std::vector<CachedImpulse>& cache, const ContactKey& key,
+                                       std::size_t& next);
+
 /// @brief Scratch arrays of stages 6 and 7, owned by the World and reused every step.
 struct ContactWorkspace {
     std::vector<CachedImpulse> previousImpulses; ///< Last step's impulses, sorted by key (warm starting).
