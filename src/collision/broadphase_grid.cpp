@@ -25,6 +25,15 @@ std::int32_t cellIndex(Real coordinate, Real cellSize) {
     return static_cast<std::int32_t>(std::clamp(index, -kGridMaxCellIndex, kGridMaxCellIndex));
 }
 
+/// Compares the boxes of proxies @p p and @p q, and keeps the pair if they overlap;
+/// two kinematic bodies are never compared (neither can be pushed).
+void testPair(const ProxySet& proxies, std::uint32_t p, std::uint32_t q, std::vector<ProxyPair>& pairs,
+              BroadphaseCounters& counters) {
+    if (proxies.isKinematic(p) && proxies.isKinematic(q)) return;
+    ++counters.pairTests;
+    if (proxies.boxes[p].overlaps(proxies.boxes[q])) pairs.push_back(orderedPair(p, q));
+}
+
 }  // namespace
 
 UniformGrid::Cell UniformGrid::cellOf(const Vec3& point) const {
@@ -71,17 +80,18 @@ void UniformGrid::findOverlaps(const ProxySet& proxies, std::vector<ProxyPair>& 
     if (dense_) {
         findOverlapsDense(proxies, pairs, counters);
         findOversizeOverlapsDense(proxies, pairs, counters);
-        return;
-    }
-    findOverlapsHashed(proxies, pairs, counters);
-    // Oversize bodies against every other body; two oversize ones only once.
-    for (const std::uint32_t big : oversize_) {
-        for (std::uint32_t q = 0; q < n; ++q) {
-            if (q == big || (isOversize_[q] && q < big)) continue;
-            if (proxies.isKinematic(big) && proxies.isKinematic(q)) continue;
-            ++counters.pairTests;
-            if (proxies.boxes[big].overlaps(proxies.boxes[q])) pairs.push_back(orderedPair(big, q));
+    } else {
+        findOverlapsHashed(proxies, pairs, counters);
+        // Oversize bodies against every listed body: the hashed grid has no cell ranges to walk.
+        for (const std::uint32_t big : oversize_) {
+            for (std::uint32_t q = 0; q < n; ++q) {
+                if (!isOversize_[q]) testPair(proxies, big, q, pairs, counters);
+            }
         }
+    }
+    // The oversize bodies among themselves, each pair once.
+    for (std::size_t i = 0; i < oversize_.size(); ++i) {
+        for (std::size_t j = i + 1; j < oversize_.size(); ++j) testPair(proxies, oversize_[i], oversize_[j], pairs, counters);
     }
 }
 
@@ -186,7 +196,6 @@ void UniformGrid::findOversizeOverlapsDense(const ProxySet& proxies, std::vector
     };
     for (const std::uint32_t big : oversize_) {
         const Aabb& box = proxies.boxes[big];
-        const bool kinematic = proxies.isKinematic(big);
         std::int32_t x0, x1, y0, y1, z0, z1;
         if (!cellRange(box.min.x - cellSize_, box.max.x, 0, x0, x1) ||
             !cellRange(box.min.y - cellSize_, box.max.y, 1, y0, y1) ||
@@ -196,22 +205,9 @@ void UniformGrid::findOversizeOverlapsDense(const ProxySet& proxies, std::vector
         for (std::int32_t x = x0; x <= x1; ++x) {
             for (std::int32_t y = y0; y <= y1; ++y) {
                 for (std::uint32_t e = bucketStart_[slotOf(x, y, z0)]; e < bucketStart_[slotOf(x, y, z1) + 1]; ++e) {
-                    const Entry& entry = entries_[e];
-                    if (kinematic && proxies.isKinematic(entry.proxy)) continue;
-                    ++counters.pairTests;
-                    if (box.overlaps(entry.box)) pairs.push_back(orderedPair(big, entry.proxy));
+                    testPair(proxies, big, entries_[e].proxy, pairs, counters);
                 }
             }
-        }
-    }
-    // The oversize bodies among themselves, each pair once.
-    for (std::size_t i = 0; i < oversize_.size(); ++i) {
-        for (std::size_t j = i + 1; j < oversize_.size(); ++j) {
-            const std::uint32_t p = oversize_[i];
-            const std::uint32_t q = oversize_[j];
-            if (proxies.isKinematic(p) && proxies.isKinematic(q)) continue;
-            ++counters.pairTests;
-            if (proxies.boxes[p].overlaps(proxies.boxes[q])) pairs.push_back(orderedPair(p, q));
         }
     }
 }

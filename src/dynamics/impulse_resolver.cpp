@@ -31,12 +31,6 @@ ContactKey keyOf(const Contact& contact) {
     return {contact.a, (static_cast<std::uint32_t>(contact.b.kind) << kKindShift) | contact.b.index, contact.featureId};
 }
 
-const CachedImpulse* findCachedImpulse(const std::vector<CachedImpulse>& cache, const ContactKey& key) {
-    const auto found = std::lower_bound(cache.begin(), cache.end(), key,
-                                        [](const CachedImpulse& entry, const ContactKey& k) { return entry.key < k; });
-    return (found == cache.end() || found->key != key) ? nullptr : &*found;
-}
-
 const CachedImpulse* findCachedImpulse(const std::vector<CachedImpulse>& cache, const ContactKey& key,
                                        std::size_t& next) {
     if (next < cache.size() && cache[next].key == key) return &cache[next++];
@@ -47,6 +41,11 @@ const CachedImpulse* findCachedImpulse(const std::vector<CachedImpulse>& cache, 
     if (found == cache.end() || found->key != key) return nullptr;
     next = static_cast<std::size_t>(found - cache.begin()) + 1;
     return &*found;
+}
+
+const CachedImpulse* findCachedImpulse(const std::vector<CachedImpulse>& cache, const ContactKey& key) {
+    std::size_t start = 0;  // from the first entry: a search of the whole cache
+    return findCachedImpulse(cache, key, start);
 }
 
 namespace {
