@@ -82,7 +82,7 @@ ContactSolverSettings substepSettings() {
 TEST_CASE("Waves: no wave holds two contacts of one dynamic body, each body meets its contacts in order", "[solver][lanes]") {
     BallHeap heap;
     SolverWorkspace workspace;
-    prepareContacts(heap.bodies(), heap.contacts, Real(1) / 60, false, workspace);
+    prepareContacts(heap.bodies(), heap.contacts, {}, Real(1) / 60, false, workspace);
     REQUIRE(workspace.contacts.size() > 100);  // a heap, not a handful
 
     std::vector<int> solved(workspace.contacts.size(), 0);
@@ -141,7 +141,7 @@ TEST_CASE("A pass in lanes is the scalar pass, four contacts at a time", "[solve
     BallHeap heap;
     const ContactSolverSettings settings = substepSettings();
     SolverWorkspace lanes;
-    prepareContacts(heap.bodies(), heap.contacts, Real(1) / 60, false, lanes);
+    prepareContacts(heap.bodies(), heap.contacts, {}, Real(1) / 60, false, lanes);
     // Something to warm start from: the impulses a previous step might have left.
     for (SolverContact& c : lanes.contacts) {
         c.normalImpulse = Real(0.01) * c.normalMass;

@@ -66,6 +66,54 @@ TEST_CASE("A non-finite state stops the step naming object, stage and step", "[w
     }
 }
 
+namespace {
+/// Writes NaN into one body's velocity right after the integrate stage of one substep: a
+/// non-finite number the next stages did not make, to see which check finds it.
+struct NaNAfterIntegrate : StepObserver {
+    World* world = nullptr;
+    std::size_t body = 0;
+    void afterStage(const StageEvent& event, const World&) override {
+        if (event.stage == Stage::Integrate && event.step == 3 && event.substep == 5) {
+            world->dynamics()[body].velocity.x = std::numeric_limits<Real>::quiet_NaN();
+        }
+    }
+};
+}  // namespace
+
+TEST_CASE("Sequential impulse: a non-finite velocity is named by the first stage that moves the body", "[world]") {
+    // After the solve and relax stages the check reads the solver's packed records, the only bodies those
+    // stages move (World::checkFinite): a body in a contact is named there, a free one at the next integrate.
+    Scene scene = test::emptyScene();
+    scene.dynamics.push_back(test::sphere("resting", Vec3(0, 0.5, 0)));
+    scene.dynamics.push_back(test::sphere("flying", Vec3(5, 20, 0)));
+    scene.planes.push_back(test::ground());
+    World world(scene);
+    NaNAfterIntegrate saboteur;
+    saboteur.world = &world;
+    world.setObserver(&saboteur);
+    SECTION("in a contact: the solve") {
+        saboteur.body = 0;
+        try {
+            for (int i = 0; i < 5; ++i) world.step();
+            FAIL("no SimulationError");
+        } catch (const SimulationError& error) {
+            CHECK(error.objectName() == "resting");
+            CHECK(error.stageName() == "solve-constraints");
+            CHECK_THAT(error.what(), Contains("non-finite"));  // the drift has moved it by h·NaN: its position
+        }
+    }
+    SECTION("in free flight: the next integrate") {
+        saboteur.body = 1;
+        try {
+            for (int i = 0; i < 5; ++i) world.step();
+            FAIL("no SimulationError");
+        } catch (const SimulationError& error) {
+            CHECK(error.objectName() == "flying");
+            CHECK(error.stageName() == "integrate");
+        }
+    }
+}
+
 TEST_CASE("A World refuses impossible objects by name", "[world]") {
     Scene scene = test::emptyScene();
     scene.dynamics.push_back(test::sphere("ghost", Vec3(0)));

@@ -12,26 +12,25 @@ namespace stepwise {
 
 namespace {
 
-/// Keeps each record's velocities as this substep's contact passes find
-/// them, for warmStartFromLastSubstep() in the next substep.
-void rememberSubstepStart(SolverWorkspace& w) {
-    w.substepStart.resize(w.bodies.size());
-    for (std::size_t i = 1; i < w.bodies.size(); ++i) w.substepStart[i] = {w.bodies[i].velocity, w.bodies[i].angularVelocity};
-}
-
-/// Gives every dynamic body in a contact its solver-body record, numbered in
-/// the order of the World's dynamic array: its mass, and its world inertia and
-/// inverse inertia, once per body per step. In that order the copies in and
+/// Gives every dynamic body in a contact or a joint its solver-body record,
+/// numbered in the order of the World's dynamic array: its mass, and its world
+/// inertia and inverse inertia, once per body per step. In that order the copies in and
 /// out of the records (copyVelocitiesIn(), copyVelocitiesOut(),
 /// warmStartFromLastSubstep()) walk the objects front to back, as the memory
 /// prefetcher likes, instead of jumping about a many-megabyte array in the
 /// order the contacts happen to meet their bodies.
-void makeBodyRecords(const BodySet& bodies, std::span<const Contact> contacts, SolverWorkspace& w) {
+void makeBodyRecords(const BodySet& bodies, std::span<const Contact> contacts, std::span<const BodyLink> links,
+                     SolverWorkspace& w) {
     constexpr std::uint32_t kInContact = 1;  // any value but kStaticSolverBody, overwritten below
     w.bodyRecord.assign(bodies.dynamics.size(), kStaticSolverBody);
     for (const Contact& contact : contacts) {
         w.bodyRecord[contact.a] = kInContact;
         if (contact.b.kind == BodyKind::Dynamic) w.bodyRecord[contact.b.index] = kInContact;
+    }
+    // A joint moves its bodies too, and the drift moves only bodies with a record (driftByVelocityChange())
+    for (const BodyLink& link : links) {
+        w.bodyRecord[link.a] = kInContact;
+        if (link.b != kWorldAnchor) w.bodyRecord[link.b] = kInContact;
     }
     w.bodies.clear();
     w.inertias.clear();
@@ -242,10 +241,10 @@ Real currentSeparation(const SolverContact& c, const SolverWorkspace& w) {
     return separation;
 }
 
-void prepareContacts(const BodySet& bodies, std::span<const Contact> contacts, Real h, bool warmStart,
-                     SolverWorkspace& workspace) {
+void prepareContacts(const BodySet& bodies, std::span<const Contact> contacts, std::span<const BodyLink> links, Real h,
+                     bool warmStart, SolverWorkspace& workspace) {
     workspace.dynamics = bodies.dynamics;
-    makeBodyRecords(bodies, contacts, workspace);  // last step's records are dropped
+    makeBodyRecords(bodies, contacts, links, workspace);  // last step's records are dropped
     workspace.contacts.resize(contacts.size());
     workspace.starts.resize(contacts.size());
     workspace.rows.clear();
@@ -270,10 +269,15 @@ void recordPoses(const BodySet& bodies, SolverWorkspace& workspace) {
     for (std::size_t i = 0; i < dynamicCount; ++i) {
         workspace.poses[i] = {bodies.dynamics[i].position, bodies.dynamics[i].orientation};
     }
+    recordKinematicPoses(bodies, workspace);
+    workspace.poses.back() = Pose{};  // the planes' fixed pose at the origin
+}
+
+void recordKinematicPoses(const BodySet& bodies, SolverWorkspace& workspace) {
+    const std::size_t dynamicCount = bodies.dynamics.size();
     for (std::size_t i = 0; i < bodies.kinematics.size(); ++i) {
         workspace.poses[dynamicCount + i] = {bodies.kinematics[i].position, bodies.kinematics[i].orientation};
     }
-    workspace.poses.back() = Pose{};  // the planes' fixed pose at the origin
 }
 
 void copyVelocitiesIn(SolverWorkspace& workspace) {
@@ -285,16 +289,14 @@ void copyVelocitiesIn(SolverWorkspace& workspace) {
 }
 
 void copyVelocitiesOut(SolverWorkspace& workspace) {
+    for (std::size_t i = 1; i < workspace.bodies.size(); ++i) copyVelocitiesOut(workspace, i);
+}
+
+void recordSubstepStart(SolverWorkspace& workspace) {
+    workspace.substepStart.resize(workspace.bodies.size());
     for (std::size_t i = 1; i < workspace.bodies.size(); ++i) {
-        const SolverBody& s = workspace.bodies[i];
-        DynamicObject& body = workspace.dynamics[workspace.recordBody[i]];
-        body.velocity = s.velocity;
-        // The passes changed ω by I⁻¹·ΔL with the step's world I⁻¹, so L changed by ΔL = I·Δω;
-        // a ball's I is one number (the same product as with its tensor I·E, without reading it).
-        const Vec3 turn = s.angularVelocity - body.angularVelocity;
-        const Real ballInertia = workspace.ballInertia[i];
-        body.angularMomentum += ballInertia != Real(0) ? ballInertia * turn : workspace.inertias[i].inertia * turn;
-        body.angularVelocity = s.angularVelocity;
+        const DynamicObject& body = workspace.dynamics[workspace.recordBody[i]];
+        workspace.substepStart[i] = {body.velocity, body.angularVelocity};
     }
 }
 
@@ -311,7 +313,6 @@ void warmStartContacts(SolverWorkspace& workspace, bool accumulate) {
         return;
     }
     std::vector<SolverBody>& bodies = workspace.bodies;
-    rememberSubstepStart(workspace);
     warmStartRoundContacts(workspace);
     for (const std::uint32_t index : workspace.otherContacts) {
         const SolverContact& c = workspace.contacts[index];

@@ -47,6 +47,7 @@
 
 #include "collision/contact.hpp"
 #include "dynamics/impulse_resolver.hpp"
+#include "dynamics/islands.hpp"
 #include "dynamics/round_contact_lanes.hpp"
 #include "dynamics/softness.hpp"
 #include "dynamics/solver_body.hpp"
@@ -184,7 +185,7 @@ struct SolverWorkspace {
     std::vector<ContactStart> starts;            ///< The same contacts' origin and bounce (cold: prepare, bounce, trace).
     std::vector<ContactRows> rows;               ///< Rows of the contacts that are not round (boxes, kinematic bodies).
     std::vector<TurningAnchors> turningAnchors;  ///< Anchors of the contacts with a turning anchor (boxes).
-    std::vector<SolverBody> bodies;              ///< Record 0 static, then one per dynamic body in a contact (solver_body.hpp).
+    std::vector<SolverBody> bodies;              ///< Record 0 static, then one per dynamic body in a contact or a joint (solver_body.hpp).
     std::vector<SolverBodyInertia> inertias;     ///< The same records' inertia (cold: prepare, and a box's write-back).
     std::vector<std::uint32_t> recordBody;       ///< Per record: its body's index in the World's dynamic array (the copies in and out).
     std::vector<Real> ballInertia;               ///< Per record: a ball's I, kg·m², for ΔL = I·Δω at the write-back (zero: a box).
@@ -195,9 +196,9 @@ struct SolverWorkspace {
     /// The poses separations are measured at: the dynamic bodies (by index, as the joints read them), then the
     /// kinematic bodies, then one fixed pose at the origin that every plane contact's B uses.
     std::vector<Pose> poses;
-    std::vector<BodyVelocity> substepStart;      ///< Per record: v and ω before this substep's warm start.
-    std::vector<Vec3> velocityBefore;            ///< Per dynamic body: v before this substep's solve, m/s.
-    std::vector<Vec3> angularVelocityBefore;     ///< Per dynamic body: ω before this substep's solve, rad/s.
+    /// Per record: v and ω as free flight left them, before this substep's warm start (of joints or
+    /// contacts): what the drift measures Δv from, and what warmStartFromLastSubstep() subtracts.
+    std::vector<BodyVelocity> substepStart;
     /// The round contacts, four of one wave per batch (round_contact_lanes.hpp). Through the
     /// substeps their impulses live here; syncRoundContacts() copies them into `contacts`.
     std::vector<RoundBatch> roundBatches;
@@ -211,7 +212,10 @@ struct SolverWorkspace {
 
 /// @brief Builds one SolverContact per contact: anchors, effective masses,
 /// bounce, and (with @p warmStart) last step's impulses; and a SolverBody
-/// record for each dynamic body in a contact, with its world I⁻¹ for the step.
+/// record for each dynamic body in a contact or held by a joint (@p links),
+/// with its world I⁻¹ for the step. Every body a constraint can move has a
+/// record, so the passes over the records (the copies, the drift) reach
+/// all of them and no other.
 ///
 /// The bounce: the relative normal velocity v_n (< 0 approaching) is taken
 /// before any impulse, at the start of the step, when the surfaces are a gap
@@ -224,16 +228,21 @@ struct SolverWorkspace {
 /// resting and does not bounce (a box on a floor is pulled in by g·h every
 /// step; that is not an impact).
 /// @param h full step, s (for the resting rule)
-void prepareContacts(const BodySet& bodies, std::span<const Contact> contacts, Real h, bool warmStart,
-                     SolverWorkspace& workspace);
+void prepareContacts(const BodySet& bodies, std::span<const Contact> contacts, std::span<const BodyLink> links, Real h,
+                     bool warmStart, SolverWorkspace& workspace);
 
 /// @brief Records every body's pose: the separations of the next solveContacts() are measured there.
 ///
 /// The solve measures C where the bodies were at the start of the substep,
 /// before free flight moved them: its bias then means what Box2D's does,
 /// "C + h_s·v_n ≥ 0 after the substep" (the drift moves the bodies with the
-/// solved velocity). The relax pass measures C where they are after the drift.
+/// solved velocity). The relax pass measures C where they are after the drift,
+/// which records the poses of the bodies it moves (driftByVelocityChange())
+/// and leaves the kinematic ones to recordKinematicPoses().
 void recordPoses(const BodySet& bodies, SolverWorkspace& workspace);
+
+/// @brief Records the kinematic bodies' poses only: where move-kinematics left them, for the relax passes.
+void recordKinematicPoses(const BodySet& bodies, SolverWorkspace& workspace);
 
 /// @brief C of contact @p c at the poses recordPoses() last recorded, m (> 0: a gap).
 ///
@@ -255,12 +264,32 @@ void copyVelocitiesIn(SolverWorkspace& workspace);
 /// @brief Writes the solver bodies' velocities back to the World's objects; the angular momentum follows, ΔL = I·Δω.
 void copyVelocitiesOut(SolverWorkspace& workspace);
 
+/// @brief copyVelocitiesOut() for record @p record alone; returns its object.
+/// (The drift writes back each body it is about to move, in the same pass: driftByVelocityChange().)
+inline DynamicObject& copyVelocitiesOut(SolverWorkspace& workspace, std::size_t record) {
+    const SolverBody& s = workspace.bodies[record];
+    DynamicObject& body = workspace.dynamics[workspace.recordBody[record]];
+    body.velocity = s.velocity;
+    // The passes changed ω by I⁻¹·ΔL with the step's world I⁻¹, so L changed by ΔL = I·Δω;
+    // a ball's I is one number (the same product as with its tensor I·E, without reading it).
+    const Vec3 turn = s.angularVelocity - body.angularVelocity;
+    const Real ballInertia = workspace.ballInertia[record];
+    body.angularMomentum += ballInertia != Real(0) ? ballInertia * turn : workspace.inertias[record].inertia * turn;
+    body.angularVelocity = s.angularVelocity;
+    return body;
+}
+
+/// @brief Notes each record's v and ω as free flight left them (SolverWorkspace::substepStart), before
+/// anything acts on them this substep: the drift moves a body by what the constraints changed since.
+void recordSubstepStart(SolverWorkspace& workspace);
+
 /// @brief Applies every contact's accumulated impulses (the warm start), at the start of a substep.
 /// With @p accumulate off, instead starts each contact's impulses from zero.
 void warmStartContacts(SolverWorkspace& workspace, bool accumulate);
 
 /// @brief The same warm start in a later substep of the step, per body instead of per contact;
-/// copies the velocities in from the objects as copyVelocitiesIn() does.
+/// copies the velocities in from the objects as copyVelocitiesIn() does, and notes them as
+/// recordSubstepStart() does.
 ///
 /// The warm start gives each body Σ_c λ_c·M⁻¹J_cᵀ over its contacts, with the
 /// accumulated impulses λ_c as the last substep left them. Within a step the

@@ -16,7 +16,7 @@
 /// point_impulse.hpp) and goes into the contacts' rows (ContactRow below),
 /// not into the record a pass reads.
 ///
-/// Only bodies that are in a contact get a record, numbered in the order of
+/// Only bodies that are in a contact or a joint get a record, numbered in the order of
 /// the World's dynamic array, so that the copies in and out walk the objects
 /// front to back. Record 0 is the *static body*: B of a contact with a
 /// plane or a kinematic body. It has m⁻¹ = 0 and I⁻¹ = 0, so an impulse does

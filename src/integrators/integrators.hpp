@@ -63,6 +63,8 @@
 
 namespace stepwise {
 
+struct SolverWorkspace;  // src/dynamics/contact_solver.hpp
+
 /// @brief Does @p body skip its angular update this step? Only when the step
 /// plan says nothing can turn it (DynamicObject::canTurn is false, src/world/step_plan.hpp),
 /// and it is a sphere whose L, ω and τ are exactly zero.
@@ -133,14 +135,15 @@ Quat rotateTorqueFree(const Quat& orientation, const Vec3& angularMomentum, cons
 /// (0 for explicit Euler, 1 for symplectic Euler, ½ for velocity Verlet.)
 Real positionShareOfVelocityChange(IntegratorKind integrator);
 
-/// @brief Sequential impulse: copies every body's v and ω before a substep's constraint solve.
-void recordVelocities(std::span<const DynamicObject> bodies, std::vector<Vec3>& velocity,
-                      std::vector<Vec3>& angularVelocity);
-
-/// @brief Sequential impulse: moves each constrained body by h·Δv + (1 − s)·h²·a and turns it by h·Δω,
-/// Δv and Δω being what the constraint solve changed since recordVelocities() (velocity_change_drift.cpp).
-void driftByVelocityChange(std::span<DynamicObject> bodies, std::span<const Vec3> velocityBefore,
-                           std::span<const Vec3> angularVelocityBefore, Real h, IntegratorKind integrator);
+/// @brief Sequential impulse: moves each body the constraints pushed by h·Δv + (1 − s)·h²·a and turns it by h·Δω,
+/// Δv and Δω being what the solve changed since recordSubstepStart() (velocity_change_drift.cpp); then
+/// records its pose for the relax passes (SolverWorkspace::poses).
+///
+/// Visits only the bodies with a solver record, those in a contact or a
+/// joint: no other body's velocity can have changed. Each one's solved
+/// velocities are first written back to its object (copyVelocitiesOut() for
+/// that record), in the same pass over the bodies.
+void driftByVelocityChange(SolverWorkspace& workspace, Real h, IntegratorKind integrator);
 
 /// @brief Stage 3: moves kinematic bodies along their prescribed constant velocities.
 void moveKinematics(std::span<KinematicsObject> bodies, Real h);

@@ -30,31 +30,26 @@
 /// A body the constraints did not touch (Δv = 0, Δω = 0) keeps its
 /// integrator's free flight exactly. Check: a resting ball (v_n = 0) ends
 /// where it started with every integrator, because Δv = −h_s·a.
+#include "dynamics/contact_solver.hpp"
 #include "integrators/integrators.hpp"
 
 namespace stepwise {
 
-void recordVelocities(std::span<const DynamicObject> bodies, std::vector<Vec3>& velocity,
-                      std::vector<Vec3>& angularVelocity) {
-    velocity.resize(bodies.size());
-    angularVelocity.resize(bodies.size());
-    for (std::size_t i = 0; i < bodies.size(); ++i) {
-        velocity[i] = bodies[i].velocity;
-        angularVelocity[i] = bodies[i].angularVelocity;
-    }
-}
-
-void driftByVelocityChange(std::span<DynamicObject> bodies, std::span<const Vec3> velocityBefore,
-                           std::span<const Vec3> angularVelocityBefore, Real h, IntegratorKind integrator) {
+void driftByVelocityChange(SolverWorkspace& workspace, Real h, IntegratorKind integrator) {
     const Real lag = Real(1) - positionShareOfVelocityChange(integrator);
-    for (std::size_t i = 0; i < bodies.size(); ++i) {
-        DynamicObject& body = bodies[i];
-        if (body.asleep) continue;
-        const Vec3 change = body.velocity - velocityBefore[i];
-        const Vec3 turn = body.angularVelocity - angularVelocityBefore[i];
-        if (change == Vec3(0) && turn == Vec3(0)) continue;  // free flight: the integrator's own step stands
-        body.position += h * change + lag * h * h * body.acceleration;
-        if (turn != Vec3(0)) body.orientation = turnBySmallAngle(body.orientation, turn, h);
+    // Only a body with a solver record can have been pushed: one in a contact or a joint (prepareContacts()).
+    for (std::size_t i = 1; i < workspace.bodies.size(); ++i) {
+        const std::uint32_t index = workspace.recordBody[i];
+        DynamicObject& body = copyVelocitiesOut(workspace, i);  // the solved v and ω, in the same pass
+        const BodyVelocity& before = workspace.substepStart[i];  // as free flight left it (recordSubstepStart())
+        const Vec3 change = body.velocity - before.velocity;
+        const Vec3 turn = body.angularVelocity - before.angularVelocity;
+        if (!body.asleep && (change != Vec3(0) || turn != Vec3(0))) {  // else free flight's own step stands
+            body.position += h * change + lag * h * h * body.acceleration;
+            if (turn != Vec3(0)) body.orientation = turnBySmallAngle(body.orientation, turn, h);
+        }
+        // The relax passes measure separations here; no other body's pose is read by a constraint.
+        workspace.poses[index] = {body.position, body.orientation};
     }
 }
 

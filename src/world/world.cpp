@@ -73,6 +73,24 @@ Real finiteProbe(const DynamicObject& body, unsigned parts) {
     return probe;
 }
 
+/// The same probe over the contact solver's packed copies: each record's v and
+/// ω, and the pose the drift recorded for its body. After the solve and relax
+/// stages these are the numbers just written to the objects, and the records
+/// are the only bodies those stages move (prepareContacts()), so the check reads
+/// two contiguous arrays instead of every object. (The angular momentum is
+/// L + I·Δω with a finite Δω: the next stage that checks it, integrate or
+/// restitution, names it if it overflowed.)
+Real finiteProbe(const SolverWorkspace& workspace) {
+    Real probe = 0;
+    for (std::size_t i = 1; i < workspace.bodies.size(); ++i) {
+        const SolverBody& record = workspace.bodies[i];
+        const Pose& pose = workspace.poses[workspace.recordBody[i]];
+        probe += zeroIfFinite(record.velocity) + zeroIfFinite(record.angularVelocity) + zeroIfFinite(pose.position) +
+                 zeroIfFinite(pose.orientation);
+    }
+    return probe;
+}
+
 }  // namespace
 
 World::World(Scene scene)
@@ -289,7 +307,7 @@ void World::stepWithSequentialImpulses() {
     //    (src/dynamics/contact_solver.cpp, src/dynamics/joints/joint.cpp, src/dynamics/islands.cpp)
     runStage(Stage::PrepareConstraints, [&] {
         wakeTouchedIslands(bodies(), contacts_, links_);
-        prepareContacts(bodies(), contacts_, h, settings_.warmStarting, solverWorkspace_);
+        prepareContacts(bodies(), contacts_, links_, h, settings_.warmStarting, solverWorkspace_);
         if (plan_.jointSolver.runs) prepareJoints(bodies(), joints_, settings_.warmStarting, jointWorkspace_);
     });
 
@@ -311,12 +329,12 @@ void World::stepWithSequentialImpulses() {
         //    The contact passes work on packed copies of the velocities (src/dynamics/solver_body.hpp),
         //    the joints and the drift on the objects: copied in before, out after.
         runStage(Stage::SolveConstraints, [&] {
-            recordVelocities(dynamics_, solverWorkspace_.velocityBefore, solverWorkspace_.angularVelocityBefore);
-            if (plan_.jointSolver.runs) warmStartJoints(jointWorkspace_, solverWorkspace_.poses);
             // From the second substep on, the warm start is what the contacts did in the last one (no joints)
             if (substep > 0 && settings_.accumulateImpulses && jointWorkspace_.joints.empty()) {
                 warmStartFromLastSubstep(solverWorkspace_);
             } else {
+                recordSubstepStart(solverWorkspace_);  // what the drift measures Δv from
+                if (plan_.jointSolver.runs) warmStartJoints(jointWorkspace_, solverWorkspace_.poses);
                 copyVelocitiesIn(solverWorkspace_);
                 warmStartContacts(solverWorkspace_, settings_.accumulateImpulses);
             }
@@ -324,15 +342,14 @@ void World::stepWithSequentialImpulses() {
                 if (plan_.jointSolver.runs) solveJointsBetweenContactPasses(jointSettings, true);
                 solveContacts(solverWorkspace_, contactSettings, true);
             }
-            copyVelocitiesOut(solverWorkspace_);
-            driftByVelocityChange(dynamics_, solverWorkspace_.velocityBefore, solverWorkspace_.angularVelocityBefore, hs,
-                                  settings_.integrator);
+            // The velocities back to the objects, each body moved by what they gained, its pose recorded
+            driftByVelocityChange(solverWorkspace_, hs, settings_.integrator);
         });
 
         // 7. Relax: the same passes without the push-out bias, so the push-out leaves no speed behind.
         //    The drift moved the bodies but left their velocities alone: the copies are still current.
         runStage(Stage::RelaxConstraints, [&] {
-            recordPoses(bodies(), solverWorkspace_);  // where the drift left them
+            recordKinematicPoses(bodies(), solverWorkspace_);  // the drift recorded the dynamic bodies' poses
             for (int pass = 0; pass < settings_.relaxIterations; ++pass) {
                 if (plan_.jointSolver.runs) solveJointsBetweenContactPasses(jointSettings, false);
                 solveContacts(solverWorkspace_, contactSettings, false);
@@ -417,7 +434,11 @@ void World::checkFinite(Stage stage) const {
                                   " (check masses, time step and forces in the scene)");
     };
     const unsigned parts = statePartsWrittenBy(stage, settings_.integrator);
-    if (parts != 0) {
+    // The solve and relax stages move only the bodies with solver records: their packed copies say whether
+    // anything is wrong, and only then are the objects searched, to name it.
+    const bool solverStage = settings_.solver == SolverKind::SequentialImpulse &&
+                             (stage == Stage::SolveConstraints || stage == Stage::RelaxConstraints);
+    if (parts != 0 && !(solverStage && finiteProbe(solverWorkspace_) == Real(0))) {
         for (const DynamicObject& body : dynamics_) {
             if (finiteProbe(body, parts) == Real(0)) continue;  // all finite: nothing to name
             if (!stepwise::isFinite(body.position)) fail(body.name, "position");
