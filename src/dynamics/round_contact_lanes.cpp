@@ -56,8 +56,11 @@ STEPWISE_LANES_INLINE void transpose(Lanes& r0, Lanes& r1, Lanes& r2, Lanes& r3)
 STEPWISE_LANES_INLINE const Real* realsOf(const SolverBody& body) { return &body.velocity.x; }
 STEPWISE_LANES_INLINE Real* realsOf(SolverBody& body) { return &body.velocity.x; }
 
-/// The records @p index of @p bodies, lane by lane.
-STEPWISE_LANES_INLINE BodyLanes gather(const std::vector<SolverBody>& bodies, const std::uint32_t (&index)[kLanes]) {
+/// The velocities of records @p index of @p bodies, lane by lane; the masses are the batch's own
+/// (@p inverseMass, @p inverseInertia), fixed through the step. Only the rows the pass uses are
+/// transposed: of the second half of a record, [ω_y ω_z m⁻¹ I⁻¹], the first two.
+STEPWISE_LANES_INLINE BodyLanes gather(const std::vector<SolverBody>& bodies, const std::uint32_t (&index)[kLanes],
+                                       const Lanes& inverseMass, const Lanes& inverseInertia) {
     Lanes low[kLanes];   // [v_x v_y v_z ω_x] of each body
     Lanes high[kLanes];  // [ω_y ω_z m⁻¹ I⁻¹]
     for (int i = 0; i < kLanes; ++i) {
@@ -65,20 +68,19 @@ STEPWISE_LANES_INLINE BodyLanes gather(const std::vector<SolverBody>& bodies, co
         high[i] = load(realsOf(bodies[index[i]]) + kLanes);
     }
     transpose(low[0], low[1], low[2], low[3]);
-    transpose(high[0], high[1], high[2], high[3]);
-    return {{low[0], low[1], low[2]}, {low[3], high[0], high[1]}, high[2], high[3]};
+    transpose(high[0], high[1], high[2], high[3]);  // rows 2 and 3 (m⁻¹, I⁻¹) are never read: the compiler drops them
+    return {{low[0], low[1], low[2]}, {low[3], high[0], high[1]}, inverseMass, inverseInertia};
 }
 
-/// Writes the lanes back to records @p index, in lane order (m⁻¹ and I⁻¹ as they were read).
+/// Writes the velocities back to records @p index, in lane order; m⁻¹ and I⁻¹ stay as they are in memory.
 STEPWISE_LANES_INLINE void scatter(std::vector<SolverBody>& bodies, const std::uint32_t (&index)[kLanes],
                                    const BodyLanes& lanes) {
     Lanes low[kLanes] = {lanes.velocity.x, lanes.velocity.y, lanes.velocity.z, lanes.angularVelocity.x};
-    Lanes high[kLanes] = {lanes.angularVelocity.y, lanes.angularVelocity.z, lanes.inverseMass, lanes.inverseInertia};
     transpose(low[0], low[1], low[2], low[3]);
-    transpose(high[0], high[1], high[2], high[3]);
     for (int i = 0; i < kLanes; ++i) {
         store(realsOf(bodies[index[i]]), low[i]);
-        store(realsOf(bodies[index[i]]) + kLanes, high[i]);
+        const Real rest[2] = {lanes.angularVelocity.y[i], lanes.angularVelocity.z[i]};  // ω_y, ω_z
+        std::memcpy(realsOf(bodies[index[i]]) + kLanes, rest, sizeof rest);
     }
 }
 
@@ -125,12 +127,14 @@ RoundBatch emptyBatch() {
     const Lanes zero = splat(0);
     batch.normal = batch.tangent0 = batch.tangent1 = Vec3Lanes{zero, zero, zero};
     batch.normalMass = batch.tangentMass = batch.friction = zero;
+    batch.inverseMassA = batch.inverseMassB = batch.inverseInertiaA = batch.inverseInertiaB = zero;
     batch.leverA = batch.leverB = batch.separationOffset = zero;
     batch.normalImpulse = batch.tangentImpulse0 = batch.tangentImpulse1 = batch.maxNormalImpulse = zero;
     return batch;
 }
 
-void setLane(RoundBatch& batch, int lane, std::uint32_t index, const SolverContact& c) {
+void setLane(RoundBatch& batch, int lane, std::uint32_t index, const SolverContact& c,
+             const std::vector<SolverBody>& bodies) {
     batch.contact[lane] = index;
     batch.bodyA[lane] = c.bodyA;
     batch.bodyB[lane] = c.bodyB;
@@ -142,6 +146,10 @@ void setLane(RoundBatch& batch, int lane, std::uint32_t index, const SolverConta
     batch.normalMass[lane] = c.normalMass;
     batch.tangentMass[lane] = c.tangentMass[0];
     batch.friction[lane] = c.friction;
+    batch.inverseMassA[lane] = bodies[c.bodyA].inverseMass;
+    batch.inverseMassB[lane] = bodies[c.bodyB].inverseMass;
+    batch.inverseInertiaA[lane] = bodies[c.bodyA].inverseInertia;
+    batch.inverseInertiaB[lane] = bodies[c.bodyB].inverseInertia;
     batch.leverA[lane] = c.leverA;
     batch.leverB[lane] = c.leverB;
     batch.separationOffset[lane] = c.separationOffset;
@@ -202,7 +210,8 @@ void batchRoundContacts(SolverWorkspace& workspace) {
                 workspace.roundBatches.push_back(emptyBatch());
                 workspace.roundBatches.back().wave = wave;
             }
-            setLane(workspace.roundBatches.back(), lane, workspace.waveOrder[k], workspace.contacts[workspace.waveOrder[k]]);
+            setLane(workspace.roundBatches.back(), lane, workspace.waveOrder[k], workspace.contacts[workspace.waveOrder[k]],
+                    workspace.bodies);
         }
         first = end;
     }
@@ -211,8 +220,8 @@ void batchRoundContacts(SolverWorkspace& workspace) {
 STEPWISE_LANES_COPIES
 void warmStartRoundContacts(SolverWorkspace& workspace) {
     for (RoundBatch& batch : workspace.roundBatches) {
-        BodyLanes a = gather(workspace.bodies, batch.bodyA);
-        BodyLanes b = gather(workspace.bodies, batch.bodyB);
+        BodyLanes a = gather(workspace.bodies, batch.bodyA, batch.inverseMassA, batch.inverseInertiaA);
+        BodyLanes b = gather(workspace.bodies, batch.bodyB, batch.inverseMassB, batch.inverseInertiaB);
         applyNormal(a, b, batch.normal, batch.normalImpulse);
         // The arm directions: n × t₁ = t₂ and n × t₂ = −t₁ (tangentBasis()).
         applyRow(a, b, batch.tangent0, batch.tangent1, batch.leverA, batch.leverB, batch.tangentImpulse0);
@@ -251,8 +260,8 @@ void solveRoundContacts(SolverWorkspace& workspace, const ContactSolverSettings&
         const Lanes massScale = select(gap, one, softMassScale);
         const Lanes impulseScale = select(gap, zero, softImpulseScale);
 
-        BodyLanes a = gather(workspace.bodies, batch.bodyA);
-        BodyLanes b = gather(workspace.bodies, batch.bodyB);
+        BodyLanes a = gather(workspace.bodies, batch.bodyA, batch.inverseMassA, batch.inverseInertiaA);
+        BodyLanes b = gather(workspace.bodies, batch.bodyB, batch.inverseMassB, batch.inverseInertiaB);
         const Lanes vn = dot(b.velocity - a.velocity, n);
         const Lanes impulse = -batch.normalMass * massScale * (vn + bias) - impulseScale * batch.normalImpulse;
         Lanes applied;

@@ -76,6 +76,10 @@ struct RoundBatch {
     Lanes normalMass;               ///< K⁻¹ along n, kg.
     Lanes tangentMass;              ///< K⁻¹ along either tangent (the same for a round contact), kg.
     Lanes friction;                 ///< μ.
+    Lanes inverseMassA;             ///< m_A⁻¹, 1/kg: fixed through the step, so kept here, not gathered with A's velocities.
+    Lanes inverseMassB;             ///< m_B⁻¹, 1/kg (zero: the static record).
+    Lanes inverseInertiaA;          ///< A ball's I_A⁻¹, the same about every axis, 1/(kg·m²).
+    Lanes inverseInertiaB;          ///< I_B⁻¹, 1/(kg·m²) (zero: a plane).
     Lanes leverA;                   ///< ℓ_A = r_A·n, m.
     Lanes leverB;                   ///< ℓ_B = r_B·n, m.
     Lanes separationOffset;         ///< C_offset, m.
