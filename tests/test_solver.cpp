@@ -317,22 +317,26 @@ TEST_CASE("A round contact's computed rows are J: the point-impulse formulas for
     };
     CHECK(roundNormalVelocity(a, b, n) == Approx(textbookVelocity(a, b, n)).margin(1e-12));
     const Real lambda = Real(0.8);  // N·s
+    Real along[2];
+    roundFrictionVelocities(a, b, t, leverA, leverB, along);
     for (int k = 0; k < 2; ++k) {
-        const Vec3 u = glm::cross(n, t[k]);
-        CHECK(roundRowVelocity(a, b, t[k], u, leverA, leverB) == Approx(textbookVelocity(a, b, t[k])).margin(1e-12));
+        CHECK(along[k] == Approx(textbookVelocity(a, b, t[k])).margin(1e-12));
         const Vec3 armA = glm::cross(rA, t[k]);
         const Vec3 armB = glm::cross(rB, t[k]);
         CHECK(roundTangentInverseMass(a, b, leverA, leverB) ==
               Approx(1 / massA + 1 / massB + glm::dot(armA, armA) / inertiaA + glm::dot(armB, armB) / inertiaB));
-
+    }
+    // Friction as one impulse P = λ₀t₀ + λ₁t₁ at the point: Δv = ∓P/m, Δω = ∓I⁻¹(r × P).
+    for (const Vec3 impulses : {Vec3(lambda, 0, 0), Vec3(0, lambda, 0), Vec3(Real(0.3), Real(-0.5), 0)}) {
+        const Vec3 push = impulses.x * t[0] + impulses.y * t[1];
         SolverBody a1 = a;
         SolverBody b1 = b;
-        applyRoundRowImpulse(a1, b1, t[k], u, leverA, leverB, lambda);
+        applyRoundFrictionImpulse(a1, b1, t, leverA, leverB, impulses.x, impulses.y);
         for (int i = 0; i < 3; ++i) {
-            CHECK(a1.velocity[i] == Approx(a.velocity[i] - lambda / massA * t[k][i]).margin(1e-12));
-            CHECK(b1.velocity[i] == Approx(b.velocity[i] + lambda / massB * t[k][i]).margin(1e-12));
-            CHECK(a1.angularVelocity[i] == Approx(a.angularVelocity[i] - glm::cross(rA, lambda * t[k])[i] / inertiaA).margin(1e-12));
-            CHECK(b1.angularVelocity[i] == Approx(b.angularVelocity[i] + glm::cross(rB, lambda * t[k])[i] / inertiaB).margin(1e-12));
+            CHECK(a1.velocity[i] == Approx(a.velocity[i] - push[i] / massA).margin(1e-12));
+            CHECK(b1.velocity[i] == Approx(b.velocity[i] + push[i] / massB).margin(1e-12));
+            CHECK(a1.angularVelocity[i] == Approx(a.angularVelocity[i] - glm::cross(rA, push)[i] / inertiaA).margin(1e-12));
+            CHECK(b1.angularVelocity[i] == Approx(b.angularVelocity[i] + glm::cross(rB, push)[i] / inertiaB).margin(1e-12));
         }
     }
     SolverBody a1 = a;

@@ -57,19 +57,18 @@ void makeBodyRecords(const BodySet& bodies, std::span<const Contact> contacts, s
 }
 
 /// The three rows of a round contact, computed from its normal, tangents and
-/// levers (solver_body.hpp). With tangentBasis()'s n × t₁ = t₂, the arm
-/// directions u = n × t are t₂ for t₁ and −t₁ for t₂.
+/// levers (solver_body.hpp); the two friction rows together, as one impulse
+/// vector in the tangent plane.
 struct RoundRows {
     const SolverContact& c;
     Real normalVelocity(const SolverBody& a, const SolverBody& b) const { return roundNormalVelocity(a, b, c.normal); }
     void applyNormal(SolverBody& a, SolverBody& b, Real lambda) const { applyRoundNormalImpulse(a, b, c.normal, lambda); }
-    Real tangentVelocity(int k, const SolverBody& a, const SolverBody& b) const {
-        return roundRowVelocity(a, b, c.tangent[k], armDirection(k), c.leverA, c.leverB);
+    void tangentVelocities(const SolverBody& a, const SolverBody& b, Real (&out)[2]) const {
+        roundFrictionVelocities(a, b, c.tangent, c.leverA, c.leverB, out);
     }
-    void applyTangent(int k, SolverBody& a, SolverBody& b, Real lambda) const {
-        applyRoundRowImpulse(a, b, c.tangent[k], armDirection(k), c.leverA, c.leverB, lambda);
+    void applyTangents(SolverBody& a, SolverBody& b, Real lambda0, Real lambda1) const {
+        applyRoundFrictionImpulse(a, b, c.tangent, c.leverA, c.leverB, lambda0, lambda1);
     }
-    Vec3 armDirection(int k) const { return k == 0 ? c.tangent[1] : -c.tangent[0]; }
 };
 
 /// The three rows of any other contact, read from SolverWorkspace::rows; a
@@ -81,11 +80,12 @@ struct StoredRows {
         return rowVelocity(a, b, c.normal, r.normal) + r.normalSurfaceSpeed;
     }
     void applyNormal(SolverBody& a, SolverBody& b, Real lambda) const { applyRowImpulse(a, b, c.normal, r.normal, lambda); }
-    Real tangentVelocity(int k, const SolverBody& a, const SolverBody& b) const {
-        return rowVelocity(a, b, c.tangent[k], r.tangent[k]) + r.tangentSurfaceSpeed[k];
+    void tangentVelocities(const SolverBody& a, const SolverBody& b, Real (&out)[2]) const {
+        for (int k = 0; k < 2; ++k) out[k] = rowVelocity(a, b, c.tangent[k], r.tangent[k]) + r.tangentSurfaceSpeed[k];
     }
-    void applyTangent(int k, SolverBody& a, SolverBody& b, Real lambda) const {
-        applyRowImpulse(a, b, c.tangent[k], r.tangent[k], lambda);
+    void applyTangents(SolverBody& a, SolverBody& b, Real lambda0, Real lambda1) const {
+        applyRowImpulse(a, b, c.tangent[0], r.tangent[0], lambda0);
+        applyRowImpulse(a, b, c.tangent[1], r.tangent[1], lambda1);
     }
 };
 
@@ -207,11 +207,10 @@ inline void solveFriction(SolverContact& c, const Rows& rows, SolverBody& a, Sol
     // impulse would be clamped back to zero friction: nothing to do.
     const Real limit = c.friction * c.normalImpulse;
     if (limit == Real(0) && c.tangentImpulse[0] == Real(0) && c.tangentImpulse[1] == Real(0)) return;
+    Real vt[2];
+    rows.tangentVelocities(a, b, vt);
     Real total[2];
-    for (int k = 0; k < 2; ++k) {
-        const Real vt = rows.tangentVelocity(k, a, b);
-        total[k] = c.tangentImpulse[k] - c.tangentMass[k] * vt;
-    }
+    for (int k = 0; k < 2; ++k) total[k] = c.tangentImpulse[k] - c.tangentMass[k] * vt[k];
     // Back onto Coulomb's circle: scale = min(1, μλ_n/|λ_t|), which is exactly 1
     // for a point that sticks and 0 for one that does not push (λ_n = 0, a
     // speculative gap). Only a slipping point pays for the division: written
@@ -222,10 +221,9 @@ inline void solveFriction(SolverContact& c, const Rows& rows, SolverBody& a, Sol
     const Real scale = magnitude > limit ? limit / magnitude : Real(1);
     total[0] *= scale;
     total[1] *= scale;
-    for (int k = 0; k < 2; ++k) {
-        rows.applyTangent(k, a, b, total[k] - c.tangentImpulse[k]);
-        c.tangentImpulse[k] = total[k];
-    }
+    rows.applyTangents(a, b, total[0] - c.tangentImpulse[0], total[1] - c.tangentImpulse[1]);
+    c.tangentImpulse[0] = total[0];
+    c.tangentImpulse[1] = total[1];
 }
 
 }  // namespace
@@ -320,7 +318,7 @@ void warmStartContacts(SolverWorkspace& workspace, bool accumulate) {
         SolverBody b = bodies[c.bodyB];
         withRows(c, workspace, [&](const auto& rows) {
             rows.applyNormal(a, b, c.normalImpulse);
-            for (int k = 0; k < 2; ++k) rows.applyTangent(k, a, b, c.tangentImpulse[k]);
+            rows.applyTangents(a, b, c.tangentImpulse[0], c.tangentImpulse[1]);
         });
         bodies[c.bodyA] = a;
         bodies[c.bodyB] = b;

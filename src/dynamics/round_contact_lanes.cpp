@@ -101,19 +101,26 @@ STEPWISE_LANES_INLINE void applyNormal(BodyLanes& a, BodyLanes& b, const Vec3Lan
     b.velocity += (lambda * b.inverseMass) * n;
 }
 
-/// J·v along tangent t with arm direction u = n × t: t·(v_B − v_A) + ℓ_B·u·ω_B − ℓ_A·u·ω_A.
-STEPWISE_LANES_INLINE Lanes rowVelocity(const BodyLanes& a, const BodyLanes& b, const Vec3Lanes& t,
-                                        const Vec3Lanes& u, Lanes leverA, Lanes leverB) {
-    return dot(b.velocity - a.velocity, t) + leverB * dot(u, b.angularVelocity) - leverA * dot(u, a.angularVelocity);
+/// J·v along both tangents, with the sliding Δv = v_B − v_A and the spin s = ℓ_B·ω_B − ℓ_A·ω_A
+/// (roundFrictionVelocities() in solver_body.hpp): t₀·Δv + t₁·s and t₁·Δv − t₀·s.
+STEPWISE_LANES_INLINE void frictionVelocities(const BodyLanes& a, const BodyLanes& b, const RoundBatch& batch,
+                                              Lanes& along0, Lanes& along1) {
+    const Vec3Lanes sliding = b.velocity - a.velocity;
+    const Vec3Lanes spin = batch.leverB * b.angularVelocity - batch.leverA * a.angularVelocity;
+    along0 = dot(sliding, batch.tangent0) + dot(batch.tangent1, spin);
+    along1 = dot(sliding, batch.tangent1) - dot(batch.tangent0, spin);
 }
 
-/// Impulse λ along tangent t: Δv = ∓λ·m⁻¹·t, Δω = ∓λ·I⁻¹·ℓ·u.
-STEPWISE_LANES_INLINE void applyRow(BodyLanes& a, BodyLanes& b, const Vec3Lanes& t, const Vec3Lanes& u, Lanes leverA,
-                                    Lanes leverB, Lanes lambda) {
-    a.velocity -= (lambda * a.inverseMass) * t;
-    a.angularVelocity -= (lambda * a.inverseInertia * leverA) * u;
-    b.velocity += (lambda * b.inverseMass) * t;
-    b.angularVelocity += (lambda * b.inverseInertia * leverB) * u;
+/// The friction impulse P = λ₀·t₀ + λ₁·t₁ as one vector: Δv = ∓m⁻¹·P, Δω = ∓I⁻¹·ℓ·(n × P),
+/// n × P = λ₀·t₁ − λ₁·t₀ (applyRoundFrictionImpulse() in solver_body.hpp).
+STEPWISE_LANES_INLINE void applyFriction(BodyLanes& a, BodyLanes& b, const RoundBatch& batch, Lanes lambda0,
+                                         Lanes lambda1) {
+    const Vec3Lanes push = lambda0 * batch.tangent0 + lambda1 * batch.tangent1;
+    const Vec3Lanes twist = lambda0 * batch.tangent1 - lambda1 * batch.tangent0;
+    a.velocity -= a.inverseMass * push;
+    b.velocity += b.inverseMass * push;
+    a.angularVelocity -= (a.inverseInertia * batch.leverA) * twist;
+    b.angularVelocity += (b.inverseInertia * batch.leverB) * twist;
 }
 
 /// A new batch whose four lanes are empty: static record 0 on both sides, zero masses and impulses.
@@ -223,9 +230,7 @@ void warmStartRoundContacts(SolverWorkspace& workspace) {
         BodyLanes a = gather(workspace.bodies, batch.bodyA, batch.inverseMassA, batch.inverseInertiaA);
         BodyLanes b = gather(workspace.bodies, batch.bodyB, batch.inverseMassB, batch.inverseInertiaB);
         applyNormal(a, b, batch.normal, batch.normalImpulse);
-        // The arm directions: n × t₁ = t₂ and n × t₂ = −t₁ (tangentBasis()).
-        applyRow(a, b, batch.tangent0, batch.tangent1, batch.leverA, batch.leverB, batch.tangentImpulse0);
-        applyRow(a, b, batch.tangent1, -batch.tangent0, batch.leverA, batch.leverB, batch.tangentImpulse1);
+        applyFriction(a, b, batch, batch.tangentImpulse0, batch.tangentImpulse1);
         scatter(workspace.bodies, batch.bodyA, a);
         scatter(workspace.bodies, batch.bodyB, b);
     }
@@ -280,17 +285,16 @@ void solveRoundContacts(SolverWorkspace& workspace, const ContactSolverSettings&
         // (A lane that does not push and holds no friction, which the scalar pass skips, computes a
         // scale of 0 or 1 on a zero impulse here: it changes nothing either.)
         const Lanes limit = batch.friction * batch.normalImpulse;
-        const Vec3Lanes arm1 = -batch.tangent0;  // n × t₂
-        Lanes total0 = batch.tangentImpulse0 - batch.tangentMass * rowVelocity(a, b, batch.tangent0, batch.tangent1,
-                                                                               batch.leverA, batch.leverB);
-        Lanes total1 = batch.tangentImpulse1 -
-                       batch.tangentMass * rowVelocity(a, b, batch.tangent1, arm1, batch.leverA, batch.leverB);
+        Lanes along0;
+        Lanes along1;
+        frictionVelocities(a, b, batch, along0, along1);
+        Lanes total0 = batch.tangentImpulse0 - batch.tangentMass * along0;
+        Lanes total1 = batch.tangentImpulse1 - batch.tangentMass * along1;
         const Lanes magnitude = sqrtLanes(total0 * total0 + total1 * total1);
         const Lanes scale = select(magnitude > limit, limit / magnitude, one);
         total0 *= scale;
         total1 *= scale;
-        applyRow(a, b, batch.tangent0, batch.tangent1, batch.leverA, batch.leverB, total0 - batch.tangentImpulse0);
-        applyRow(a, b, batch.tangent1, arm1, batch.leverA, batch.leverB, total1 - batch.tangentImpulse1);
+        applyFriction(a, b, batch, total0 - batch.tangentImpulse0, total1 - batch.tangentImpulse1);
         batch.tangentImpulse0 = total0;
         batch.tangentImpulse1 = total1;
 

@@ -156,21 +156,36 @@ inline void applyRoundNormalImpulse(SolverBody& a, SolverBody& b, const Vec3& n,
     b.velocity += (lambda * b.inverseMass) * n;
 }
 
-/// @brief J·v along tangent @p t of a round contact, whose arms are ℓ·u with u = n × t:
-/// t·(v_B − v_A) + ℓ_B·u·ω_B − ℓ_A·u·ω_A, m/s.
-inline Real roundRowVelocity(const SolverBody& a, const SolverBody& b, const Vec3& t, const Vec3& u, Real leverA,
-                             Real leverB) {
-    return glm::dot(b.velocity - a.velocity, t) + leverB * glm::dot(u, b.angularVelocity) -
-           leverA * glm::dot(u, a.angularVelocity);
+/// @brief J·v along both tangents of a round contact, m/s: @p out[k] for t_k (tangentBasis(): n × t₀ = t₁).
+///
+/// Along t_k the arms are ℓ·u_k with u_k = n × t_k, that is u₀ = t₁ and
+/// u₁ = −t₀, so with the sliding Δv = v_B − v_A and the *spin*
+/// s = ℓ_B·ω_B − ℓ_A·ω_A (the relative turn of the two surfaces at the point)
+/// [ J_0 v = t_0\cdot\Delta v + t_1\cdot s,\qquad J_1 v = t_1\cdot\Delta v - t_0\cdot s . ]
+/// Δv and s serve both tangents: two vectors, four dot products.
+inline void roundFrictionVelocities(const SolverBody& a, const SolverBody& b, const Vec3 (&t)[2], Real leverA,
+                                    Real leverB, Real (&out)[2]) {
+    const Vec3 sliding = b.velocity - a.velocity;
+    const Vec3 spin = leverB * b.angularVelocity - leverA * a.angularVelocity;
+    out[0] = glm::dot(sliding, t[0]) + glm::dot(t[1], spin);
+    out[1] = glm::dot(sliding, t[1]) - glm::dot(t[0], spin);
 }
 
-/// @brief Impulse λ along tangent @p t of a round contact: Δv = ∓λ·m⁻¹·t, Δω = ∓λ·I⁻¹·ℓ·u.
-inline void applyRoundRowImpulse(SolverBody& a, SolverBody& b, const Vec3& t, const Vec3& u, Real leverA, Real leverB,
-                                 Real lambda) {
-    a.velocity -= (lambda * a.inverseMass) * t;
-    a.angularVelocity -= (lambda * a.inverseInertia * leverA) * u;
-    b.velocity += (lambda * b.inverseMass) * t;
-    b.angularVelocity += (lambda * b.inverseInertia * leverB) * u;
+/// @brief Friction impulses λ₀ along t₀ and λ₁ along t₁ of a round contact, applied as one vector.
+///
+/// The impulse is P = λ₀·t₀ + λ₁·t₁ in the tangent plane, at the point r = ℓ·n
+/// from each centre, so its angular impulse is r × P = ℓ·(n × P), with
+/// n × P = λ₀·t₁ − λ₁·t₀ (the *twist*):
+/// [ \Delta v_A = -m_A^{-1} P,\quad \Delta\omega_A = -I_A^{-1}\ell_A\,(n	imes P),\qquad
+///     \Delta v_B = m_B^{-1} P,\quad \Delta\omega_B = I_B^{-1}\ell_B\,(n	imes P) . ]
+inline void applyRoundFrictionImpulse(SolverBody& a, SolverBody& b, const Vec3 (&t)[2], Real leverA, Real leverB,
+                                      Real lambda0, Real lambda1) {
+    const Vec3 push = lambda0 * t[0] + lambda1 * t[1];
+    const Vec3 twist = lambda0 * t[1] - lambda1 * t[0];
+    a.velocity -= a.inverseMass * push;
+    b.velocity += b.inverseMass * push;
+    a.angularVelocity -= (a.inverseInertia * leverA) * twist;
+    b.angularVelocity += (b.inverseInertia * leverB) * twist;
 }
 
 /// @brief K = J·M⁻¹·Jᵀ along a tangent of a round contact (|u| = 1): m_A⁻¹ + m_B⁻¹ + ℓ_A²·I_A⁻¹ + ℓ_B²·I_B⁻¹, 1/kg.
