@@ -239,7 +239,7 @@ struct SweepRun {
     bool isDefault = false;
 };
 
-constexpr int kSweepSubsteps[] = {1, 2, 4, 8, 16};      ///< Stepwise: 16 is the default (world_settings.hpp).
+constexpr int kSweepSubsteps[] = {1, 2, 4, 8, 10, 12, 16};  ///< Stepwise: 16 is the default (world_settings.hpp); 10 and 12 bracket 5 mm.
 constexpr int kSweepIterations[] = {5, 10, 20, 40};     ///< Bullet: 10 is its default.
 constexpr int kBulletDefaultIterations = 10;
 constexpr std::size_t kSweepRain = 1000;                ///< The sweep's rain, spheres.
