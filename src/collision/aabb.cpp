@@ -43,7 +43,7 @@ bool aabbTouchesPlane(const Aabb& box, const CollisionPlane& plane) {
     const Vec3 centre = Real(0.5) * (box.min + box.max);
     const Vec3 halfSize = Real(0.5) * (box.max - box.min);
     const Real reach = glm::dot(glm::abs(plane.normal), halfSize);
-    return plane.signedDistance(centre) <= reach;
+    return plane.signedDistance(centre) <= reach + plane.sweep;  // plus how far a knock may carry the body (GameObject::sweep)
 }
 
 }  // namespace stepwise

@@ -70,7 +70,7 @@ Real sweepOf(const BodySet& bodies, const BodyRef& ref) {
     switch (ref.kind) {
         case BodyKind::Dynamic: return bodies.dynamics[ref.index].sweep;
         case BodyKind::Kinematic: return bodies.kinematics[ref.index].sweep;
-        case BodyKind::Plane: break;
+        case BodyKind::Plane: return bodies.planes[ref.index].sweep;
     }
     return 0;
 }

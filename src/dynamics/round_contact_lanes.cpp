@@ -102,7 +102,7 @@ STEPWISE_LANES_INLINE void applyNormal(BodyLanes& a, BodyLanes& b, const Vec3Lan
 }
 
 /// J·v along both tangents, with the sliding Δv = v_B − v_A and the spin s = ℓ_B·ω_B − ℓ_A·ω_A
-/// (roundFrictionVelocities() in solver_body.hpp): t₀·Δv + t₁·s and t₁·Δv − t₀·s.
+/// (roundFrictionVelocities() in solver_body.hpp): t₁·Δv + t₂·s and t₂·Δv − t₁·s.
 STEPWISE_LANES_INLINE void frictionVelocities(const BodyLanes& a, const BodyLanes& b, const RoundBatch& batch,
                                               Lanes& along0, Lanes& along1) {
     const Vec3Lanes sliding = b.velocity - a.velocity;
@@ -111,8 +111,8 @@ STEPWISE_LANES_INLINE void frictionVelocities(const BodyLanes& a, const BodyLane
     along1 = dot(sliding, batch.tangent1) - dot(batch.tangent0, spin);
 }
 
-/// The friction impulse P = λ₀·t₀ + λ₁·t₁ as one vector: Δv = ∓m⁻¹·P, Δω = ∓I⁻¹·ℓ·(n × P),
-/// n × P = λ₀·t₁ − λ₁·t₀ (applyRoundFrictionImpulse() in solver_body.hpp).
+/// The friction impulse P = λ₁·t₁ + λ₂·t₂ as one vector: Δv = ∓m⁻¹·P, Δω = ∓I⁻¹·ℓ·(n × P),
+/// n × P = λ₁·t₂ − λ₂·t₁ (applyRoundFrictionImpulse() in solver_body.hpp).
 STEPWISE_LANES_INLINE void applyFriction(BodyLanes& a, BodyLanes& b, const RoundBatch& batch, Lanes lambda0,
                                          Lanes lambda1) {
     const Vec3Lanes push = lambda0 * batch.tangent0 + lambda1 * batch.tangent1;

@@ -53,7 +53,7 @@ struct SolverBody {
     Vec3 angularVelocity{0, 0, 0};  ///< Angular velocity, world frame, rad/s.
     Real inverseMass = 0;           ///< 1/m, 1/kg (zero: static).
     /// A ball's I⁻¹, the same about every axis, 1/(kg·m²): what a *round*
-    /// contact's friction turns it by (roundRowVelocity() below). Zero for a box,
+    /// contact's friction turns it by (applyRoundFrictionImpulse() below). Zero for a box,
     /// whose contacts keep their turn per unit impulse in stored rows.
     Real inverseInertia = 0;
 };
@@ -156,12 +156,13 @@ inline void applyRoundNormalImpulse(SolverBody& a, SolverBody& b, const Vec3& n,
     b.velocity += (lambda * b.inverseMass) * n;
 }
 
-/// @brief J·v along both tangents of a round contact, m/s: @p out[k] for t_k (tangentBasis(): n × t₀ = t₁).
+/// @brief J·v along both tangents of a round contact, m/s: @p out[0] along t₁ = `t[0]`, @p out[1] along t₂ = `t[1]`.
 ///
-/// Along t_k the arms are ℓ·u_k with u_k = n × t_k, that is u₀ = t₁ and
-/// u₁ = −t₀, so with the sliding Δv = v_B − v_A and the *spin*
-/// s = ℓ_B·ω_B − ℓ_A·ω_A (the relative turn of the two surfaces at the point)
-/// [ J_0 v = t_0\cdot\Delta v + t_1\cdot s,\qquad J_1 v = t_1\cdot\Delta v - t_0\cdot s . ]
+/// Along a tangent t the arms are ℓ·u with u = n × t (above), and the basis
+/// has n × t₁ = t₂ and n × t₂ = −t₁ (tangentBasis()). So with the sliding
+/// Δv = v_B − v_A and the *spin* s = ℓ_B·ω_B − ℓ_A·ω_A (the relative turn of
+/// the two surfaces at the point)
+/// \f[ J_1 v = t_1\cdot\Delta v + t_2\cdot s,\qquad J_2 v = t_2\cdot\Delta v - t_1\cdot s . \f]
 /// Δv and s serve both tangents: two vectors, four dot products.
 inline void roundFrictionVelocities(const SolverBody& a, const SolverBody& b, const Vec3 (&t)[2], Real leverA,
                                     Real leverB, Real (&out)[2]) {
@@ -171,17 +172,19 @@ inline void roundFrictionVelocities(const SolverBody& a, const SolverBody& b, co
     out[1] = glm::dot(sliding, t[1]) - glm::dot(t[0], spin);
 }
 
-/// @brief Friction impulses λ₀ along t₀ and λ₁ along t₁ of a round contact, applied as one vector.
+/// @brief Friction impulses λ₁ along t₁ and λ₂ along t₂ of a round contact, applied as one vector.
 ///
-/// The impulse is P = λ₀·t₀ + λ₁·t₁ in the tangent plane, at the point r = ℓ·n
+/// The impulse is P = λ₁·t₁ + λ₂·t₂ in the tangent plane, at the point r = ℓ·n
 /// from each centre, so its angular impulse is r × P = ℓ·(n × P), with
-/// n × P = λ₀·t₁ − λ₁·t₀ (the *twist*):
-/// [ \Delta v_A = -m_A^{-1} P,\quad \Delta\omega_A = -I_A^{-1}\ell_A\,(n	imes P),\qquad
-///     \Delta v_B = m_B^{-1} P,\quad \Delta\omega_B = I_B^{-1}\ell_B\,(n	imes P) . ]
+/// n × P = λ₁·t₂ − λ₂·t₁ (the *twist*):
+/// \f[ \Delta v_A = -m_A^{-1} P,\quad \Delta\omega_A = -I_A^{-1}\ell_A\,(n\times P),\qquad
+///     \Delta v_B = m_B^{-1} P,\quad \Delta\omega_B = I_B^{-1}\ell_B\,(n\times P) . \f]
+/// One push and one twist serve both bodies: fewer operations than the two
+/// rows applied one after the other (bench/solver_performance.md, eighth round).
 inline void applyRoundFrictionImpulse(SolverBody& a, SolverBody& b, const Vec3 (&t)[2], Real leverA, Real leverB,
-                                      Real lambda0, Real lambda1) {
-    const Vec3 push = lambda0 * t[0] + lambda1 * t[1];
-    const Vec3 twist = lambda0 * t[1] - lambda1 * t[0];
+                                      Real lambda1, Real lambda2) {
+    const Vec3 push = lambda1 * t[0] + lambda2 * t[1];
+    const Vec3 twist = lambda1 * t[1] - lambda2 * t[0];
     a.velocity -= a.inverseMass * push;
     b.velocity += b.inverseMass * push;
     a.angularVelocity -= (a.inverseInertia * leverA) * twist;

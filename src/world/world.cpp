@@ -2,6 +2,7 @@
 /// @brief The step pipeline, read top to bottom in World::step().
 #include "world/world.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <functional>
@@ -253,15 +254,29 @@ void World::stepWithImpulses() {
 
 /// Sweep = |v|·h + ½|a|·h²: the distance free flight can carry a body in a
 /// step (for a kinematic body, plus what its turning moves its farthest point).
+///
+/// A plane's sweep is the largest of the bodies' (GameObject::sweep). Contacts
+/// are found once a step, from how far each body can move by itself; but a
+/// body can be knocked within the step, and a collision passes its speed on
+/// (a ball struck by an equal ball takes up to the striker's speed). A ball
+/// at rest 2 cm from a wall, struck at 3 m/s, would cross those 2 cm and sink
+/// into the wall before the next step found the contact: in the 16k sphere
+/// rain such a knock left a ball 10.6 mm inside a wall (bench/solver_performance.md,
+/// eighth round). Walls are few and a contact with a gap costs nothing until
+/// it closes, so every body gets its plane contacts that far ahead.
 void World::measureSweeps(Real h) {
+    Real fastest = 0;
     for (DynamicObject& body : dynamics_) {
         body.sweep = body.asleep ? Real(0)
                                  : glm::length(body.velocity) * h + Real(0.5) * glm::length(body.acceleration) * h * h;
+        fastest = std::max(fastest, body.sweep);
     }
     for (KinematicsObject& body : kinematics_) {
         const Real reach = body.shape == Shape::Sphere ? body.radius : glm::length(body.halfExtents());
         body.sweep = (glm::length(body.velocity) + glm::length(body.angularVelocity) * reach) * h;
+        fastest = std::max(fastest, body.sweep);
     }
+    for (CollisionPlane& plane : planes_) plane.sweep = fastest;
 }
 
 /// `Solver=SequentialImpulse`, Catto's soft step: find the contacts first,
