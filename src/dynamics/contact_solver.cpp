@@ -269,6 +269,11 @@ void recordPoses(const BodySet& bodies, SolverWorkspace& workspace) {
     }
     recordKinematicPoses(bodies, workspace);
     workspace.poses.back() = Pose{};  // the planes' fixed pose at the origin
+    workspace.centres.resize(workspace.bodies.size());
+    workspace.centres[0] = SolverCentre{};  // the static record: a plane's "centre" is the origin
+    for (std::size_t i = 1; i < workspace.bodies.size(); ++i) {
+        workspace.centres[i].position = workspace.poses[workspace.recordBody[i]].position;
+    }
 }
 
 void recordKinematicPoses(const BodySet& bodies, SolverWorkspace& workspace) {

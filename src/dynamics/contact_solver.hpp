@@ -196,6 +196,7 @@ struct SolverWorkspace {
     /// The poses separations are measured at: the dynamic bodies (by index, as the joints read them), then the
     /// kinematic bodies, then one fixed pose at the origin that every plane contact's B uses.
     std::vector<Pose> poses;
+    std::vector<SolverCentre> centres;           ///< Per record: its body's centre at the same poses (the batched pass reads these).
     /// Per record: v and ω as free flight left them, before this substep's warm start (of joints or
     /// contacts): what the drift measures Δv from, and what warmStartFromLastSubstep() subtracts.
     std::vector<BodyVelocity> substepStart;
@@ -231,7 +232,8 @@ struct SolverWorkspace {
 void prepareContacts(const BodySet& bodies, std::span<const Contact> contacts, std::span<const BodyLink> links, Real h,
                      bool warmStart, SolverWorkspace& workspace);
 
-/// @brief Records every body's pose: the separations of the next solveContacts() are measured there.
+/// @brief Records every body's pose, and each solver record's centre (SolverWorkspace::centres): the
+/// separations of the next solveContacts() are measured there.
 ///
 /// The solve measures C where the bodies were at the start of the substep,
 /// before free flight moved them: its bias then means what Box2D's does,

@@ -84,11 +84,11 @@ STEPWISE_LANES_INLINE void scatter(std::vector<SolverBody>& bodies, const std::u
     }
 }
 
-/// The centres of poses @p index, lane by lane (a Pose is a position and then a quaternion,
-/// so the four Reals read from each are x, y, z and one quaternion component, dropped).
-STEPWISE_LANES_INLINE Vec3Lanes gatherPositions(const std::vector<Pose>& poses, const std::uint32_t (&index)[kLanes]) {
+/// The centres of records @p index, lane by lane (SolverWorkspace::centres: x, y, z and a
+/// fourth Real that is never read, so each centre is one aligned load).
+STEPWISE_LANES_INLINE Vec3Lanes gatherCentres(const std::vector<SolverCentre>& centres, const std::uint32_t (&index)[kLanes]) {
     Lanes rows[kLanes];
-    for (int i = 0; i < kLanes; ++i) rows[i] = load(&poses[index[i]].position.x);
+    for (int i = 0; i < kLanes; ++i) rows[i] = load(&centres[index[i]].position.x);
     transpose(rows[0], rows[1], rows[2], rows[3]);
     return {rows[0], rows[1], rows[2]};
 }
@@ -129,7 +129,6 @@ RoundBatch emptyBatch() {
     for (int lane = 0; lane < kLanes; ++lane) {
         batch.contact[lane] = kEmptyLane;
         batch.bodyA[lane] = batch.bodyB[lane] = kStaticSolverBody;
-        batch.poseA[lane] = batch.poseB[lane] = 0;
     }
     const Lanes zero = splat(0);
     batch.normal = batch.tangent0 = batch.tangent1 = Vec3Lanes{zero, zero, zero};
@@ -145,8 +144,6 @@ void setLane(RoundBatch& batch, int lane, std::uint32_t index, const SolverConta
     batch.contact[lane] = index;
     batch.bodyA[lane] = c.bodyA;
     batch.bodyB[lane] = c.bodyB;
-    batch.poseA[lane] = c.poseA;
-    batch.poseB[lane] = c.poseB;
     batch.normal.setLane(lane, c.normal);
     batch.tangent0.setLane(lane, c.tangent[0]);
     batch.tangent1.setLane(lane, c.tangent[1]);
@@ -258,7 +255,7 @@ void solveRoundContacts(SolverWorkspace& workspace, const ContactSolverSettings&
         const Vec3Lanes& n = batch.normal;
         // Normal: λ = −K⁻¹·s_m·(v_n + bias) − s_i·λ_acc (softness.hpp); a gap closes in this substep, no further.
         const Lanes separation =
-            dot(gatherPositions(workspace.poses, batch.poseB) - gatherPositions(workspace.poses, batch.poseA), n) + batch.separationOffset;
+            dot(gatherCentres(workspace.centres, batch.bodyB) - gatherCentres(workspace.centres, batch.bodyA), n) + batch.separationOffset;
         const auto gap = separation > zero;
         const Lanes softBias = pushOut ? maxLanes(biasRate * separation, slowestPushOut) : zero;
         const Lanes bias = select(gap, separation * inverseSubstep, softBias);

@@ -67,8 +67,6 @@ struct RoundBatch {
     std::uint32_t contact[kLanes];  ///< Index in SolverWorkspace::contacts, or kEmptyLane.
     std::uint32_t bodyA[kLanes];    ///< A's solver-body record.
     std::uint32_t bodyB[kLanes];    ///< B's record (kStaticSolverBody for a plane).
-    std::uint32_t poseA[kLanes];    ///< A's pose in SolverWorkspace::poses.
-    std::uint32_t poseB[kLanes];    ///< B's pose.
     std::uint32_t wave = 0;         ///< The wave of its contacts: batches come in wave order.
     Vec3Lanes normal;               ///< n, from A to B.
     Vec3Lanes tangent0;             ///< t₁; t₂ = n × t₁.

@@ -58,6 +58,18 @@ struct SolverBody {
     Real inverseInertia = 0;
 };
 
+/// @brief A record's centre, padded to four Reals: where a round contact's separation is measured.
+///
+/// The separation of a ball contact needs only the two centres (contact_solver.hpp,
+/// currentSeparation()). The batched pass reads them by the same record
+/// indices as the velocities, four at a time, one aligned load each, instead
+/// of the bodies' full poses (a position and a quaternion, 56 bytes) by
+/// another pair of indices.
+struct alignas(4 * sizeof(Real)) SolverCentre {
+    Vec3 position{0, 0, 0};  ///< The body's centre at the poses last recorded, m (record 0: the origin).
+    Real unused = 0;         ///< Padding to four Reals.
+};
+
 /// @brief What only prepare and a box's write-back read of a body: its inertia for the step.
 ///
 /// The pass changes ω only. The angular momentum follows at the write-back,

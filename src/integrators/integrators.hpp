@@ -137,7 +137,7 @@ Real positionShareOfVelocityChange(IntegratorKind integrator);
 
 /// @brief Sequential impulse: moves each body the constraints pushed by h·Δv + (1 − s)·h²·a and turns it by h·Δω,
 /// Δv and Δω being what the solve changed since recordSubstepStart() (velocity_change_drift.cpp); then
-/// records its pose for the relax passes (SolverWorkspace::poses).
+/// records its pose for the relax passes (SolverWorkspace::poses, and its centre in SolverWorkspace::centres).
 ///
 /// Visits only the bodies with a solver record, those in a contact or a
 /// joint: no other body's velocity can have changed. Each one's solved

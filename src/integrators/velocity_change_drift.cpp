@@ -50,6 +50,7 @@ void driftByVelocityChange(SolverWorkspace& workspace, Real h, IntegratorKind in
         }
         // The relax passes measure separations here; no other body's pose is read by a constraint.
         workspace.poses[index] = {body.position, body.orientation};
+        workspace.centres[i].position = body.position;
     }
 }
 
