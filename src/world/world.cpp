@@ -75,19 +75,21 @@ Real finiteProbe(const DynamicObject& body, unsigned parts) {
 }
 
 /// The same probe over the contact solver's packed copies: each record's v and
-/// ω, and the pose the drift recorded for its body. After the solve and relax
-/// stages these are the numbers just written to the objects, and the records
-/// are the only bodies those stages move (prepareContacts()), so the check reads
-/// two contiguous arrays instead of every object. (The angular momentum is
-/// L + I·Δω with a finite Δω: the next stage that checks it, integrate or
-/// restitution, names it if it overflowed.)
-Real finiteProbe(const SolverWorkspace& workspace) {
+/// ω, and (with kPose in @p parts) the pose the drift recorded for its body.
+/// After the solve and relax stages these are the numbers just written to the
+/// objects, and the records are the only bodies those stages move
+/// (prepareContacts()), so the check reads two contiguous arrays instead of
+/// every object. (The angular momentum is L + I·Δω with a finite Δω: the next
+/// stage that checks it, integrate or restitution, names it if it overflowed.)
+Real finiteProbe(const SolverWorkspace& workspace, unsigned parts) {
     Real probe = 0;
     for (std::size_t i = 1; i < workspace.bodies.size(); ++i) {
         const SolverBody& record = workspace.bodies[i];
-        const Pose& pose = workspace.poses[workspace.recordBody[i]];
-        probe += zeroIfFinite(record.velocity) + zeroIfFinite(record.angularVelocity) + zeroIfFinite(pose.position) +
-                 zeroIfFinite(pose.orientation);
+        probe += zeroIfFinite(record.velocity) + zeroIfFinite(record.angularVelocity);
+        if (parts & kPose) {
+            const Pose& pose = workspace.poses[workspace.recordBody[i]];
+            probe += zeroIfFinite(pose.position) + zeroIfFinite(pose.orientation);
+        }
     }
     return probe;
 }
@@ -453,7 +455,7 @@ void World::checkFinite(Stage stage) const {
     // anything is wrong, and only then are the objects searched, to name it.
     const bool solverStage = settings_.solver == SolverKind::SequentialImpulse &&
                              (stage == Stage::SolveConstraints || stage == Stage::RelaxConstraints);
-    if (parts != 0 && !(solverStage && finiteProbe(solverWorkspace_) == Real(0))) {
+    if (parts != 0 && !(solverStage && finiteProbe(solverWorkspace_, parts) == Real(0))) {
         for (const DynamicObject& body : dynamics_) {
             if (finiteProbe(body, parts) == Real(0)) continue;  // all finite: nothing to name
             if (!stepwise::isFinite(body.position)) fail(body.name, "position");
