@@ -146,6 +146,9 @@ private:
     StageRecords stageRecords_{};
     StepObserver* observer_ = nullptr;
     int substep_ = -1;  ///< Substep being run, −1 outside the substep loop (for StageEvent).
+    /// The last integrate() found every number it wrote finite while the bodies were still in
+    /// cache, so checkFinite() need not read them again (World::integrate()).
+    bool integratedFinite_ = false;
     Real time_ = 0;
     std::uint64_t stepCount_ = 0;
 };
