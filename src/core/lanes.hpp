@@ -40,13 +40,19 @@
 /// out-of-line copy compiled without it, which would expect its arguments elsewhere.
 #define STEPWISE_LANES_INLINE inline __attribute__((always_inline))
 
-/// A function on Lanes marked with this is compiled twice: for processors with
-/// AVX2 (four doubles per instruction) and for any x86-64 (SSE2, two); the
-/// program picks the copy for the processor it runs on when it starts. Both
-/// copies give the same numbers. Define STEPWISE_NO_AVX_COPY to build only the
-/// second (to compare them, or for a compiler without `target_clones`).
+/// A function on Lanes marked with this is compiled three times: for
+/// processors with AVX-512 (x86-64-v4), with AVX2 (both four doubles per
+/// instruction), and for any x86-64 (SSE2, two); the program picks the copy
+/// for the processor it runs on when it starts. The AVX-512 copy still works
+/// on four doubles; what it gains is 32 vector registers instead of 16, so a
+/// contact's two bodies, its axes and its impulses stay in registers instead
+/// of being spilled to the stack and read back (the rain's round-contact pass
+/// had about 70 such spills; bench/solver_performance.md, ninth round). All
+/// copies give the same numbers (the file is built with -ffp-contract=off, so
+/// no copy fuses a·b + c into one rounding). Define STEPWISE_NO_AVX_COPY to
+/// build only the last (to compare them, or for a compiler without `target_clones`).
 #if defined(__x86_64__) && !defined(STEPWISE_NO_AVX_COPY)
-#define STEPWISE_LANES_COPIES __attribute__((target_clones("avx2", "default")))
+#define STEPWISE_LANES_COPIES __attribute__((target_clones("arch=x86-64-v4", "avx2", "default")))
 #else
 #define STEPWISE_LANES_COPIES
 #endif

@@ -240,7 +240,7 @@ void clearRoundContactImpulses(SolverWorkspace& workspace) {
 
 // solveContacts()'s pass (contact_solver.cpp), line for line, on four contacts at once: each `if`
 // on a contact's own numbers becomes a select between the two results, lane by lane. Compiled
-// twice (STEPWISE_LANES_COPIES, core/lanes.hpp): AVX2 and any x86-64, the same numbers.
+// three times (STEPWISE_LANES_COPIES, core/lanes.hpp): AVX-512, AVX2 and any x86-64, the same numbers.
 STEPWISE_LANES_COPIES
 void solveRoundContacts(SolverWorkspace& workspace, const ContactSolverSettings& settings, bool useBias) {
     const bool pushOut = useBias && settings.positionCorrection;

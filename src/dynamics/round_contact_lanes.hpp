@@ -5,7 +5,7 @@
 /// waiting for the one before (contact_solver.cpp): about 290 instructions
 /// for a ball on a ball, and a pass is bound by them, not by memory (up to
 /// 16k balls; bench/solver_performance.md, sixth round). A processor can do
-/// the same operation on four doubles at once (SIMD: SSE2 two, AVX2 four),
+/// the same operation on four doubles at once (SIMD: SSE2 two, AVX2 and AVX-512 four),
 /// but only on four *independent* contacts.
 ///
 /// **Waves.** Gauss–Seidel solves the contacts in order, each one reading
@@ -34,7 +34,7 @@
 /// plain one; balls touching boxes see their ball contacts first.
 ///
 /// **The order is the contacts'.** The waves follow from the contacts
-/// alone: the same on every machine, whether the lanes run in AVX2, SSE2 or
+/// alone: the same on every machine, whether the lanes run in AVX-512, AVX2, SSE2 or
 /// no vector registers at all (IEEE 754 rounds each lane as a scalar).
 ///
 /// **The formulas** are the round contact's of solver_body.hpp and
