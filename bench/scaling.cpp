@@ -56,7 +56,7 @@ struct Row {
 /// Runs @p text for @p steps steps; prints and (when @p markdown) writes the tracker's table.
 Row runOne(const std::string& label, const std::string& text, int steps, bool rain, std::FILE* markdown,
            bool& agrees) {
-    World world(parseScene(text, label));
+    World world(onOneThread(parseScene(text, label)));
     std::vector<BodyState> states;
     statesOf(world, states);
     RainMeter rainMeter(world.planes(), kRainRadius);

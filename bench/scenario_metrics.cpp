@@ -21,6 +21,11 @@ glm::dvec3 d(const Vec3& v) { return {double(v.x), double(v.y), double(v.z)}; }
 
 }  // namespace
 
+Scene onOneThread(Scene scene) {
+    scene.settings.threads = 1;
+    return scene;
+}
+
 void statesOf(const World& world, std::vector<BodyState>& out) {
     out.resize(world.dynamics().size());
     for (std::size_t n = 0; n < out.size(); ++n) {

@@ -33,6 +33,13 @@ struct BodyState {
 /// @brief Copies the states of @p world's dynamic bodies into @p out (resized, no allocation once grown).
 void statesOf(const World& world, std::vector<BodyState>& out);
 
+/// @brief @p scene with `Threads=1`. The timed benchmarks measure what one
+/// core does, as Bullet's default world does; without this the narrowphase
+/// would take the scene's default, a thread per core, and a second thread's
+/// hand-offs would be in the CPU time. The threaded narrowphase has its own
+/// benchmark (bench/threads/main.cpp).
+Scene onOneThread(Scene scene);
+
 /// @brief Worst overlap of equal spheres (with each other and with planes) and how many left the box.
 ///
 /// The overlap of two spheres of radius r is 2r − |x_i − x_j| when positive;

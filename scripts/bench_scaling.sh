@@ -80,7 +80,7 @@ growing size and times `World::step()` step by step:
 
 A step of a good engine costs O(n), so *CPU µs per body per step* should
 stay flat as n grows. The time is the process's CPU time per step (median
-over the run): the machine is shared, and on it a step's wall-clock time
+over the run, the World on one thread: `Threads=1`): the machine is shared, and on it a step's wall-clock time
 counts the time other people's compilers held the core (the wall-clock median
 is in the table too). The worst overlap is the deepest sphere–sphere or
 sphere–plane overlap at any step; *escaped* counts the spheres whose centre
@@ -122,8 +122,9 @@ The settings on both sides, so that the comparison is fair:
 | inertia | from the shape (hollow spheres ⅔·m·r²) | Stepwise's principal moments, given to `setMassProps` (so hollow spheres match) |
 | rotation | angular momentum L is the state: torque-free L is exact | ω is the state, implicit gyroscopic term (Bullet's default since 2.83) |
 | continuous collision | speculative contacts (the sweep of each body) | none (Bullet's default) |
+| threads | one: the benchmark sets `Threads=1` (`onOneThread()`, bench/scenario_metrics.hpp), where a scene's default would give the narrowphase a thread per core | one (the default `btDiscreteDynamicsWorld`) |
 
-Both engines run single-threaded here.
+Both engines run single-threaded here, and the times are the process's CPU time.
 
 **Run time against error on the rain.** A speed ratio alone compares two
 engines at whatever accuracy their defaults buy. The *rain sweep* runs the

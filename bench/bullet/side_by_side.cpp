@@ -204,7 +204,7 @@ Table sphereRain(std::size_t count, int rainSteps, bool quick, Targets& targets)
     Table table{"Sphere rain, " + std::to_string(count) + " spheres of r = 0.5 m, " + std::to_string(steps) +
                 " steps of 1/60 s", {}};
 
-    StepwiseEngine ours{World(scene)};
+    StepwiseEngine ours{World(onOneThread(scene))};
     RainMeter ourMeter(scene.planes, kRainRadius);
     const Timing ourSeconds = runSteps(ours, steps, h, [&](const auto& s, Real) { ourMeter.observe(s); });
     std::vector<BodyState> ourEnd;
@@ -260,7 +260,7 @@ Table rainSweep(int rainSteps, bool quick, std::vector<SweepRun>& runs) {
     for (const int substeps : kSweepSubsteps) {
         Scene ours = scene;
         ours.settings.substeps = substeps;
-        StepwiseEngine engine{World(ours)};
+        StepwiseEngine engine{World(onOneThread(ours))};
         RainMeter meter(scene.planes, kRainRadius);
         const Timing t = runSteps(engine, steps, h, [&](const auto& s, Real) { meter.observe(s); });
         runs.push_back({"Stepwise", "Substeps=" + std::to_string(substeps), t.cpu, double(meter.worstOverlap()),
@@ -287,7 +287,7 @@ Table stack(const std::string& path, const std::string& title, bool quick, Targe
     const Real h = scene.settings.timeStep;
     Table table{title + " (" + path.substr(path.find_last_of('/') + 1) + "), " + std::to_string(steps) +
                 " steps, Sleep=" + (scene.settings.sleeping ? "true" : "false"), {}};
-    StepwiseEngine ours{World(scene)};
+    StepwiseEngine ours{World(onOneThread(scene))};
     std::vector<BodyState> initial;
     ours.states(initial);
     StackMeter ourMeter(initial);
@@ -314,7 +314,7 @@ Table freeBox(const std::string& path, bool quick, Targets& targets) {
     const Real h = scene.settings.timeStep;
     Table table{"Free box (reference_free_box.scene): torque-free tumbling, " + std::to_string(steps) + " steps of " +
                 format("%.4f", double(h)) + " s", {}};
-    StepwiseEngine ours{World(scene)};
+    StepwiseEngine ours{World(onOneThread(scene))};
     std::vector<BodyState> initial;
     ours.states(initial);
     FreeBodyMeter ourMeter(initial[0]);
@@ -344,7 +344,7 @@ Table bounce(const std::string& path, Real h, Targets& targets) {
     Table table{"Bounce (reference_bounce.scene), e = " + format("%.2f", e) + ", h = 1/" +
                 std::to_string(std::lround(1 / double(h))) + " s: apex heights against e^(2n)·" +
                 format("%.2f", drop) + " m", {}};
-    StepwiseEngine ours{World(scene)};
+    StepwiseEngine ours{World(onOneThread(scene))};
     BounceMeter ourMeter(floorY, ball.radius);
     runSteps(ours, steps, h, [&](const auto& s, Real) { ourMeter.observe(s[0]); });
     BulletWorld theirs(scene);
@@ -383,7 +383,7 @@ Table incline(const std::string& path) {
     const Vec3 down = downSlope(slope, scene.settings.gravity);
     Table table{"Incline (lesson07_incline.scene): acceleration down the slope over the first " +
                 format("%.0f", double(kInclineTime)) + " s, a = (v·d)/t, in m/s²", {}};
-    StepwiseEngine ours{World(scene)};
+    StepwiseEngine ours{World(onOneThread(scene))};
     std::vector<BodyState> initial;
     ours.states(initial);
     std::vector<BodyState> ourEnd, theirEnd;
