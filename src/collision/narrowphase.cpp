@@ -115,7 +115,11 @@ void collideBalls(const BodySet& bodies, const CandidatePair& pair, bool continu
     scratch.a.radius = bodyA.radius + grown;
     scratch.b.centre = bodyB.position;
     scratch.b.radius = bodyB.radius;
+    // Each test gets the manifold a fresh one would be (a student's collideSphereSphere() may only
+    // add() to it); the points past pointCount are never read, so they are left as they are.
     ContactManifold& found = scratch.found;
+    found.normal = ContactManifold{}.normal;
+    found.pointCount = 0;
     if (!collideSphereSphere(scratch.a, scratch.b, found)) return;
     for (int i = 0; i < found.pointCount; ++i) {
         // The point sat on the grown surface: give the depth and the point back for the real one.
