@@ -188,7 +188,7 @@ struct SolverWorkspace {
     std::vector<SolverBody> bodies;              ///< Record 0 static, then one per dynamic body in a contact or a joint (solver_body.hpp).
     std::vector<SolverBodyInertia> inertias;     ///< The same records' inertia (cold: prepare, and a box's write-back).
     std::vector<std::uint32_t> recordBody;       ///< Per record: its body's index in the World's dynamic array (the copies in and out).
-    std::vector<Real> ballInertia;               ///< Per record: a ball's I, kg·m², for ΔL = I·Δω at the write-back (zero: a box).
+    std::vector<Real> ballInertia;               ///< Per record: a ball's I, kg·m², for L = I·ω at the write-back (zero: a box).
     std::vector<std::uint32_t> bodyRecord;       ///< Per dynamic body: its record in `bodies`, or kStaticSolverBody if none.
     std::span<DynamicObject> dynamics;           ///< The World's dynamic bodies, as prepareContacts() saw them (copyVelocitiesIn(), copyVelocitiesOut()).
     std::vector<CachedImpulse> previousImpulses; ///< Last step's impulses, sorted by key.
@@ -263,7 +263,8 @@ Real currentSeparation(const SolverContact& c, const SolverWorkspace& workspace)
 /// scene has no joints.
 void copyVelocitiesIn(SolverWorkspace& workspace);
 
-/// @brief Writes the solver bodies' velocities back to the World's objects; the angular momentum follows, ΔL = I·Δω.
+/// @brief Writes the solver bodies' velocities back to the World's objects; the angular
+/// momentum follows: L = I·ω for a ball, L + I_world·Δω for a box.
 void copyVelocitiesOut(SolverWorkspace& workspace);
 
 /// @brief copyVelocitiesOut() for record @p record alone; returns its object.
@@ -272,11 +273,16 @@ inline DynamicObject& copyVelocitiesOut(SolverWorkspace& workspace, std::size_t 
     const SolverBody& s = workspace.bodies[record];
     DynamicObject& body = workspace.dynamics[workspace.recordBody[record]];
     body.velocity = s.velocity;
-    // The passes changed ω by I⁻¹·ΔL with the step's world I⁻¹, so L changed by ΔL = I·Δω;
-    // a ball's I is one number (the same product as with its tensor I·E, without reading it).
-    const Vec3 turn = s.angularVelocity - body.angularVelocity;
+    // The passes changed ω by I⁻¹·ΔL with the step's world I⁻¹, so L changed by ΔL = I·Δω.
+    // A ball's I is one number, the same in every orientation, so its L is simply I·ω: written
+    // from ω alone, it is the same whether the record is written back once or many times, which
+    // lets the packed substeps carry a ball without its L (World::substepOnRecords()).
     const Real ballInertia = workspace.ballInertia[record];
-    body.angularMomentum += ballInertia != Real(0) ? ballInertia * turn : workspace.inertias[record].inertia * turn;
+    if (ballInertia != Real(0)) {
+        body.angularMomentum = ballInertia * s.angularVelocity;
+    } else {
+        body.angularMomentum += workspace.inertias[record].inertia * (s.angularVelocity - body.angularVelocity);
+    }
     body.angularVelocity = s.angularVelocity;
     return body;
 }

@@ -76,7 +76,7 @@ struct alignas(4 * sizeof(Real)) SolverCentre {
 /// ΔL = I_world·Δω (with the same world tensor the pass used), once per body
 /// instead of once per row of every contact. A ball's I is one number, kept in
 /// a small array of its own (SolverWorkspace::ballInertia), so its write-back
-/// never reads these 144 bytes.
+/// never reads these 144 bytes: it writes L = I·ω.
 struct SolverBodyInertia {
     Mat3 inverseInertia{0};  ///< World I⁻¹ at the start of the step, 1/(kg·m²) (zero: static).
     Mat3 inertia{0};         ///< World I at the start of the step, kg·m² (zero: static).

@@ -83,8 +83,9 @@ Real finiteProbe(const DynamicObject& body, unsigned parts) {
 /// After the solve and relax stages these are the numbers just written to the
 /// objects, and the records are the only bodies those stages move
 /// (prepareContacts()), so the check reads two contiguous arrays instead of
-/// every object. (The angular momentum is L + I·Δω with a finite Δω: the next
-/// stage that checks it, integrate or restitution, names it if it overflowed.)
+/// every object. (The angular momentum is I·ω for a ball and L + I·Δω for a box, with
+/// a finite ω: the next stage that checks it, integrate or restitution, names it if it
+/// overflowed.)
 Real finiteProbe(const SolverWorkspace& workspace, unsigned parts) {
     Real probe = 0;
     for (std::size_t i = 1; i < workspace.bodies.size(); ++i) {
