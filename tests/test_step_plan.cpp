@@ -206,6 +206,72 @@ TEST_CASE("Trajectories are bit-identical with and without the plan on the confi
     }
 }
 
+TEST_CASE("Balls on the packed substeps end bit for bit where the object path leaves them", "[plan]") {
+    // World::substepOnRecords() does the object path's operations on the solver's records; StepPlan=Off
+    // takes the object path. Compared after every step, with and without friction (rotation planned or
+    // skipped), and with a box that makes some steps take the object path (its contacts have stored rows).
+    Scene scene = frictionlessSpheres(SolverKind::SequentialImpulse, IntegratorKind::SymplecticEuler);
+    SECTION("frictionless: the plan skips rotation") { REQUIRE_FALSE(planOf(scene).rotation.runs); }
+    SECTION("rough and spinning: every ball turns") {
+        for (CollisionPlane& plane : scene.planes) plane.friction = Real(0.6);
+        for (DynamicObject& body : scene.dynamics) body.friction = Real(0.4);
+        scene.dynamics[2].angularVelocity = Vec3(0, 3, 7);
+        REQUIRE(planOf(scene).rotation.runs);
+    }
+    SECTION("a box drops among the balls: its steps take the object path") {
+        for (DynamicObject& body : scene.dynamics) body.friction = Real(0.4);
+        scene.dynamics.push_back(test::dynamicBox("crate", Vec3(1, 4, 0.2), Vec3(0.6), 2, Real(0.5)));
+    }
+    REQUIRE(planOf(scene).packedSubsteps.runs);
+    Scene off = scene;
+    off.settings.stepPlan = false;
+    World packed(scene);
+    World objects(off);
+    int stepsOnRecords = 0;
+    int stepsOnObjects = 0;
+    for (int i = 0; i < 240; ++i) {
+        packed.step();
+        objects.step();
+        requireSameState(packed, objects);
+        REQUIRE_FALSE(objects.substepsRanOnRecords());
+        (packed.substepsRanOnRecords() ? stepsOnRecords : stepsOnObjects) += 1;
+    }
+    INFO(stepsOnRecords << " steps on the records, " << stepsOnObjects << " on the objects");
+    CHECK(stepsOnRecords > 30);  // the comparison above is not empty
+    if (packed.findDynamic("crate") != nullptr) CHECK(stepsOnObjects > 30);
+}
+
+TEST_CASE("The packed substeps are planned only where they carry the scene", "[plan]") {
+    Scene scene = test::emptyScene();
+    scene.dynamics = {test::sphere("a", Vec3(0, 0.5, 0)), test::sphere("b", Vec3(0, 1.5, 0))};
+    scene.planes = {test::ground()};
+    CHECK(planOf(scene).packedSubsteps.runs);
+    SECTION("another integrator") {
+        scene.settings.integrator = IntegratorKind::Verlet;
+        CHECK_FALSE(planOf(scene).packedSubsteps.runs);
+    }
+    SECTION("impulses not accumulated") {
+        scene.settings.accumulateImpulses = false;
+        CHECK_FALSE(planOf(scene).packedSubsteps.runs);
+    }
+    SECTION("forces that follow the bodies") {
+        scene.attractors = {Attractor{"sun", Vec3(2, 1, 0), 40}};
+        CHECK_FALSE(planOf(scene).packedSubsteps.runs);
+    }
+    SECTION("no ball") {
+        scene.dynamics = {test::dynamicBox("crate", Vec3(0, 0.5, 0), Vec3(1), 1, Real(0.5))};
+        CHECK_FALSE(planOf(scene).packedSubsteps.runs);
+    }
+    SECTION("StepPlan=Off") {
+        scene.settings.stepPlan = false;
+        CHECK_FALSE(planOf(scene).packedSubsteps.runs);
+    }
+    SECTION("the Impulse solver") {
+        scene.settings.solver = SolverKind::Impulse;
+        CHECK_FALSE(planOf(scene).packedSubsteps.runs);
+    }
+}
+
 TEST_CASE("Forces are worked out once a step unless a spring or an attractor follows the bodies", "[plan]") {
     // Two balls dropping onto a floor under the sequential impulse (4 substeps), one of them on a
     // spring or both pulled by an attractor. Gravity alone gives a = g and τ = 0 whatever the state,
@@ -435,7 +501,7 @@ TEST_CASE("The explanation lists the stages in pipeline order, substeps indented
         CHECK(text.find("move-kinematics") < text.find("continuous"));
         CHECK(text.find("continuous") < text.find("broadphase"));
         CHECK(text.find("broadphase") < text.find("correct-positions"));
-        CHECK(text.find("substeps") == std::string::npos);
+        CHECK(text.find("substeps:") == std::string::npos);  // no substep loop (only the "packed substeps" line)
         CHECK(text.find("Not in this pipeline") < text.find("prepare-constraints"));
     }
     SECTION("SequentialImpulse: collision first, then the substep loop, then continuous, restitution, sleep") {

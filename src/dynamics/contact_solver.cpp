@@ -295,6 +295,39 @@ void copyVelocitiesOut(SolverWorkspace& workspace) {
     for (std::size_t i = 1; i < workspace.bodies.size(); ++i) copyVelocitiesOut(workspace, i);
 }
 
+bool packRecords(SolverWorkspace& workspace) {
+    if (!workspace.otherContacts.empty()) return false;  // rows of a box or a kinematic body: the object path
+    const std::size_t count = workspace.bodies.size();
+    workspace.centres.resize(count);
+    workspace.orientations.resize(count);
+    workspace.freeFlight.resize(count);
+    workspace.substepStart.resize(count);
+    workspace.centres[0] = SolverCentre{};  // the static record: a plane's "centre" is the origin
+    for (std::size_t i = 1; i < count; ++i) {
+        const DynamicObject& body = workspace.dynamics[workspace.recordBody[i]];
+        // A ball turns by ω = L/I about any axis (rotateTorqueFree()); a sleeper never has a contact
+        // (dropSleepingPairs()) and is never moved, which the kick would not know.
+        const Vec3& s = body.inverseInertiaBody;
+        if (workspace.ballInertia[i] == Real(0) || s.x != s.y || s.x != s.z || body.asleep) return false;
+        workspace.centres[i].position = body.position;
+        workspace.orientations[i] = body.orientation;
+        workspace.freeFlight[i] = {body.acceleration, body.torque, body.angularMomentum};
+    }
+    return true;
+}
+
+void unpackRecords(SolverWorkspace& workspace) {
+    for (std::size_t i = 1; i < workspace.bodies.size(); ++i) {
+        DynamicObject& body = workspace.dynamics[workspace.recordBody[i]];
+        const SolverBody& record = workspace.bodies[i];
+        body.velocity = record.velocity;
+        body.angularVelocity = record.angularVelocity;
+        body.angularMomentum = workspace.ballInertia[i] * record.angularVelocity;  // as copyVelocitiesOut()
+        body.position = workspace.centres[i].position;
+        body.orientation = workspace.orientations[i];
+    }
+}
+
 void recordSubstepStart(SolverWorkspace& workspace) {
     workspace.substepStart.resize(workspace.bodies.size());
     for (std::size_t i = 1; i < workspace.bodies.size(); ++i) {

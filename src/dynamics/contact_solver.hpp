@@ -171,6 +171,13 @@ struct BodyVelocity {
     Vec3 angularVelocity{0, 0, 0};  ///< ω, world frame, rad/s.
 };
 
+/// @brief What free flight needs of a ball on the packed substeps, for the whole step (World::substepOnRecords()).
+struct FreeFlight {
+    Vec3 acceleration{0, 0, 0};   ///< a from the apply-forces stage, m/s² (the same in every substep).
+    Vec3 torque{0, 0, 0};         ///< τ from the apply-forces stage, N·m.
+    Vec3 startMomentum{0, 0, 0};  ///< L at the start of the step, kg·m²/s: the first substep's; later ones take L = I·ω.
+};
+
 /// @brief What the contact solver needs of the World's settings for one substep.
 struct ContactSolverSettings {
     Real substep = 0;                ///< h_s = h / substeps, s.
@@ -209,6 +216,10 @@ struct SolverWorkspace {
     std::vector<std::uint32_t> waveStart;        ///< Per wave: where its contacts start in waveOrder (scratch).
     std::vector<std::uint32_t> waveOrder;        ///< The round contacts, wave by wave (scratch).
     bool roundBatchesAhead = false;              ///< The batches hold newer impulses than `contacts` (syncRoundContacts()).
+    /// Per record, on the packed substeps only (packRecords()): its ball's orientation, turned there.
+    /// (Its centre is in `centres`, its v and ω in `bodies`.)
+    std::vector<Quat> orientations;
+    std::vector<FreeFlight> freeFlight;          ///< Per record, on the packed substeps only: its a, τ and starting L.
 };
 
 /// @brief Builds one SolverContact per contact: anchors, effective masses,
@@ -286,6 +297,36 @@ inline DynamicObject& copyVelocitiesOut(SolverWorkspace& workspace, std::size_t 
     body.angularVelocity = s.angularVelocity;
     return body;
 }
+
+/// @name Packed substeps: the balls' state in the records for the whole step (World::substepOnRecords())
+///
+/// Between the contact passes of a substep the object path hands every
+/// record's body back and forth: the integrator moves the object, its
+/// velocities are copied into the record, the passes change them, the drift
+/// and the relax copy them out again (four passes over objects of some 400
+/// bytes, at 64k balls a quarter of the step). A ball needs little more
+/// than its record holds already: its centre (`centres`), its orientation,
+/// and a, τ for free flight, the same all step when no spring or attractor
+/// follows it. So in a step where every contact holds balls only, those
+/// are gathered once into arrays indexed like the records, the substeps
+/// work there (integrateSymplecticEulerOnRecords(), driftRecordsByVelocityChange()),
+/// and the objects are written once at the end. It is Box2D v3's layout
+/// (b2BodyState, b2BodySim), taken only as far as balls, whose inertia is a
+/// number.
+///@{
+
+/// @brief Gathers what the packed substeps need (`centres`, `orientations`, `freeFlight`) from the objects
+/// of the records; false, with nothing else changed, when this step cannot take them: a contact
+/// with stored rows (a box or a kinematic body), or a record whose body is not an awake ball
+/// with three equal moments of inertia.
+bool packRecords(SolverWorkspace& workspace);
+
+/// @brief Writes the packed substeps' results to the objects: v, ω, L = I·ω, centre and orientation.
+///
+/// The same numbers the object path's copies and drift would have left there (copyVelocitiesOut()
+/// writes a ball's L as I·ω for this reason), and idempotent: writing twice changes nothing.
+void unpackRecords(SolverWorkspace& workspace);
+///@}
 
 /// @brief Notes each record's v and ω as free flight left them (SolverWorkspace::substepStart), before
 /// anything acts on them this substep: the drift moves a body by what the constraints changed since.

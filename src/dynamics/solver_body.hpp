@@ -11,7 +11,8 @@
 /// contact_solver.hpp), the contacts refer to those records by a 32-bit
 /// index, and the velocities are written back after it (scatter:
 /// copyVelocitiesOut()), once per solve and once per relax stage when the
-/// scene has no joints. The world inverse inertia I⁻¹ = R·I_body⁻¹·Rᵀ is computed
+/// scene has no joints; in a step whose contacts all hold balls, not between
+/// the substeps at all (the packed substeps, World::substepOnRecords()). The world inverse inertia I⁻¹ = R·I_body⁻¹·Rᵀ is computed
 /// once per body per step (the solver holds it fixed through the step, see
 /// point_impulse.hpp) and goes into the contacts' rows (ContactRow below),
 /// not into the record a pass reads.

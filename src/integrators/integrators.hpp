@@ -89,6 +89,15 @@ void integrateExplicitEuler(std::span<DynamicObject> bodies, Real h);
 /// L ← L + h·τ, then the orientation by rotateTorqueFree() with the new L.
 void integrateSymplecticEuler(std::span<DynamicObject> bodies, Real h);
 
+/// @brief Symplectic Euler's kick on the contact solver's records, for the packed substeps
+/// (World::substepOnRecords()): v ← v + h·a, L ← L + h·τ, ω = L/I for every ball with a record.
+///
+/// The move x ← x + h·v and the turn follow after the solve, in driftRecordsByVelocityChange().
+/// In a later substep (@p firstSubstep false) the warm start rides along: what the contacts did to
+/// the ball in the last substep is added to the kicked velocities, as warmStartFromLastSubstep()
+/// adds it on the object path. @p canTurn: the step plan's rotation decision (skipsRotation()).
+void integrateSymplecticEulerOnRecords(SolverWorkspace& workspace, Real h, bool canTurn, bool firstSubstep);
+
 /// @brief Velocity Verlet: x ← x + h·v + ½h²·a, a_new = a(x_new), v ← v + ½h·(a + a_new);
 /// for rotation L ← L + ½h·τ, rotateTorqueFree() for h, τ_new = τ(q_new), L ← L + ½h·τ_new.
 /// @param accelerations recomputes DynamicObject::acceleration and DynamicObject::torque
@@ -144,6 +153,12 @@ Real positionShareOfVelocityChange(IntegratorKind integrator);
 /// velocities are first written back to its object (copyVelocitiesOut() for
 /// that record), in the same pass over the bodies.
 void driftByVelocityChange(SolverWorkspace& workspace, Real h, IntegratorKind integrator);
+
+/// @brief The same drift on the packed substeps' records (World::substepOnRecords()), after
+/// symplectic Euler's kick: each ball moves by h·v with its kicked v and turns by its kicked ω,
+/// as the integrator would have moved it, then by h·Δv and h·Δω as above. Writes
+/// SolverWorkspace::centres and SolverWorkspace::orientations; the objects are not touched.
+void driftRecordsByVelocityChange(SolverWorkspace& workspace, Real h);
 
 /// @brief Stage 3: moves kinematic bodies along their prescribed constant velocities.
 void moveKinematics(std::span<KinematicsObject> bodies, Real h);

@@ -26,9 +26,19 @@
 /// flipping at the right rate for thousands of turns. With torque the
 /// method is first order, like the linear part.
 ///
+/// ## On the solver's records (the packed substeps)
+/// A ball in a contact can live in the contact solver's packed record for a
+/// whole step (World::substepOnRecords()). There the two lines are split
+/// around the solve: the kick v + h·a (and L + h·τ, ω = L/I) before it,
+/// integrateSymplecticEulerOnRecords() below; the move x + h·v and the turn
+/// after it, with the kicked velocities and then the solver's change,
+/// driftRecordsByVelocityChange(). The operations are the ones above, in the
+/// same order, so the ball ends where the object path leaves it, to the bit.
+///
 /// Reference: Hairer, Lubich & Wanner, *Geometric Numerical Integration*, §I.1.2
 /// and §VII.5; Millington, *Game Physics Engine Development*, §3.3;
 /// Dullweber, Leimkuhler & McLachlan, J. Chem. Phys. 107 (1997) 5840.
+#include "dynamics/contact_solver.hpp"
 #include "dynamics/inertia.hpp"
 #include "integrators/integrators.hpp"
 
@@ -45,6 +55,26 @@ void integrateSymplecticEuler(std::span<DynamicObject> bodies, Real h) {
         // Drift: the torque-free motion with the new L (normalised inside).
         body.orientation = rotateTorqueFree(body.orientation, body.angularMomentum, body.inverseInertiaBody, h);
         updateAngularVelocity(body);  // ω_{n+1} = I_world(q_{n+1})⁻¹·L_{n+1}
+    }
+}
+
+void integrateSymplecticEulerOnRecords(SolverWorkspace& workspace, Real h, bool canTurn, bool firstSubstep) {
+    for (std::size_t i = 1; i < workspace.bodies.size(); ++i) {
+        SolverBody& record = workspace.bodies[i];
+        BodyVelocity& start = workspace.substepStart[i];
+        const FreeFlight& flight = workspace.freeFlight[i];
+        // What the contacts did to the ball in the last substep: Σ_c λ_c·M⁻¹J_cᵀ (warmStartFromLastSubstep())
+        const Vec3 change = record.velocity - start.velocity;
+        const Vec3 turn = record.angularVelocity - start.angularVelocity;
+        const Vec3 velocity = record.velocity + h * flight.acceleration;  // kick: v_{n+1} = v_n + h·a_n
+        // L: the object's at the step's start; after a substep, I·ω, as copyVelocitiesOut() writes it
+        const Vec3 momentum = firstSubstep ? flight.startMomentum : workspace.ballInertia[i] * record.angularVelocity;
+        Vec3 angularVelocity = record.angularVelocity;
+        const bool skipsTurn = !canTurn && momentum == Vec3(0) && angularVelocity == Vec3(0) && flight.torque == Vec3(0);
+        if (!skipsTurn) angularVelocity = record.inverseInertia * (momentum + h * flight.torque);  // ω = (L + h·τ)/I
+        start = {velocity, angularVelocity};  // free flight's velocities: what the drift measures Δv from
+        record.velocity = firstSubstep ? velocity : velocity + change;
+        record.angularVelocity = firstSubstep ? angularVelocity : angularVelocity + turn;
     }
 }
 

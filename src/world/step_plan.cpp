@@ -89,6 +89,23 @@ PlanDecision jointSolverOf(const PlanInputs& in) {
     return run("runs: the scene has joints");
 }
 
+/// The packed substeps carry one integrator, the contact passes and nothing else (World::substepOnRecords()).
+PlanDecision packedSubstepsOf(const PlanInputs& in, const StepPlan& plan) {
+    if (in.settings.solver == SolverKind::Impulse) return skip("not in the Impulse pipeline (it has no substeps)");
+    if (in.settings.integrator != IntegratorKind::SymplecticEuler) {
+        return skip("off: they carry symplectic Euler only; this integrator moves the objects");
+    }
+    if (!in.settings.accumulateImpulses) {
+        return skip("off: AccumulateImpulses=false warm-starts every substep from the contacts, on the objects");
+    }
+    if (plan.jointSolver.runs) return skip("off: joint passes work on the objects");
+    if (plan.substepForces.runs) return skip("off: forces that follow the bodies are worked out on the objects");
+    bool anyBall = false;
+    for (const DynamicObject& body : in.dynamics) anyBall = anyBall || body.shape == Shape::Sphere;
+    if (!anyBall) return skip("off: no dynamic ball; a box's contacts are solved on the objects");
+    return run("in a step whose contacts all hold balls: substeps on the solver's records, objects written once (same bits)");
+}
+
 PlanDecision idleSkipOf(const PlanInputs& in) {
     if (in.settings.solver == SolverKind::Impulse) {
         return run("on, rarely: the Impulse solver lets no body sleep, so only a world without an awake body is idle");
@@ -235,6 +252,7 @@ StepPlan makeStepPlan(const PlanInputs& in) {
         plan.substepForces = in.settings.solver == SolverKind::SequentialImpulse ? kOff : substepForcesOf(in);
         if (in.settings.solver == SolverKind::SequentialImpulse) plan.jointSolver = kOff;
         plan.idleSkip = skip("off: StepPlan=Off solves every step");
+        plan.packedSubsteps = skip("off: StepPlan=Off runs every substep on the objects");
     } else {
         plan.collisions = collisionsOf(in);
         plan.boxBoxSat = boxBoxOf(in, false);
@@ -242,6 +260,7 @@ StepPlan makeStepPlan(const PlanInputs& in) {
         plan.rotation = rotationOf(in);
         plan.substepForces = substepForcesOf(in);
         plan.idleSkip = idleSkipOf(in);
+        plan.packedSubsteps = packedSubstepsOf(in, plan);
     }
     for (std::size_t i = 0; i < kStageCount; ++i) plan.stages[i] = run(runReason(static_cast<Stage>(i), plan.enabled));
     planStages(in, plan);
@@ -294,6 +313,7 @@ std::string describeStepPlan(const StepPlan& plan) {
     line("forces per substep", plan.substepForces);
     line("joint solver", plan.jointSolver);
     line("idle step skip", plan.idleSkip);
+    line("packed substeps", plan.packedSubsteps);
     text += "  broadphase kind       ";
     text += toString(plan.broadphase);
     text += ": ";

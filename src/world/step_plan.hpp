@@ -11,7 +11,8 @@
 ///
 /// **Skipping never changes the result.** Each rule skips work only when the
 /// work provably leaves every body exactly as it was (a loop over an empty
-/// array, an impulse of zero, a rotation by zero), so the trajectory with the
+/// array, an impulse of zero, a rotation by zero), or takes another road to
+/// the same numbers (the packed substeps), so the trajectory with the
 /// plan is bit for bit the one without it (`World, StepPlan=Off`; the test
 /// "[plan]" compares both on the scenes of config/). The rules are listed at
 /// makeStepPlan().
@@ -75,6 +76,7 @@ struct StepPlan {
     PlanDecision substepForces;    ///< Sequential impulse: are the forces worked out again in every substep after the first?
     PlanDecision jointSolver;      ///< Do the joint calls (prepare, warm start, solve, break) run?
     PlanDecision idleSkip;         ///< Does a step with nothing awake and nothing moving return at once?
+    PlanDecision packedSubsteps;   ///< Sequential impulse: may the substeps run on the solver's packed records (World::substepOnRecords())?
     SolverKind solver = SolverKind::SequentialImpulse; ///< The pipeline the scene runs (pipelineOrder()).
     int substeps = 1;              ///< Substeps of a sequential-impulse step.
     BroadphaseKind broadphase = BroadphaseKind::Auto; ///< The broadphase the scene asks for.
@@ -137,6 +139,18 @@ struct PlanInputs {
 ///   kinematic body moves, nothing can wake a sleeper (only an awake body or
 ///   a moving kinematic body does), so the whole step is skipped; the clock
 ///   still advances. Checked every step, since bodies wake and fall asleep.
+/// - **Packed substeps** (sequential impulse): not a skip but a shorter road
+///   to the same numbers. When the scene integrates with symplectic Euler,
+///   accumulates impulses, and has no joints and no forces that follow the
+///   bodies through the substeps, a step whose contacts all hold balls (no
+///   box, no kinematic body) runs its substeps on the contact solver's
+///   packed records and writes the objects once, at the end
+///   (World::substepOnRecords()). The records get the very operations the
+///   objects would, in the same order, so the trajectory is bit for bit the
+///   object path's (the "[plan]" tests compare them, StepPlan=Off taking the
+///   object path). Which road a step takes is decided each step, after the
+///   contacts are found; with a StepObserver attached, the World always takes
+///   the object path, so that the objects are current between the stages.
 /// - **Broadphase**: `Auto` takes brute force below kAutoBruteForceBelow
 ///   dynamic bodies (chooseBroadphase()); every broadphase returns the same
 ///   pairs in the same order.

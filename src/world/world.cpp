@@ -86,12 +86,16 @@ Real finiteProbe(const DynamicObject& body, unsigned parts) {
 /// every object. (The angular momentum is I·ω for a ball and L + I·Δω for a box, with
 /// a finite ω: the next stage that checks it, integrate or restitution, names it if it
 /// overflowed.)
-Real finiteProbe(const SolverWorkspace& workspace, unsigned parts) {
+/// On the packed substeps (@p packed) the poses are the records' own centres and
+/// orientations (World::substepOnRecords()).
+Real finiteProbe(const SolverWorkspace& workspace, unsigned parts, bool packed) {
     Real probe = 0;
     for (std::size_t i = 1; i < workspace.bodies.size(); ++i) {
         const SolverBody& record = workspace.bodies[i];
         probe += zeroIfFinite(record.velocity) + zeroIfFinite(record.angularVelocity);
-        if (parts & kPose) {
+        if ((parts & kPose) && packed) {
+            probe += zeroIfFinite(workspace.centres[i].position) + zeroIfFinite(workspace.orientations[i]);
+        } else if (parts & kPose) {
             const Pose& pose = workspace.poses[workspace.recordBody[i]];
             probe += zeroIfFinite(pose.position) + zeroIfFinite(pose.orientation);
         }
@@ -236,6 +240,28 @@ void World::integrate(Real h, const AccelerationFunction& forces) {
     integratedFinite_ = probe == Real(0);
 }
 
+/// Symplectic Euler for h over the bodies without a solver record, in blocks
+/// probed as they go (integrate() above): on the packed substeps the balls
+/// with a record are kicked on their records instead (substepOnRecords()).
+void World::integrateBodiesWithoutRecord(Real h) {
+    const std::vector<std::uint32_t>& recordOf = solverWorkspace_.bodyRecord;
+    const std::span<DynamicObject> all(dynamics_);
+    Real probe = 0;
+    for (std::size_t first = 0; first < all.size();) {
+        if (recordOf[first] != kStaticSolverBody) {
+            ++first;
+            continue;
+        }
+        std::size_t end = first + 1;  // a run of bodies without a record, at most a block long
+        while (end < all.size() && end - first < kIntegrateBlock && recordOf[end] == kStaticSolverBody) ++end;
+        const std::span<DynamicObject> block = all.subspan(first, end - first);
+        integrateSymplecticEuler(block, h);
+        for (const DynamicObject& body : block) probe += finiteProbe(body, kPose | kMotion);
+        first = end;
+    }
+    integratedFinite_ = probe == Real(0);
+}
+
 /// `Solver=Impulse`, the foundation's step: move, then find and repair the
 /// collisions the move made. Each line is one stage, in its own file.
 void World::stepWithImpulses() {
@@ -349,14 +375,21 @@ void World::stepWithSequentialImpulses() {
     });
 
     // 4. Contacts and joints → constraints; an awake body wakes the islands it touches
-    //    (src/dynamics/contact_solver.cpp, src/dynamics/joints/joint.cpp, src/dynamics/islands.cpp)
+    //    (src/dynamics/contact_solver.cpp, src/dynamics/joints/joint.cpp, src/dynamics/islands.cpp).
+    //    When every contact holds balls, they are packed into the solver's records for the substeps
+    //    (step_plan.hpp, "packed substeps"); an observer looks at the objects, so then they are not.
+    substepsOnRecords_ = false;
     runStage(Stage::PrepareConstraints, [&] {
         wakeTouchedIslands(bodies(), contacts_, links_);
         prepareContacts(bodies(), contacts_, links_, h, settings_.warmStarting, solverWorkspace_);
         if (plan_.jointSolver.runs) prepareJoints(bodies(), joints_, settings_.warmStarting, jointWorkspace_);
+        substepsOnRecords_ = plan_.packedSubsteps.runs && observer_ == nullptr && packRecords(solverWorkspace_);
     });
 
-    for (int substep = 0; substep < settings_.substeps; ++substep) {
+    // 5–7. The substeps: on the packed records (substepOnRecords(), below: the same operations on
+    //      other arrays), or on the objects, here.
+    if (substepsOnRecords_) substepOnRecords(hs, contactSettings);
+    for (int substep = 0; substep < (substepsOnRecords_ ? 0 : settings_.substeps); ++substep) {
         substep_ = substep;  // for the observer's StageEvent
         // 5. Free flight for h_s (src/integrators/*.cpp, kinematic_motion.cpp)
         if (substep > 0 && plan_.substepForces.runs) runStage(Stage::ApplyForces, [&] { forces(dynamics_); });
@@ -427,6 +460,47 @@ void World::stepWithSequentialImpulses() {
     }
 }
 
+/// Stages 5–7 of stepWithSequentialImpulses() for a step whose contacts all
+/// hold balls: the same operations, in the same order, on the contact
+/// solver's records instead of the objects (step_plan.hpp, "packed substeps";
+/// contact_solver.hpp, packRecords()).
+///
+/// A ball's v and ω stay in its record all step, its centre and orientation
+/// in the arrays beside it, so nothing is copied in or out between the
+/// passes. Symplectic Euler's two lines are split around the solve: the kick
+/// before it (with the warm start from the last substep, which also only adds
+/// to v), the move by h·v after it, with the solver's change in the same pass
+/// (src/integrators/symplectic_euler.cpp, velocity_change_drift.cpp). The
+/// bodies without a record fly free on their objects. After the last relax
+/// the objects get their balls back, and from the bounce on the step goes on
+/// as before.
+void World::substepOnRecords(Real hs, const ContactSolverSettings& contactSettings) {
+    SolverWorkspace& records = solverWorkspace_;
+    for (int substep = 0; substep < settings_.substeps; ++substep) {
+        substep_ = substep;  // for the observer's StageEvent
+        // 5. Free flight: the kick on the records, whole flight for the bodies without one
+        runStage(Stage::Integrate, [&] {
+            integrateSymplecticEulerOnRecords(records, hs, plan_.rotation.runs, substep == 0);
+            integrateBodiesWithoutRecord(hs);
+        });
+        runStage(Stage::MoveKinematics, [&] { moveKinematics(kinematics_, hs); });
+
+        // 6. Warm start (the first substep: from the contacts; later ones rode along with the kick), soft solve,
+        //    and the move by the solved velocities
+        runStage(Stage::SolveConstraints, [&] {
+            if (substep == 0) warmStartContacts(records, settings_.accumulateImpulses);
+            for (int pass = 0; pass < settings_.velocityIterations; ++pass) solveContacts(records, contactSettings, true);
+            driftRecordsByVelocityChange(records, hs);
+        });
+
+        // 7. Relax; after the last one the objects get their balls' state back
+        runStage(Stage::RelaxConstraints, [&] {
+            for (int pass = 0; pass < settings_.relaxIterations; ++pass) solveContacts(records, contactSettings, false);
+            if (substep + 1 == settings_.substeps) unpackRecords(records);
+        });
+    }
+}
+
 /// A joint pass works on the objects' velocities, a contact pass on the solver
 /// bodies' copies: hand the velocities across around the joints. With no joint
 /// acting there is nothing to hand across (and the copies stay as they are,
@@ -479,14 +553,33 @@ void World::checkFinite(Stage stage) const {
                                   " (check masses, time step and forces in the scene)");
     };
     const unsigned parts = statePartsWrittenBy(stage, settings_.integrator);
+    // On the packed substeps the balls with a record are current in the records, not in their objects,
+    // until the last relax (substepOnRecords()): the records are probed, and a record names its object.
     // The solve and relax stages move only the bodies with solver records: their packed copies say whether
     // anything is wrong, and only then are the objects searched, to name it.
     const bool solverStage = settings_.solver == SolverKind::SequentialImpulse &&
                              (stage == Stage::SolveConstraints || stage == Stage::RelaxConstraints);
+    // On the packed substeps the balls with a record are current in the records, not in their objects,
+    // until the last relax (substepOnRecords()): the records are probed (the kick writes only their v
+    // and ω), and a record names its object. The other bodies are objects, probed as they flew.
+    const bool onRecords = substepsOnRecords_ && substep_ >= 0;
+    if (onRecords && parts != 0 && (solverStage || stage == Stage::Integrate)) {
+        const SolverWorkspace& w = solverWorkspace_;
+        const unsigned recordParts = stage == Stage::Integrate ? unsigned(kMotion) : parts;
+        if (finiteProbe(w, recordParts, true) != Real(0)) {
+            for (std::size_t i = 1; i < w.bodies.size(); ++i) {
+                const std::string& name = dynamics_[w.recordBody[i]].name;
+                if (!stepwise::isFinite(w.bodies[i].velocity)) fail(name, "velocity");
+                if (!stepwise::isFinite(w.bodies[i].angularVelocity)) fail(name, "angular velocity");
+                if ((recordParts & kPose) && !stepwise::isFinite(w.centres[i].position)) fail(name, "position");
+                if ((recordParts & kPose) && !stepwise::isFinite(w.orientations[i])) fail(name, "orientation");
+            }
+        }
+    }
     // The Euler integrators probed each block of bodies as they moved it (World::integrate()).
     const bool probedWhileIntegrating = stage == Stage::Integrate && integratedFinite_;
-    if (parts != 0 && !probedWhileIntegrating &&
-        !(solverStage && finiteProbe(solverWorkspace_, parts) == Real(0))) {
+    const bool recordsProbed = solverStage && (onRecords || finiteProbe(solverWorkspace_, parts, false) == Real(0));
+    if (parts != 0 && !probedWhileIntegrating && !recordsProbed) {
         for (const DynamicObject& body : dynamics_) {
             if (finiteProbe(body, parts) == Real(0)) continue;  // all finite: nothing to name
             if (!stepwise::isFinite(body.position)) fail(body.name, "position");

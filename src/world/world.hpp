@@ -87,6 +87,9 @@ public:
     /// @brief What each step runs and why (src/world/step_plan.hpp), as of the last step
     /// (or construction); `stepwise run --explain` prints it.
     const StepPlan& plan() const { return plan_; }
+    /// @brief Did the last step run its substeps on the contact solver's packed records
+    /// (substepOnRecords(), step_plan.hpp "packed substeps")? Bit for bit the same result either way.
+    bool substepsRanOnRecords() const { return substepsOnRecords_; }
     /// @brief Threads the narrowphase uses (the World's `Threads`, 0 resolved to the hardware's count).
     unsigned threadCount() const { return threadPool_->threadCount(); }
     /// @brief Fast bodies the continuous stage moved back to their time of impact in the last step.
@@ -115,8 +118,10 @@ private:
     void stepWithImpulses();
     void measureSweeps(Real h);
     void stepWithSequentialImpulses();
+    void substepOnRecords(Real hs, const ContactSolverSettings& contactSettings);
     void solveJointsBetweenContactPasses(const JointSolverSettings& jointSettings, bool useBias);
     void integrate(Real h, const AccelerationFunction& forces);
+    void integrateBodiesWithoutRecord(Real h);
     BodySet bodies();
 
     WorldSettings settings_;
@@ -149,6 +154,9 @@ private:
     /// The last integrate() found every number it wrote finite while the bodies were still in
     /// cache, so checkFinite() need not read them again (World::integrate()).
     bool integratedFinite_ = false;
+    /// This step's substeps run on the solver's packed records (substepOnRecords()): until the
+    /// last relax, the balls with a record are current there, not in their objects.
+    bool substepsOnRecords_ = false;
     Real time_ = 0;
     std::uint64_t stepCount_ = 0;
 };

@@ -111,7 +111,7 @@ struct WorldSettings {
     Real sleepAngularSpeed = kDefaultSleepAngularSpeed; ///< Still below this angular speed, rad/s.
     Real timeToSleep = kDefaultTimeToSleep;            ///< Still for this long → asleep, s.
     BroadphaseKind broadphase = BroadphaseKind::Auto;  ///< Which broadphase finds the candidate pairs.
-    bool stepPlan = true;                              ///< Skip the stages the scene cannot need (src/world/step_plan.hpp).
+    bool stepPlan = true;                              ///< Skip the stages the scene cannot need, pack ball-only substeps (src/world/step_plan.hpp).
     bool continuousCollision = true;                   ///< Fast bodies stop where their path first touches (src/collision/continuous.hpp).
     int threads = kAutoThreads;                        ///< Threads for the narrowphase, ≥ 0 (kAutoThreads: one per hardware thread).
 };
