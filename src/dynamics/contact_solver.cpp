@@ -301,6 +301,7 @@ bool packRecords(SolverWorkspace& workspace) {
     workspace.centres.resize(count);
     workspace.orientations.resize(count);
     workspace.freeFlight.resize(count);
+    workspace.startMomentum.resize(count);
     workspace.substepStart.resize(count);
     workspace.centres[0] = SolverCentre{};  // the static record: a plane's "centre" is the origin
     for (std::size_t i = 1; i < count; ++i) {
@@ -311,7 +312,8 @@ bool packRecords(SolverWorkspace& workspace) {
         if (workspace.ballInertia[i] == Real(0) || s.x != s.y || s.x != s.z || body.asleep) return false;
         workspace.centres[i].position = body.position;
         workspace.orientations[i] = body.orientation;
-        workspace.freeFlight[i] = {body.acceleration, body.torque, body.angularMomentum};
+        workspace.freeFlight[i] = {body.acceleration, body.torque};
+        workspace.startMomentum[i] = body.angularMomentum;
     }
     return true;
 }

@@ -175,7 +175,6 @@ struct BodyVelocity {
 struct FreeFlight {
     Vec3 acceleration{0, 0, 0};   ///< a from the apply-forces stage, m/s² (the same in every substep).
     Vec3 torque{0, 0, 0};         ///< τ from the apply-forces stage, N·m.
-    Vec3 startMomentum{0, 0, 0};  ///< L at the start of the step, kg·m²/s: the first substep's; later ones take L = I·ω.
 };
 
 /// @brief What the contact solver needs of the World's settings for one substep.
@@ -219,7 +218,10 @@ struct SolverWorkspace {
     /// Per record, on the packed substeps only (packRecords()): its ball's orientation, turned there.
     /// (Its centre is in `centres`, its v and ω in `bodies`.)
     std::vector<Quat> orientations;
-    std::vector<FreeFlight> freeFlight;          ///< Per record, on the packed substeps only: its a, τ and starting L.
+    std::vector<FreeFlight> freeFlight;          ///< Per record, on the packed substeps only: its a and τ.
+    /// Per record, on the packed substeps only: its L at the start of the step, kg·m²/s, which the first
+    /// substep's kick starts from (later ones take L = I·ω, as copyVelocitiesOut() writes it).
+    std::vector<Vec3> startMomentum;
 };
 
 /// @brief Builds one SolverContact per contact: anchors, effective masses,
@@ -315,7 +317,7 @@ inline DynamicObject& copyVelocitiesOut(SolverWorkspace& workspace, std::size_t 
 /// number.
 ///@{
 
-/// @brief Gathers what the packed substeps need (`centres`, `orientations`, `freeFlight`) from the objects
+/// @brief Gathers what the packed substeps need (`centres`, `orientations`, `freeFlight`, `startMomentum`) from the objects
 /// of the records; false, with nothing else changed, when this step cannot take them: a contact
 /// with stored rows (a box or a kinematic body), or a record whose body is not an awake ball
 /// with three equal moments of inertia.

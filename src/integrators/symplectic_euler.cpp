@@ -68,7 +68,7 @@ void integrateSymplecticEulerOnRecords(SolverWorkspace& workspace, Real h, bool 
         const Vec3 turn = record.angularVelocity - start.angularVelocity;
         const Vec3 velocity = record.velocity + h * flight.acceleration;  // kick: v_{n+1} = v_n + h·a_n
         // L: the object's at the step's start; after a substep, I·ω, as copyVelocitiesOut() writes it
-        const Vec3 momentum = firstSubstep ? flight.startMomentum : workspace.ballInertia[i] * record.angularVelocity;
+        const Vec3 momentum = firstSubstep ? workspace.startMomentum[i] : workspace.ballInertia[i] * record.angularVelocity;
         Vec3 angularVelocity = record.angularVelocity;
         const bool skipsTurn = !canTurn && momentum == Vec3(0) && angularVelocity == Vec3(0) && flight.torque == Vec3(0);
         if (!skipsTurn) angularVelocity = record.inverseInertia * (momentum + h * flight.torque);  // ω = (L + h·τ)/I

@@ -45,7 +45,9 @@ void driftByVelocityChange(SolverWorkspace& workspace, Real h, IntegratorKind in
         const Vec3 change = body.velocity - before.velocity;
         const Vec3 turn = body.angularVelocity - before.angularVelocity;
         if (!body.asleep && (change != Vec3(0) || turn != Vec3(0))) {  // else free flight's own step stands
-            body.position += h * change + lag * h * h * body.acceleration;
+            Vec3 move = h * change;
+            if (lag != Real(0)) move += lag * h * h * body.acceleration;  // explicit Euler, Verlet: an older velocity
+            body.position += move;
             if (turn != Vec3(0)) body.orientation = turnBySmallAngle(body.orientation, turn, h);
         }
         // The relax passes measure separations here; no other body's pose is read by a constraint.
@@ -55,9 +57,7 @@ void driftByVelocityChange(SolverWorkspace& workspace, Real h, IntegratorKind in
 }
 
 void driftRecordsByVelocityChange(SolverWorkspace& workspace, Real h) {
-    // (1 − s)·h²·a vanishes for symplectic Euler (s = 1); it is written out as in driftByVelocityChange()
-    // so that both roads round alike, to the bit.
-    const Real lag = Real(1) - positionShareOfVelocityChange(IntegratorKind::SymplecticEuler);
+    // Symplectic Euler moved with the new velocity (s = 1): no (1 − s)·h²·a term, as above.
     for (std::size_t i = 1; i < workspace.bodies.size(); ++i) {
         const SolverBody& record = workspace.bodies[i];
         const BodyVelocity& kicked = workspace.substepStart[i];  // as the kick left them
@@ -70,7 +70,7 @@ void driftRecordsByVelocityChange(SolverWorkspace& workspace, Real h) {
         const Vec3 change = record.velocity - kicked.velocity;
         const Vec3 turn = record.angularVelocity - kicked.angularVelocity;
         if (change != Vec3(0) || turn != Vec3(0)) {
-            position += h * change + lag * h * h * workspace.freeFlight[i].acceleration;
+            position += h * change;
             if (turn != Vec3(0)) orientation = turnBySmallAngle(orientation, turn, h);
         }
         centre = position;  // where the relax passes measure the separations

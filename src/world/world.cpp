@@ -556,9 +556,12 @@ void World::checkFinite(Stage stage) const {
     // On the packed substeps the balls with a record are current in the records, not in their objects,
     // until the last relax (substepOnRecords()): the records are probed, and a record names its object.
     // The solve and relax stages move only the bodies with solver records: their packed copies say whether
-    // anything is wrong, and only then are the objects searched, to name it.
+    // anything is wrong, and only then are the objects searched, to name it. So does the bounce, which
+    // writes the records' velocities to their objects, unless joints are finished there too (finishJoints()
+    // sets a jointed body's ω from its L, on the object).
+    const bool bounceOnRecords = stage == Stage::Restitution && !plan_.jointSolver.runs;
     const bool solverStage = settings_.solver == SolverKind::SequentialImpulse &&
-                             (stage == Stage::SolveConstraints || stage == Stage::RelaxConstraints);
+                             (stage == Stage::SolveConstraints || stage == Stage::RelaxConstraints || bounceOnRecords);
     // On the packed substeps the balls with a record are current in the records, not in their objects,
     // until the last relax (substepOnRecords()): the records are probed (the kick writes only their v
     // and ω), and a record names its object. The other bodies are objects, probed as they flew.
