@@ -54,6 +54,7 @@
 /// See lectures/01–03.
 #pragma once
 
+#include <cstddef>
 #include <span>
 #include <vector>
 
@@ -96,7 +97,9 @@ void integrateSymplecticEuler(std::span<DynamicObject> bodies, Real h);
 /// In a later substep (@p firstSubstep false) the warm start rides along: what the contacts did to
 /// the ball in the last substep is added to the kicked velocities, as warmStartFromLastSubstep()
 /// adds it on the object path. @p canTurn: the step plan's rotation decision (skipsRotation()).
-void integrateSymplecticEulerOnRecords(SolverWorkspace& workspace, Real h, bool canTurn, bool firstSubstep);
+/// Works on records [@p first, @p end), so that the World can probe each block as it goes.
+void integrateSymplecticEulerOnRecords(SolverWorkspace& workspace, std::size_t first, std::size_t end, Real h,
+                                       bool canTurn, bool firstSubstep);
 
 /// @brief Velocity Verlet: x ← x + h·v + ½h²·a, a_new = a(x_new), v ← v + ½h·(a + a_new);
 /// for rotation L ← L + ½h·τ, rotateTorqueFree() for h, τ_new = τ(q_new), L ← L + ½h·τ_new.
@@ -158,7 +161,8 @@ void driftByVelocityChange(SolverWorkspace& workspace, Real h, IntegratorKind in
 /// symplectic Euler's kick: each ball moves by h·v with its kicked v and turns by its kicked ω,
 /// as the integrator would have moved it, then by h·Δv and h·Δω as above. Writes
 /// SolverWorkspace::centres and SolverWorkspace::orientations; the objects are not touched.
-void driftRecordsByVelocityChange(SolverWorkspace& workspace, Real h);
+/// Works on records [@p first, @p end).
+void driftRecordsByVelocityChange(SolverWorkspace& workspace, std::size_t first, std::size_t end, Real h);
 
 /// @brief Stage 3: moves kinematic bodies along their prescribed constant velocities.
 void moveKinematics(std::span<KinematicsObject> bodies, Real h);

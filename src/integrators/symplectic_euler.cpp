@@ -58,8 +58,9 @@ void integrateSymplecticEuler(std::span<DynamicObject> bodies, Real h) {
     }
 }
 
-void integrateSymplecticEulerOnRecords(SolverWorkspace& workspace, Real h, bool canTurn, bool firstSubstep) {
-    for (std::size_t i = 1; i < workspace.bodies.size(); ++i) {
+void integrateSymplecticEulerOnRecords(SolverWorkspace& workspace, std::size_t first, std::size_t end, Real h,
+                                       bool canTurn, bool firstSubstep) {
+    for (std::size_t i = first; i < end; ++i) {
         SolverBody& record = workspace.bodies[i];
         BodyVelocity& start = workspace.substepStart[i];
         const FreeFlight& flight = workspace.freeFlight[i];

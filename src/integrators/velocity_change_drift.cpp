@@ -56,9 +56,9 @@ void driftByVelocityChange(SolverWorkspace& workspace, Real h, IntegratorKind in
     }
 }
 
-void driftRecordsByVelocityChange(SolverWorkspace& workspace, Real h) {
+void driftRecordsByVelocityChange(SolverWorkspace& workspace, std::size_t first, std::size_t end, Real h) {
     // Symplectic Euler moved with the new velocity (s = 1): no (1 − s)·h²·a term, as above.
-    for (std::size_t i = 1; i < workspace.bodies.size(); ++i) {
+    for (std::size_t i = first; i < end; ++i) {
         const SolverBody& record = workspace.bodies[i];
         const BodyVelocity& kicked = workspace.substepStart[i];  // as the kick left them
         Vec3& centre = workspace.centres[i].position;

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <stdexcept>
 
 #include "collision/narrowphase.hpp"
@@ -78,6 +79,9 @@ Real finiteProbe(const DynamicObject& body, unsigned parts) {
     return probe;
 }
 
+/// "Up to the last record", for a range of records.
+constexpr std::size_t kAllRecords = std::numeric_limits<std::size_t>::max();
+
 /// The same probe over the contact solver's packed copies: each record's v and
 /// ω, and (with kPose in @p parts) the pose the drift recorded for its body.
 /// After the solve and relax stages these are the numbers just written to the
@@ -88,9 +92,10 @@ Real finiteProbe(const DynamicObject& body, unsigned parts) {
 /// overflowed.)
 /// On the packed substeps (@p packed) the poses are the records' own centres and
 /// orientations (World::substepOnRecords()).
-Real finiteProbe(const SolverWorkspace& workspace, unsigned parts, bool packed) {
+Real finiteProbe(const SolverWorkspace& workspace, unsigned parts, bool packed, std::size_t first = 1,
+                 std::size_t end = kAllRecords) {
     Real probe = 0;
-    for (std::size_t i = 1; i < workspace.bodies.size(); ++i) {
+    for (std::size_t i = first; i < std::min(end, workspace.bodies.size()); ++i) {
         const SolverBody& record = workspace.bodies[i];
         probe += zeroIfFinite(record.velocity) + zeroIfFinite(record.angularVelocity);
         if ((parts & kPose) && packed) {
@@ -238,6 +243,21 @@ void World::integrate(Real h, const AccelerationFunction& forces) {
         for (const DynamicObject& body : block) probe += finiteProbe(body, kPose | kMotion);
     }
     integratedFinite_ = probe == Real(0);
+}
+
+/// Runs @p pass over the solver's records in blocks of kIntegrateBlock, probing
+/// each block's @p parts for non-finite numbers straight after, while it is
+/// still in cache (as integrate() does over the objects); true when all were finite.
+template <class RecordPass>
+bool World::inProbedRecordBlocks(unsigned parts, RecordPass&& pass) {
+    const std::size_t count = solverWorkspace_.bodies.size();
+    Real probe = 0;
+    for (std::size_t first = 1; first < count; first += kIntegrateBlock) {
+        const std::size_t end = std::min(count, first + kIntegrateBlock);
+        pass(first, end);
+        probe += finiteProbe(solverWorkspace_, parts, true, first, end);
+    }
+    return probe == Real(0);
 }
 
 /// Symplectic Euler for h over the bodies without a solver record, in blocks
@@ -480,7 +500,9 @@ void World::substepOnRecords(Real hs, const ContactSolverSettings& contactSettin
         substep_ = substep;  // for the observer's StageEvent
         // 5. Free flight: the kick on the records, whole flight for the bodies without one
         runStage(Stage::Integrate, [&] {
-            integrateSymplecticEulerOnRecords(records, hs, plan_.rotation.runs, substep == 0);
+            recordsFinite_ = inProbedRecordBlocks(kMotion, [&](std::size_t first, std::size_t end) {
+                integrateSymplecticEulerOnRecords(records, first, end, hs, plan_.rotation.runs, substep == 0);
+            });
             integrateBodiesWithoutRecord(hs);
         });
         runStage(Stage::MoveKinematics, [&] { moveKinematics(kinematics_, hs); });
@@ -490,7 +512,10 @@ void World::substepOnRecords(Real hs, const ContactSolverSettings& contactSettin
         runStage(Stage::SolveConstraints, [&] {
             if (substep == 0) warmStartContacts(records, settings_.accumulateImpulses);
             for (int pass = 0; pass < settings_.velocityIterations; ++pass) solveContacts(records, contactSettings, true);
-            driftRecordsByVelocityChange(records, hs);
+            // The probe after the drift sees the passes' velocities too: the drift does not change them
+            recordsFinite_ = inProbedRecordBlocks(kPose | kMotion, [&](std::size_t first, std::size_t end) {
+                driftRecordsByVelocityChange(records, first, end, hs);
+            });
         });
 
         // 7. Relax; after the last one the objects get their balls' state back
@@ -566,7 +591,9 @@ void World::checkFinite(Stage stage) const {
     // until the last relax (substepOnRecords()): the records are probed (the kick writes only their v
     // and ω), and a record names its object. The other bodies are objects, probed as they flew.
     const bool onRecords = substepsOnRecords_ && substep_ >= 0;
-    if (onRecords && parts != 0 && (solverStage || stage == Stage::Integrate)) {
+    // The kick and the drift probed each block of records as they wrote it (inProbedRecordBlocks()).
+    const bool probedInBlocks = recordsFinite_ && (stage == Stage::Integrate || stage == Stage::SolveConstraints);
+    if (onRecords && parts != 0 && (solverStage || stage == Stage::Integrate) && !probedInBlocks) {
         const SolverWorkspace& w = solverWorkspace_;
         const unsigned recordParts = stage == Stage::Integrate ? unsigned(kMotion) : parts;
         if (finiteProbe(w, recordParts, true) != Real(0)) {

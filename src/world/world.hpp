@@ -122,6 +122,8 @@ private:
     void solveJointsBetweenContactPasses(const JointSolverSettings& jointSettings, bool useBias);
     void integrate(Real h, const AccelerationFunction& forces);
     void integrateBodiesWithoutRecord(Real h);
+    template <class RecordPass>
+    bool inProbedRecordBlocks(unsigned parts, RecordPass&& pass);
     BodySet bodies();
 
     WorldSettings settings_;
@@ -157,6 +159,8 @@ private:
     /// This step's substeps run on the solver's packed records (substepOnRecords()): until the
     /// last relax, the balls with a record are current there, not in their objects.
     bool substepsOnRecords_ = false;
+    /// The last packed kick or drift found every number it wrote finite, block by block (inProbedRecordBlocks()).
+    bool recordsFinite_ = false;
     Real time_ = 0;
     std::uint64_t stepCount_ = 0;
 };
