@@ -27,7 +27,7 @@ set offsets graph 0.08, graph 0.08, graph 0.15, graph 0.15
 
 # Column 1 is the engine, 2 the setting ("Substeps=4"), 3 ms/step, 4 overlap in mm, 5 default (1/0).
 engine(name) = sprintf('< grep "^%s," %s', name, csv)
-plot engine('Stepwise') using 3:4 with linespoints pt 7 ps 1.2 lc rgb '#1f77b4' title 'Stepwise (Substeps 1, 2, 4, 8, 16)', \
+plot engine('Stepwise') using 3:4 with linespoints pt 7 ps 1.2 lc rgb '#1f77b4' title 'Stepwise (Substeps 1, 2, 4, 8, 10, 12, 16)', \
      ''                 using 3:4:(strcol(2)[10:]) with labels offset char 1.2,char 0.8 font ',9' tc rgb '#1f77b4' notitle, \
      engine('Bullet')   using 3:4 with linespoints pt 5 ps 1.2 lc rgb '#d62728' title 'Bullet 3.24 (iterations 5, 10, 20, 40)', \
      ''                 using 3:4:(strcol(2)[12:]) with labels offset char 0,char 1.0 font ',9' tc rgb '#d62728' notitle, \
