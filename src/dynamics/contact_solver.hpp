@@ -318,9 +318,9 @@ inline DynamicObject& copyVelocitiesOut(SolverWorkspace& workspace, std::size_t 
 ///@{
 
 /// @brief Gathers what the packed substeps need (`centres`, `orientations`, `freeFlight`, `startMomentum`) from the objects
-/// of the records; false, with nothing else changed, when this step cannot take them: a contact
-/// with stored rows (a box or a kinematic body), or a record whose body is not an awake ball
-/// with three equal moments of inertia.
+/// of the records; false when this step cannot take them: a contact with stored rows (a box or a
+/// kinematic body), or a record whose body is not an awake ball with three equal moments of inertia.
+/// (What it wrote before finding that out is scratch: the object road records its own centres.)
 bool packRecords(SolverWorkspace& workspace);
 
 /// @brief Writes the packed substeps' results to the objects: v, ω, L = I·ω, centre and orientation.

@@ -578,8 +578,6 @@ void World::checkFinite(Stage stage) const {
                                   " (check masses, time step and forces in the scene)");
     };
     const unsigned parts = statePartsWrittenBy(stage, settings_.integrator);
-    // On the packed substeps the balls with a record are current in the records, not in their objects,
-    // until the last relax (substepOnRecords()): the records are probed, and a record names its object.
     // The solve and relax stages move only the bodies with solver records: their packed copies say whether
     // anything is wrong, and only then are the objects searched, to name it. So does the bounce, which
     // writes the records' velocities to their objects, unless joints are finished there too (finishJoints()
