@@ -51,6 +51,34 @@ TEST_CASE("A solid sphere rolls down a 30 degree incline at 5/7 g sin(theta)", "
     }
 }
 
+TEST_CASE("A ball rolling down an incline turns by the distance it rolls over its radius", "[friction]") {
+    // Rolling without slipping, v = ω × (−R·n) = 0 at the contact: the ball turns about e = n × d by
+    // the angle s/R when its centre has gone s down the slope. In a step the ball moves by h·v_{n+1}
+    // and turns by h·ω_{n+1} with the solved velocities (velocity_change_drift.cpp), so the two sums
+    // agree; a turn by free flight's ω alone would lag by h_s·(ω_end − ω_start), here 0.015 rad.
+    const Real theta = 30, R = 0.5;
+    for (const bool stepPlan : {true, false}) {  // the packed substeps, and the object road
+        for (Real h : {Real(1) / 60, Real(1) / 240}) {
+            Scene scene = test::emptyScene(IntegratorKind::SymplecticEuler, h);
+            scene.settings.stepPlan = stepPlan;
+            scene.planes.push_back(incline(theta));
+            scene.dynamics.push_back(test::sphere("ball", R * scene.planes[0].normal, Vec3(0), R, 1, 0, 0.5));
+            World world(scene);
+            const Vec3 start = world.dynamics()[0].position;
+            while (world.time() < 2 - 1e-9) world.step();
+            const DynamicObject& ball = world.dynamics()[0];
+            const Real rolled = glm::dot(ball.position - start, downSlope(theta));
+            const Vec3 axis = glm::cross(scene.planes[0].normal, downSlope(theta));
+            const Quat expected = glm::angleAxis(rolled / R, axis);
+            // The angle between the two orientations: 2·acos|q₁·q₂| (the ball started unturned)
+            const Real apart = 2 * std::acos(std::min(Real(1), std::abs(glm::dot(ball.orientation, expected))));
+            INFO("StepPlan " << stepPlan << ", h = " << h << ": rolled " << rolled << " m, " << rolled / R << " rad");
+            CHECK(rolled > 6);  // 5/7·g·sin30°·(2 s)²/2 = 7.0 m
+            CHECK(apart < 1e-3);
+        }
+    }
+}
+
 TEST_CASE("A hollow sphere rolls slower: 3/5 g sin(theta)", "[friction]") {
     // I = ⅔·m·R² ⇒ a = g·sinθ / (1 + 2/3) = 3/5·g·sinθ.
     const Real theta = 30, R = 0.5;

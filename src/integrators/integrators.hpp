@@ -122,7 +122,7 @@ Quat rotateByAngularVelocity(const Quat& orientation, const Vec3& omega, Real h)
 /// A turn by 2·atan(|ω|·h/2) instead of |ω|·h: short of the exact
 /// rotateByAngularVelocity() by (|ω|·h)³/12 rad, 10⁻¹⁰ rad for a turn of
 /// 10⁻³ rad. Cheaper (a quaternion product, no series), so used where the
-/// angle is a correction of that size: the drift by the solver's Δω
+/// angle is a correction of that size: the drift of a box by the solver's Δω
 /// (velocity_change_drift.cpp). Not for free flight, whose whole rotation it
 /// would make slightly slow, step after step.
 Quat turnBySmallAngle(const Quat& orientation, const Vec3& omega, Real h);
@@ -150,6 +150,7 @@ Real positionShareOfVelocityChange(IntegratorKind integrator);
 /// @brief Sequential impulse: moves each body the constraints pushed by h·Δv + (1 − s)·h²·a and turns it by h·Δω,
 /// Δv and Δω being what the solve changed since recordSubstepStart() (velocity_change_drift.cpp); then
 /// records its pose for the relax passes (SolverWorkspace::poses, and its centre in SolverWorkspace::centres).
+/// A ball under symplectic Euler is instead turned again from the substep's start, by h·ω with the solved ω.
 ///
 /// Visits only the bodies with a solver record, those in a contact or a
 /// joint: no other body's velocity can have changed. Each one's solved
@@ -158,8 +159,9 @@ Real positionShareOfVelocityChange(IntegratorKind integrator);
 void driftByVelocityChange(SolverWorkspace& workspace, Real h, IntegratorKind integrator);
 
 /// @brief The same drift on the packed substeps' records (World::substepOnRecords()), after
-/// symplectic Euler's kick: each ball moves by h·v with its kicked v and turns by its kicked ω,
-/// as the integrator would have moved it, then by h·Δv and h·Δω as above. Writes
+/// symplectic Euler's kick: each ball moves by h·v with its kicked v, as the integrator would
+/// have moved it, then by h·Δv as above, and turns once from the substep's start, by h·ω with the
+/// solved ω (or the kicked one, if the constraints left it as it was). Writes
 /// SolverWorkspace::centres and SolverWorkspace::orientations; the objects are not touched.
 /// Works on records [@p first, @p end).
 void driftRecordsByVelocityChange(SolverWorkspace& workspace, std::size_t first, std::size_t end, Real h);

@@ -32,8 +32,9 @@
 /// around the solve: the kick v + h·a (and L + h·τ, ω = L/I) before it,
 /// integrateSymplecticEulerOnRecords() below; the move x + h·v and the turn
 /// after it, with the kicked velocities and then the solver's change,
-/// driftRecordsByVelocityChange(). The operations are the ones above, in the
-/// same order, so the ball ends where the object path leaves it, to the bit.
+/// driftRecordsByVelocityChange(). The operations are those of the object
+/// road (this integrator, then driftByVelocityChange()), in the same order,
+/// so the ball ends where the object road leaves it, to the bit.
 ///
 /// Reference: Hairer, Lubich & Wanner, *Geometric Numerical Integration*, §I.1.2
 /// and §VII.5; Millington, *Game Physics Engine Development*, §3.3;

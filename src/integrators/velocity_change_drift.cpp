@@ -15,6 +15,20 @@
 /// turn and this one already costs, O(h_s²·|ω|·|Δω|). The exact turn, with
 /// its series for cos and sin, took 5 % of a sphere rain's step here, this
 /// one 2 % (perf, 4 096 spheres).
+///
+/// **A ball under symplectic Euler turns once, with its new ω.** For a body
+/// with three equal moments of inertia the free rotation is exact:
+/// q(t + h) = exp(½h·ω̂)·q(t) with ω constant (rotateByAngularVelocity()).
+/// So a ball the constraints turned need not add a correction to the
+/// integrator's turn: it is turned again from where the substep started
+/// (its recorded pose), by h_s·ω_{n+1}, the solved ω,
+/// [ q \leftarrow \exp\!ig(	frac12 h_s\,\hat\omega_{n+1}ig)\, q_n , ]
+/// the rotational twin of x_n + h_s·v_{n+1}: no splitting error at all, and
+/// on the packed substeps (World::substepOnRecords()) one turn a substep
+/// instead of two (the 1k sphere rain −7 %, bench/solver_performance.md,
+/// tenth round). A box's free rotation depends on how its axes lie
+/// (rotateTorqueFree()), so it keeps the correction above.
+///
 /// For symplectic Euler the result is exactly x_n + h_s·v_{n+1}, the
 /// position update every sequential-impulse engine makes after its solve
 /// (Box2D's "integrate positions"). Without this drift a resting body would
@@ -35,6 +49,15 @@
 
 namespace stepwise {
 
+namespace {
+
+/// Record @p i is a ball moved by symplectic Euler: it turns again from the substep's start, by h·ω_{n+1}.
+bool turnsWithNewVelocity(const SolverWorkspace& workspace, std::size_t i, IntegratorKind integrator) {
+    return integrator == IntegratorKind::SymplecticEuler && workspace.ballInertia[i] != Real(0);
+}
+
+}  // namespace
+
 void driftByVelocityChange(SolverWorkspace& workspace, Real h, IntegratorKind integrator) {
     const Real lag = Real(1) - positionShareOfVelocityChange(integrator);
     // Only a body with a solver record can have been pushed: one in a contact or a joint (prepareContacts()).
@@ -48,7 +71,11 @@ void driftByVelocityChange(SolverWorkspace& workspace, Real h, IntegratorKind in
             Vec3 move = h * change;
             if (lag != Real(0)) move += lag * h * h * body.acceleration;  // explicit Euler, Verlet: an older velocity
             body.position += move;
-            if (turn != Vec3(0)) body.orientation = turnBySmallAngle(body.orientation, turn, h);
+            if (turn != Vec3(0) && turnsWithNewVelocity(workspace, i, integrator)) {
+                body.orientation = rotateByAngularVelocity(workspace.poses[index].orientation, body.angularVelocity, h);
+            } else if (turn != Vec3(0)) {
+                body.orientation = turnBySmallAngle(body.orientation, turn, h);
+            }
         }
         // The relax passes measure separations here; no other body's pose is read by a constraint.
         workspace.poses[index] = {body.position, body.orientation};
@@ -63,16 +90,13 @@ void driftRecordsByVelocityChange(SolverWorkspace& workspace, std::size_t first,
         const BodyVelocity& kicked = workspace.substepStart[i];  // as the kick left them
         Vec3& centre = workspace.centres[i].position;
         Quat& orientation = workspace.orientations[i];
-        // Free flight, as integrateSymplecticEuler() moves an object: x + h·v, and for a ball the exact turn by ω
+        // Free flight, as integrateSymplecticEuler() moves an object (x + h·v), then what the constraints changed
         Vec3 position = centre + h * kicked.velocity;
-        orientation = rotateByAngularVelocity(orientation, kicked.angularVelocity, h);
-        // Then what the constraints changed, as above
         const Vec3 change = record.velocity - kicked.velocity;
         const Vec3 turn = record.angularVelocity - kicked.angularVelocity;
-        if (change != Vec3(0) || turn != Vec3(0)) {
-            position += h * change;
-            if (turn != Vec3(0)) orientation = turnBySmallAngle(orientation, turn, h);
-        }
+        if (change != Vec3(0) || turn != Vec3(0)) position += h * change;
+        // One exact turn from the substep's start, by the new ω, or by free flight's if the constraints left it
+        orientation = rotateByAngularVelocity(orientation, turn != Vec3(0) ? record.angularVelocity : kicked.angularVelocity, h);
         centre = position;  // where the relax passes measure the separations
     }
 }
