@@ -164,7 +164,10 @@ void printTargets(std::FILE* out, const Targets& t, bool markdown) {
         const double perSmall = small.ourCpu / double(small.count), perLarge = large.ourCpu / double(large.count);
         const double growth = perLarge / perSmall - 1;
         const double bulletGrowth = (large.theirCpu / double(large.count)) / (small.theirCpu / double(small.count)) - 1;
-        rows.push_back({"cost per sphere flat from " + std::to_string(small.count) + " to " + std::to_string(large.count),
+        // The issue asks for flat up to 64 000 bodies; this table has only the sizes Bullet runs too,
+        // and says where the rest is (the Scaling section, bench/scaling.cpp).
+        rows.push_back({"cost per sphere flat from " + std::to_string(small.count) + " to " + std::to_string(large.count) +
+                            " (the issue asks to 64000: Scaling section)",
                         format("%.1f", 1e6 * perSmall) + " → " + format("%.1f", 1e6 * perLarge) + " µs (" +
                             format("%+.0f %%", 100 * growth) + "; Bullet " + format("%+.0f %%", 100 * bulletGrowth) + ")",
                         verdict(std::abs(growth) <= kFlatCostTolerance)});
