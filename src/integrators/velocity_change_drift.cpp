@@ -22,7 +22,7 @@
 /// So a ball the constraints turned need not add a correction to the
 /// integrator's turn: it is turned again from where the substep started
 /// (its recorded pose), by h_s·ω_{n+1}, the solved ω,
-/// [ q \leftarrow \exp\!ig(	frac12 h_s\,\hat\omega_{n+1}ig)\, q_n , ]
+/// \f[ q \leftarrow \exp\!\big(\tfrac12 h_s\,\hat\omega_{n+1}\big)\, q_n , \f]
 /// the rotational twin of x_n + h_s·v_{n+1}: no splitting error at all, and
 /// on the packed substeps (World::substepOnRecords()) one turn a substep
 /// instead of two (the 1k sphere rain −7 %, bench/solver_performance.md,
