@@ -308,8 +308,7 @@ bool packRecords(SolverWorkspace& workspace) {
         const DynamicObject& body = workspace.dynamics[workspace.recordBody[i]];
         // A ball turns by ω = L/I about any axis (rotateTorqueFree()); a sleeper never has a contact
         // (dropSleepingPairs()) and is never moved, which the kick would not know.
-        const Vec3& s = body.inverseInertiaBody;
-        if (workspace.ballInertia[i] == Real(0) || s.x != s.y || s.x != s.z || body.asleep) return false;
+        if (workspace.ballInertia[i] == Real(0) || !equalMoments(body.inverseInertiaBody) || body.asleep) return false;
         workspace.centres[i].position = body.position;
         workspace.orientations[i] = body.orientation;
         workspace.freeFlight[i] = {body.acceleration, body.torque};

@@ -28,9 +28,9 @@ Mat3 parallelAxis(const Mat3& inertiaAboutCentre, Real mass, const Vec3& offset)
     return inertiaAboutCentre + mass * (glm::dot(offset, offset) * Mat3(1) - glm::outerProduct(offset, offset));
 }
 
-namespace {
-/// Three equal moments (a sphere, a cube): R·(s·E)·Rᵀ = s·R·Rᵀ = s·E in every orientation.
 bool equalMoments(const Vec3& diagonal) { return diagonal.x == diagonal.y && diagonal.y == diagonal.z; }
+
+namespace {
 
 Mat3 rotateDiagonal(const Quat& orientation, const Vec3& diagonal) {
     // The same in every orientation: the rotation (two 3×3 products) is skipped.

@@ -20,6 +20,10 @@
 
 namespace stepwise {
 
+/// @brief Are the three principal moments @p diagonal exactly equal (a sphere, a cube)? Then
+/// R·(s·E)·Rᵀ = s·R·Rᵀ = s·E in every orientation: the world tensor is the body's number.
+bool equalMoments(const Vec3& diagonal);
+
 /// @brief Principal moments of a solid ball: I = ⅖·m·r² about every axis, kg·m².
 Vec3 solidSphereInertia(Real mass, Real radius);
 
