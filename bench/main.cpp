@@ -5,7 +5,7 @@
 ///                              [--config DIR] [--problems a,b,...]
 ///     stepwise-bench stress [--quick] [--markdown PATH] [--config DIR] [--cases a,b,...]
 ///
-///     stepwise-bench scaling | bullet | rain-scene ...   (scaling_commands.cpp)
+///     stepwise-bench scaling | stage-costs | bullet | rain-scene ...   (scaling_commands.cpp)
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
@@ -95,6 +95,7 @@ int main(int argc, char** argv) {
     }
     if (args[0] == "stress") return runStressCommand(args);
     if (args[0] == "scaling") return stepwise::bench::scalingCommand({args.begin() + 1, args.end()});
+    if (args[0] == "stage-costs") return stepwise::bench::stageCostsCommand({args.begin() + 1, args.end()});
     if (args[0] == "bullet") return stepwise::bench::bulletCommand({args.begin() + 1, args.end()});
     if (args[0] == "rain-scene") return stepwise::bench::rainSceneCommand({args.begin() + 1, args.end()});
     if (args[0] != "precision") return usageError("unknown subcommand '" + args[0] + "'");

@@ -1,5 +1,5 @@
 /// @file scaling_commands.cpp
-/// @brief Parses the options of `stepwise-bench scaling`, `bullet` and `rain-scene`.
+/// @brief Parses the options of `stepwise-bench scaling`, `stage-costs`, `bullet` and `rain-scene`.
 #include "scaling_commands.hpp"
 
 #include <cstdio>
@@ -10,6 +10,7 @@
 #include <optional>
 
 #include "scaling.hpp"
+#include "stage_costs.hpp"
 #include "sphere_rain_scene.hpp"
 #ifdef STEPWISE_HAVE_BULLET
 #include "bullet/side_by_side.hpp"
@@ -21,12 +22,16 @@ const char* const kScalingUsage =
     "       stepwise-bench scaling [--quick] [--sizes 1000,4000,16000,64000] [--pile-sizes 1000,4000,16000]\n"
     "                              [--steps 240] [--large-steps 240] [--pile-steps 120] [--seed 1] [--markdown PATH]\n"
     "                              [--scenes sphere-rain,box-pile,pyramids]\n"
+    "       stepwise-bench stage-costs [--quick] [--sizes 1000,16000,64000] [--settle 300] [--rounds 20] [--seed 1]\n"
+    "                                  [--markdown PATH]\n"
     "       stepwise-bench bullet [--quick] [--sizes 1000,4000,16000] [--steps 600] [--markdown PATH] [--config DIR]\n"
     "                             [--scenarios rain,rain-sweep,stacks,free-box,bounce,incline] [--sweep-csv PATH]\n"
     "       stepwise-bench rain-scene --count N [--seed S] --out FILE\n"
     "\n"
     "  scaling: Stepwise's ms/step and us per body per step on sphere rain (r = 0.5 m into an open\n"
     "  box), box piles and pyramids of growing size, and the broadphase tracker's table of each run.\n"
+    "  stage-costs: the settled sphere rain at each size, the sizes stepped in turn in one process (so that a\n"
+    "  shared machine's slow minutes fall on all of them), each stage's cost in ns per body per step.\n"
     "  bullet: the same scene files in Stepwise and in Bullet 3, one table per scenario (sphere rain,\n"
     "  the 1k rain's work-precision sweep, pyramid, tower, free box, bounce at 1/60 and 1/240 s, incline),\n"
     "  then the verdicts on the targets of issue #7; needs -DSTEPWISE_WITH_BULLET=ON.\n"
@@ -123,6 +128,28 @@ int scalingCommand(const std::vector<std::string>& args) {
                               {"--scenes", [&](const std::string& v) { o.scenes = names(v); return true; }},
                               {"--markdown", [&](const std::string& v) { o.markdownPath = v; return true; }}});
     return status ? status : runScaling(o);
+}
+
+int stageCostsCommand(const std::vector<std::string>& args) {
+    StageCostOptions o;
+    const auto whole = [](int& target) {
+        return [&target](const std::string& v) {
+            const auto n = count(v);
+            if (n) target = static_cast<int>(*n);
+            return n.has_value();
+        };
+    };
+    const int status = parse(args, {{"--quick", [&] { o.quick = true; }}},
+                             {{"--sizes", [&](const std::string& v) {
+                                   const auto n = counts(v);
+                                   if (n) o.sizes = *n;
+                                   return n.has_value();
+                               }},
+                              {"--settle", whole(o.settleSteps)},
+                              {"--rounds", whole(o.rounds)},
+                              {"--seed", [&](const std::string& v) { o.seed = std::strtoull(v.c_str(), nullptr, 10); return true; }},
+                              {"--markdown", [&](const std::string& v) { o.markdownPath = v; return true; }}});
+    return status ? status : runStageCosts(o);
 }
 
 int bulletCommand([[maybe_unused]] const std::vector<std::string>& args) {

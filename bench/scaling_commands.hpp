@@ -1,5 +1,5 @@
 /// @file scaling_commands.hpp
-/// @brief The command lines of `stepwise-bench scaling`, `bullet` and `rain-scene` (bench/main.cpp dispatches).
+/// @brief The command lines of `stepwise-bench scaling`, `stage-costs`, `bullet` and `rain-scene` (bench/main.cpp dispatches).
 #pragma once
 
 #include <string>
@@ -11,6 +11,9 @@ namespace stepwise::bench {
 /// [--pile-steps N] [--seed S] [--markdown PATH]`; @p args start after the subcommand. Returns the exit code.
 int scalingCommand(const std::vector<std::string>& args);
 
+/// @brief `stepwise-bench stage-costs [--quick] [--sizes LIST] [--settle N] [--rounds N] [--seed S] [--markdown PATH]`.
+int stageCostsCommand(const std::vector<std::string>& args);
+
 /// @brief `stepwise-bench bullet [--quick] [--sizes LIST] [--markdown PATH] [--config DIR]`; exit code 2 with
 /// a message when the program was built without Bullet.
 int bulletCommand(const std::vector<std::string>& args);
@@ -18,7 +21,7 @@ int bulletCommand(const std::vector<std::string>& args);
 /// @brief `stepwise-bench rain-scene --count N [--seed S] --out FILE`: writes the sphere-rain scene.
 int rainSceneCommand(const std::vector<std::string>& args);
 
-/// @brief Usage of the three commands, for `stepwise-bench --help`.
+/// @brief Usage of the four commands, for `stepwise-bench --help`.
 extern const char* const kScalingUsage;
 
 }  // namespace stepwise::bench

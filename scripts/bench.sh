@@ -5,7 +5,8 @@
 #
 #   scripts/bench.sh                 the full sweep, 5 timed repetitions per point
 #   scripts/bench.sh --repeats 11    more repetitions (a noisy machine)
-#   scripts/bench.sh --scaling       also re-measure the Scaling section (scripts/bench_scaling.sh; tens of minutes)
+#   scripts/bench.sh --scaling       also re-measure the Scaling section and its stage-by-stage table
+#                                    (scripts/bench_scaling.sh; tens of minutes)
 #   scripts/bench.sh --bullet        also re-measure the Side by side with Bullet section (installs Bullet):
 #                                    the scenario tables, the rain's run time against overlap, the verdicts
 #
@@ -30,8 +31,9 @@ extra_runs=()
 while [[ $# -gt 0 ]]; do
     case $1 in
         --repeats) repeats=${2:?--repeats needs a number}; shift 2 ;;
-        --scaling|--bullet) extra_runs+=("${1#--}"); shift ;;
-        -h|--help) sed -n '2,20p' "$0"; exit 0 ;;
+        --scaling) extra_runs+=(scaling stage-costs); shift ;;
+        --bullet) extra_runs+=(bullet); shift ;;
+        -h|--help) sed -n '2,21p' "$0"; exit 0 ;;
         *) echo "bench.sh: unknown option '$1' (see --help)" >&2; exit 2 ;;
     esac
 done

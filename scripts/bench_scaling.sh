@@ -3,12 +3,14 @@
 #
 #   scripts/bench_scaling.sh --run scaling   runs `stepwise-bench scaling` (build/release; tens of minutes of
 #                                            CPU, most of it the 64k-sphere rain) into docs/data/bench-scaling.txt
+#   scripts/bench_scaling.sh --run stage-costs  runs `stepwise-bench stage-costs` (build/release; a few minutes: the
+#                                            64k rain must settle first) into docs/data/bench-stage-costs.txt
 #   scripts/bench_scaling.sh --run bullet    runs `stepwise-bench bullet` (installs Bullet with
 #                                            `scripts/setup.sh --with-bullet`, builds build/bullet with
 #                                            -DSTEPWISE_WITH_BULLET=ON) into docs/data/bench-bullet.txt
-#   scripts/bench_scaling.sh --sections      prints both sections as Markdown, from those two files
+#   scripts/bench_scaling.sh --sections      prints both sections as Markdown, from those three files
 #
-# `scripts/bench.sh --scaling --bullet` runs both and rewrites the page; plain
+# `scripts/bench.sh --scaling --bullet` runs all three and rewrites the page; plain
 # `scripts/bench.sh` keeps the last measured tables. The data files are Markdown
 # kept as .txt so that Doxygen (which reads docs/**/*.md) does not make pages of them.
 set -euo pipefail
@@ -17,6 +19,7 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 cd "$root"
 scaling_data=docs/data/bench-scaling.txt
 bullet_data=docs/data/bench-bullet.txt
+stage_costs_data=docs/data/bench-stage-costs.txt
 jobs=${STEPWISE_JOBS:-2}
 
 # How a table was made: enough to tell two machines' tables apart.
@@ -96,6 +99,22 @@ EOF
         echo "Not measured yet: run \`scripts/bench_scaling.sh --run scaling\`."; fi
     cat <<'EOF'
 
+### Cost per body, stage by stage {#benchmarks-stage-costs}
+
+The table above times each size in its own run, over the rain's fall and
+first settling. `stepwise-bench stage-costs` asks where a growth comes
+from, in the state the side-by-side's 600 steps spend most of their time
+in: it lets every size fall and settle first (untimed), then steps the
+sizes *in turn*, round after round in one process, so that a shared
+machine's slow minutes fall on all of them alike, and splits each step by
+stage (`World::stageRecords()`, wall clock; the whole step's CPU time is
+the last timed row). A ratio near 1 is a stage whose cost per body is flat.
+
+EOF
+    if [[ -f $stage_costs_data ]]; then cat "$stage_costs_data"; else
+        echo "Not measured yet: run \`scripts/bench_scaling.sh --run stage-costs\`."; fi
+    cat <<'EOF'
+
 ## Side by side with Bullet {#benchmarks-bullet}
 
 `stepwise-bench bullet` (issue #7; built only with
@@ -153,9 +172,9 @@ EOF
 case ${1:-} in
     --run)
         case ${2:-} in
-            scaling|bullet) run "$2" ;;
-            *) echo "bench_scaling.sh: --run needs scaling or bullet" >&2; exit 2 ;;
+            scaling|stage-costs|bullet) run "$2" ;;
+            *) echo "bench_scaling.sh: --run needs scaling, stage-costs or bullet" >&2; exit 2 ;;
         esac ;;
     --sections) sections ;;
-    *) sed -n '2,13p' "$0"; exit 2 ;;
+    *) sed -n '2,15p' "$0"; exit 2 ;;
 esac
