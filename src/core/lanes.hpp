@@ -123,6 +123,10 @@ STEPWISE_LANES_INLINE Vec3Lanes operator*(Lanes s, const Vec3Lanes& v) { return 
 STEPWISE_LANES_INLINE Vec3Lanes& operator+=(Vec3Lanes& a, const Vec3Lanes& b) { return a = a + b; }
 /// a = a − b.
 STEPWISE_LANES_INLINE Vec3Lanes& operator-=(Vec3Lanes& a, const Vec3Lanes& b) { return a = a - b; }
+/// a × b in each lane, each component formed as glm::cross forms it (so a lane is glm::cross, to the bit).
+STEPWISE_LANES_INLINE Vec3Lanes cross(const Vec3Lanes& a, const Vec3Lanes& b) {
+    return {a.y * b.z - b.y * a.z, a.z * b.x - b.z * a.x, a.x * b.y - b.x * a.y};
+}
 /// a·b in each lane, summed as glm::dot sums: (x + y) + z.
 STEPWISE_LANES_INLINE Lanes dot(const Vec3Lanes& a, const Vec3Lanes& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 

@@ -56,11 +56,10 @@ STEPWISE_LANES_INLINE void transpose(Lanes& r0, Lanes& r1, Lanes& r2, Lanes& r3)
 STEPWISE_LANES_INLINE const Real* realsOf(const SolverBody& body) { return &body.velocity.x; }
 STEPWISE_LANES_INLINE Real* realsOf(SolverBody& body) { return &body.velocity.x; }
 
-/// The velocities of records @p index of @p bodies, lane by lane; the masses are the batch's own
-/// (@p inverseMass, @p inverseInertia), fixed through the step. Only the rows the pass uses are
-/// transposed: of the second half of a record, [ω_y ω_z m⁻¹ I⁻¹], the first two.
-STEPWISE_LANES_INLINE BodyLanes gather(const std::vector<SolverBody>& bodies, const std::uint32_t (&index)[kLanes],
-                                       const Lanes& inverseMass, const Lanes& inverseInertia) {
+/// Records @p index of @p bodies, lane by lane: the velocities, and the masses m⁻¹ and I⁻¹ that
+/// arrive in the same loads (the second half of a record is [ω_y ω_z m⁻¹ I⁻¹]), so a batch
+/// need not carry copies of them.
+STEPWISE_LANES_INLINE BodyLanes gather(const std::vector<SolverBody>& bodies, const std::uint32_t (&index)[kLanes]) {
     Lanes low[kLanes];   // [v_x v_y v_z ω_x] of each body
     Lanes high[kLanes];  // [ω_y ω_z m⁻¹ I⁻¹]
     for (int i = 0; i < kLanes; ++i) {
@@ -68,8 +67,8 @@ STEPWISE_LANES_INLINE BodyLanes gather(const std::vector<SolverBody>& bodies, co
         high[i] = load(realsOf(bodies[index[i]]) + kLanes);
     }
     transpose(low[0], low[1], low[2], low[3]);
-    transpose(high[0], high[1], high[2], high[3]);  // rows 2 and 3 (m⁻¹, I⁻¹) are never read: the compiler drops them
-    return {{low[0], low[1], low[2]}, {low[3], high[0], high[1]}, inverseMass, inverseInertia};
+    transpose(high[0], high[1], high[2], high[3]);
+    return {{low[0], low[1], low[2]}, {low[3], high[0], high[1]}, high[2], high[3]};
 }
 
 /// Writes the velocities back to records @p index, in lane order; m⁻¹ and I⁻¹ stay as they are in memory.
@@ -104,19 +103,19 @@ STEPWISE_LANES_INLINE void applyNormal(BodyLanes& a, BodyLanes& b, const Vec3Lan
 /// J·v along both tangents, with the sliding Δv = v_B − v_A and the spin s = ℓ_B·ω_B − ℓ_A·ω_A
 /// (roundFrictionVelocities() in solver_body.hpp): t₁·Δv + t₂·s and t₂·Δv − t₁·s.
 STEPWISE_LANES_INLINE void frictionVelocities(const BodyLanes& a, const BodyLanes& b, const RoundBatch& batch,
-                                              Lanes& along0, Lanes& along1) {
+                                              const Vec3Lanes& tangent1, Lanes& along0, Lanes& along1) {
     const Vec3Lanes sliding = b.velocity - a.velocity;
     const Vec3Lanes spin = batch.leverB * b.angularVelocity - batch.leverA * a.angularVelocity;
-    along0 = dot(sliding, batch.tangent0) + dot(batch.tangent1, spin);
-    along1 = dot(sliding, batch.tangent1) - dot(batch.tangent0, spin);
+    along0 = dot(sliding, batch.tangent0) + dot(tangent1, spin);
+    along1 = dot(sliding, tangent1) - dot(batch.tangent0, spin);
 }
 
 /// The friction impulse P = λ₁·t₁ + λ₂·t₂ as one vector: Δv = ∓m⁻¹·P, Δω = ∓I⁻¹·ℓ·(n × P),
 /// n × P = λ₁·t₂ − λ₂·t₁ (applyRoundFrictionImpulse() in solver_body.hpp).
-STEPWISE_LANES_INLINE void applyFriction(BodyLanes& a, BodyLanes& b, const RoundBatch& batch, Lanes lambda0,
-                                         Lanes lambda1) {
-    const Vec3Lanes push = lambda0 * batch.tangent0 + lambda1 * batch.tangent1;
-    const Vec3Lanes twist = lambda0 * batch.tangent1 - lambda1 * batch.tangent0;
+STEPWISE_LANES_INLINE void applyFriction(BodyLanes& a, BodyLanes& b, const RoundBatch& batch,
+                                         const Vec3Lanes& tangent1, Lanes lambda0, Lanes lambda1) {
+    const Vec3Lanes push = lambda0 * batch.tangent0 + lambda1 * tangent1;
+    const Vec3Lanes twist = lambda0 * tangent1 - lambda1 * batch.tangent0;
     a.velocity -= a.inverseMass * push;
     b.velocity += b.inverseMass * push;
     a.angularVelocity -= (a.inverseInertia * batch.leverA) * twist;
@@ -131,29 +130,22 @@ RoundBatch emptyBatch() {
         batch.bodyA[lane] = batch.bodyB[lane] = kStaticSolverBody;
     }
     const Lanes zero = splat(0);
-    batch.normal = batch.tangent0 = batch.tangent1 = Vec3Lanes{zero, zero, zero};
+    batch.normal = batch.tangent0 = Vec3Lanes{zero, zero, zero};
     batch.normalMass = batch.tangentMass = batch.friction = zero;
-    batch.inverseMassA = batch.inverseMassB = batch.inverseInertiaA = batch.inverseInertiaB = zero;
     batch.leverA = batch.leverB = batch.separationOffset = zero;
     batch.normalImpulse = batch.tangentImpulse0 = batch.tangentImpulse1 = batch.maxNormalImpulse = zero;
     return batch;
 }
 
-void setLane(RoundBatch& batch, int lane, std::uint32_t index, const SolverContact& c,
-             const std::vector<SolverBody>& bodies) {
+void setLane(RoundBatch& batch, int lane, std::uint32_t index, const SolverContact& c) {
     batch.contact[lane] = index;
     batch.bodyA[lane] = c.bodyA;
     batch.bodyB[lane] = c.bodyB;
     batch.normal.setLane(lane, c.normal);
     batch.tangent0.setLane(lane, c.tangent[0]);
-    batch.tangent1.setLane(lane, c.tangent[1]);
     batch.normalMass[lane] = c.normalMass;
     batch.tangentMass[lane] = c.tangentMass[0];
     batch.friction[lane] = c.friction;
-    batch.inverseMassA[lane] = bodies[c.bodyA].inverseMass;
-    batch.inverseMassB[lane] = bodies[c.bodyB].inverseMass;
-    batch.inverseInertiaA[lane] = bodies[c.bodyA].inverseInertia;
-    batch.inverseInertiaB[lane] = bodies[c.bodyB].inverseInertia;
     batch.leverA[lane] = c.leverA;
     batch.leverB[lane] = c.leverB;
     batch.separationOffset[lane] = c.separationOffset;
@@ -214,8 +206,7 @@ void batchRoundContacts(SolverWorkspace& workspace) {
                 workspace.roundBatches.push_back(emptyBatch());
                 workspace.roundBatches.back().wave = wave;
             }
-            setLane(workspace.roundBatches.back(), lane, workspace.waveOrder[k], workspace.contacts[workspace.waveOrder[k]],
-                    workspace.bodies);
+            setLane(workspace.roundBatches.back(), lane, workspace.waveOrder[k], workspace.contacts[workspace.waveOrder[k]]);
         }
         first = end;
     }
@@ -224,10 +215,10 @@ void batchRoundContacts(SolverWorkspace& workspace) {
 STEPWISE_LANES_COPIES
 void warmStartRoundContacts(SolverWorkspace& workspace) {
     for (RoundBatch& batch : workspace.roundBatches) {
-        BodyLanes a = gather(workspace.bodies, batch.bodyA, batch.inverseMassA, batch.inverseInertiaA);
-        BodyLanes b = gather(workspace.bodies, batch.bodyB, batch.inverseMassB, batch.inverseInertiaB);
+        BodyLanes a = gather(workspace.bodies, batch.bodyA);
+        BodyLanes b = gather(workspace.bodies, batch.bodyB);
         applyNormal(a, b, batch.normal, batch.normalImpulse);
-        applyFriction(a, b, batch, batch.tangentImpulse0, batch.tangentImpulse1);
+        applyFriction(a, b, batch, cross(batch.normal, batch.tangent0), batch.tangentImpulse0, batch.tangentImpulse1);
         scatter(workspace.bodies, batch.bodyA, a);
         scatter(workspace.bodies, batch.bodyB, b);
     }
@@ -262,8 +253,8 @@ void solveRoundContacts(SolverWorkspace& workspace, const ContactSolverSettings&
         const Lanes massScale = select(gap, one, softMassScale);
         const Lanes impulseScale = select(gap, zero, softImpulseScale);
 
-        BodyLanes a = gather(workspace.bodies, batch.bodyA, batch.inverseMassA, batch.inverseInertiaA);
-        BodyLanes b = gather(workspace.bodies, batch.bodyB, batch.inverseMassB, batch.inverseInertiaB);
+        BodyLanes a = gather(workspace.bodies, batch.bodyA);
+        BodyLanes b = gather(workspace.bodies, batch.bodyB);
         const Lanes vn = dot(b.velocity - a.velocity, n);
         const Lanes impulse = -batch.normalMass * massScale * (vn + bias) - impulseScale * batch.normalImpulse;
         Lanes applied;
@@ -284,14 +275,15 @@ void solveRoundContacts(SolverWorkspace& workspace, const ContactSolverSettings&
         const Lanes limit = batch.friction * batch.normalImpulse;
         Lanes along0;
         Lanes along1;
-        frictionVelocities(a, b, batch, along0, along1);
+        const Vec3Lanes tangent1 = cross(n, batch.tangent0);  // t₂ = n × t₁, as prepare made it (tangentBasis())
+        frictionVelocities(a, b, batch, tangent1, along0, along1);
         Lanes total0 = batch.tangentImpulse0 - batch.tangentMass * along0;
         Lanes total1 = batch.tangentImpulse1 - batch.tangentMass * along1;
         const Lanes magnitude = sqrtLanes(total0 * total0 + total1 * total1);
         const Lanes scale = select(magnitude > limit, limit / magnitude, one);
         total0 *= scale;
         total1 *= scale;
-        applyFriction(a, b, batch, total0 - batch.tangentImpulse0, total1 - batch.tangentImpulse1);
+        applyFriction(a, b, batch, tangent1, total0 - batch.tangentImpulse0, total1 - batch.tangentImpulse1);
         batch.tangentImpulse0 = total0;
         batch.tangentImpulse1 = total1;
 

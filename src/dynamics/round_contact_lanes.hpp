@@ -61,23 +61,26 @@ inline constexpr std::uint32_t kEmptyLane = 0xffffffffu;
 
 /// @brief Four round contacts of one wave, lane by lane: the SolverContact fields a pass reads.
 ///
-/// An empty lane names the static record 0 as both bodies and has zero
-/// masses, so whatever it computes changes nothing.
+/// An empty lane names the static record 0 as both bodies, whose masses are
+/// zero, so whatever it computes changes nothing.
+///
+/// Every pass reads every batch, so a batch holds only what cannot be had
+/// otherwise: the bodies' m⁻¹ and I⁻¹ come with their velocities (the same
+/// loads), and t₂ is n × t₁, formed in the pass as prepare formed it
+/// (tangentBasis(), the same bits). Leaving those seven Lanes out made a
+/// batch 576 bytes instead of 800, and the passes of the settled 64k sphere
+/// rain, which read 27 MB of batches each instead of 37, about 18 % cheaper
+/// (bench/solver_performance.md, eleventh round).
 struct RoundBatch {
     std::uint32_t contact[kLanes];  ///< Index in SolverWorkspace::contacts, or kEmptyLane.
     std::uint32_t bodyA[kLanes];    ///< A's solver-body record.
     std::uint32_t bodyB[kLanes];    ///< B's record (kStaticSolverBody for a plane).
     std::uint32_t wave = 0;         ///< The wave of its contacts: batches come in wave order.
     Vec3Lanes normal;               ///< n, from A to B.
-    Vec3Lanes tangent0;             ///< t₁; t₂ = n × t₁.
-    Vec3Lanes tangent1;             ///< t₂.
+    Vec3Lanes tangent0;             ///< t₁ (t₂ = n × t₁ is formed in the pass).
     Lanes normalMass;               ///< K⁻¹ along n, kg.
     Lanes tangentMass;              ///< K⁻¹ along either tangent (the same for a round contact), kg.
     Lanes friction;                 ///< μ.
-    Lanes inverseMassA;             ///< m_A⁻¹, 1/kg: fixed through the step, so kept here, not gathered with A's velocities.
-    Lanes inverseMassB;             ///< m_B⁻¹, 1/kg (zero: the static record).
-    Lanes inverseInertiaA;          ///< A ball's I_A⁻¹, the same about every axis, 1/(kg·m²).
-    Lanes inverseInertiaB;          ///< I_B⁻¹, 1/(kg·m²) (zero: a plane).
     Lanes leverA;                   ///< ℓ_A = r_A·n, m.
     Lanes leverB;                   ///< ℓ_B = r_B·n, m.
     Lanes separationOffset;         ///< C_offset, m.
