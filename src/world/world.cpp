@@ -214,6 +214,29 @@ void World::step() {
     if (observer_) observer_->afterStep(*this);
 }
 
+/// Runs @p move over the runs of dynamic bodies that @p picks, each run at most
+/// kIntegrateBlock long (with every body picked: the objects in blocks), and
+/// probes each run for non-finite numbers straight after, while it is still
+/// in cache; true when all were finite.
+template <class Picks, class Move>
+bool World::inProbedObjectRuns(Picks&& picks, Move&& move) {
+    const std::span<DynamicObject> all(dynamics_);
+    Real probe = 0;
+    for (std::size_t first = 0; first < all.size();) {
+        if (!picks(first)) {
+            ++first;
+            continue;
+        }
+        std::size_t end = first + 1;
+        while (end < all.size() && end - first < kIntegrateBlock && picks(end)) ++end;
+        const std::span<DynamicObject> run = all.subspan(first, end - first);
+        move(run);
+        for (const DynamicObject& body : run) probe += finiteProbe(body, kPose | kMotion);
+        first = end;
+    }
+    return probe == Real(0);
+}
+
 /// Advances the dynamic bodies by h with the scene's integrator.
 ///
 /// The Euler integrators move each body by itself, so they run over blocks of
@@ -231,23 +254,19 @@ void World::integrate(Real h, const AccelerationFunction& forces) {
         integrateVerlet(dynamics_, h, forces);
         return;
     }
-    const std::span<DynamicObject> all(dynamics_);
-    Real probe = 0;
-    for (std::size_t first = 0; first < all.size(); first += kIntegrateBlock) {
-        const std::span<DynamicObject> block = all.subspan(first, std::min(kIntegrateBlock, all.size() - first));
+    const auto everyBody = [](std::size_t) { return true; };
+    integratedFinite_ = inProbedObjectRuns(everyBody, [&](std::span<DynamicObject> block) {
         if (settings_.integrator == IntegratorKind::ExplicitEuler) {
             integrateExplicitEuler(block, h);
         } else {
             integrateSymplecticEuler(block, h);
         }
-        for (const DynamicObject& body : block) probe += finiteProbe(body, kPose | kMotion);
-    }
-    integratedFinite_ = probe == Real(0);
+    });
 }
 
 /// Runs @p pass over the solver's records in blocks of kIntegrateBlock, probing
 /// each block's @p parts for non-finite numbers straight after, while it is
-/// still in cache (as integrate() does over the objects); true when all were finite.
+/// still in cache (as inProbedObjectRuns() does over the objects); true when all were finite.
 template <class RecordPass>
 bool World::inProbedRecordBlocks(unsigned parts, RecordPass&& pass) {
     const std::size_t count = solverWorkspace_.bodies.size();
@@ -260,26 +279,13 @@ bool World::inProbedRecordBlocks(unsigned parts, RecordPass&& pass) {
     return probe == Real(0);
 }
 
-/// Symplectic Euler for h over the bodies without a solver record, in blocks
-/// probed as they go (integrate() above): on the packed substeps the balls
-/// with a record are kicked on their records instead (substepOnRecords()).
+/// Symplectic Euler for h over the bodies without a solver record, in runs
+/// probed as they go: on the packed substeps the balls with a record are
+/// kicked on their records instead (substepOnRecords()).
 void World::integrateBodiesWithoutRecord(Real h) {
     const std::vector<std::uint32_t>& recordOf = solverWorkspace_.bodyRecord;
-    const std::span<DynamicObject> all(dynamics_);
-    Real probe = 0;
-    for (std::size_t first = 0; first < all.size();) {
-        if (recordOf[first] != kStaticSolverBody) {
-            ++first;
-            continue;
-        }
-        std::size_t end = first + 1;  // a run of bodies without a record, at most a block long
-        while (end < all.size() && end - first < kIntegrateBlock && recordOf[end] == kStaticSolverBody) ++end;
-        const std::span<DynamicObject> block = all.subspan(first, end - first);
-        integrateSymplecticEuler(block, h);
-        for (const DynamicObject& body : block) probe += finiteProbe(body, kPose | kMotion);
-        first = end;
-    }
-    integratedFinite_ = probe == Real(0);
+    integratedFinite_ = inProbedObjectRuns([&](std::size_t i) { return recordOf[i] == kStaticSolverBody; },
+                                           [&](std::span<DynamicObject> run) { integrateSymplecticEuler(run, h); });
 }
 
 /// `Solver=Impulse`, the foundation's step: move, then find and repair the

@@ -122,6 +122,8 @@ private:
     void solveJointsBetweenContactPasses(const JointSolverSettings& jointSettings, bool useBias);
     void integrate(Real h, const AccelerationFunction& forces);
     void integrateBodiesWithoutRecord(Real h);
+    template <class Picks, class Move>
+    bool inProbedObjectRuns(Picks&& picks, Move&& move);
     template <class RecordPass>
     bool inProbedRecordBlocks(unsigned parts, RecordPass&& pass);
     BodySet bodies();
