@@ -82,6 +82,24 @@ std::vector<std::string> names(const std::string& text) {
     return words;
 }
 
+/// An option's handler that reads a whole number (count()) into @p target; false when it is not one.
+std::function<bool(const std::string&)> wholeNumberInto(int& target) {
+    return [&target](const std::string& v) {
+        const auto n = count(v);
+        if (n) target = static_cast<int>(*n);
+        return n.has_value();
+    };
+}
+
+/// An option's handler that reads comma-separated whole numbers (counts()) into @p target.
+std::function<bool(const std::string&)> wholeNumbersInto(std::vector<std::size_t>& target) {
+    return [&target](const std::string& v) {
+        const auto n = counts(v);
+        if (n) target = *n;
+        return n.has_value();
+    };
+}
+
 /// Walks @p args: flags call their handler; options take the next argument and
 /// their handler returns false when it is not valid.
 int parse(const std::vector<std::string>& args, const std::map<std::string, std::function<void()>>& flags,
@@ -104,26 +122,12 @@ int parse(const std::vector<std::string>& args, const std::map<std::string, std:
 
 int scalingCommand(const std::vector<std::string>& args) {
     ScalingOptions o;
-    const auto steps = [](int& target) {
-        return [&target](const std::string& v) {
-            const auto n = count(v);
-            if (n) target = static_cast<int>(*n);
-            return n.has_value();
-        };
-    };
-    const auto list = [](std::vector<std::size_t>& target) {
-        return [&target](const std::string& v) {
-            const auto n = counts(v);
-            if (n) target = *n;
-            return n.has_value();
-        };
-    };
     const int status = parse(args, {{"--quick", [&] { o.quick = true; }}},
-                             {{"--sizes", list(o.rainSizes)},
-                              {"--pile-sizes", list(o.pileSizes)},
-                              {"--steps", steps(o.rainSteps)},
-                              {"--large-steps", steps(o.largeRainSteps)},
-                              {"--pile-steps", steps(o.pileSteps)},
+                             {{"--sizes", wholeNumbersInto(o.rainSizes)},
+                              {"--pile-sizes", wholeNumbersInto(o.pileSizes)},
+                              {"--steps", wholeNumberInto(o.rainSteps)},
+                              {"--large-steps", wholeNumberInto(o.largeRainSteps)},
+                              {"--pile-steps", wholeNumberInto(o.pileSteps)},
                               {"--seed", [&](const std::string& v) { o.seed = std::strtoull(v.c_str(), nullptr, 10); return true; }},
                               {"--scenes", [&](const std::string& v) { o.scenes = names(v); return true; }},
                               {"--markdown", [&](const std::string& v) { o.markdownPath = v; return true; }}});
@@ -132,21 +136,10 @@ int scalingCommand(const std::vector<std::string>& args) {
 
 int stageCostsCommand(const std::vector<std::string>& args) {
     StageCostOptions o;
-    const auto whole = [](int& target) {
-        return [&target](const std::string& v) {
-            const auto n = count(v);
-            if (n) target = static_cast<int>(*n);
-            return n.has_value();
-        };
-    };
     const int status = parse(args, {{"--quick", [&] { o.quick = true; }}},
-                             {{"--sizes", [&](const std::string& v) {
-                                   const auto n = counts(v);
-                                   if (n) o.sizes = *n;
-                                   return n.has_value();
-                               }},
-                              {"--settle", whole(o.settleSteps)},
-                              {"--rounds", whole(o.rounds)},
+                             {{"--sizes", wholeNumbersInto(o.sizes)},
+                              {"--settle", wholeNumberInto(o.settleSteps)},
+                              {"--rounds", wholeNumberInto(o.rounds)},
                               {"--seed", [&](const std::string& v) { o.seed = std::strtoull(v.c_str(), nullptr, 10); return true; }},
                               {"--markdown", [&](const std::string& v) { o.markdownPath = v; return true; }}});
     return status ? status : runStageCosts(o);
@@ -157,17 +150,9 @@ int bulletCommand([[maybe_unused]] const std::vector<std::string>& args) {
     SideBySideOptions o;
     o.configDir = STEPWISE_CONFIG_DIR;
     const int status = parse(args, {{"--quick", [&] { o.quick = true; }}},
-                             {{"--sizes", [&](const std::string& v) {
-                                   const auto n = counts(v);
-                                   if (n) o.rainSizes = *n;
-                                   return n.has_value();
-                               }},
+                             {{"--sizes", wholeNumbersInto(o.rainSizes)},
                               {"--config", [&](const std::string& v) { o.configDir = v; return true; }},
-                              {"--steps", [&](const std::string& v) {
-                                   const auto n = count(v);
-                                   if (n) o.rainSteps = static_cast<int>(*n);
-                                   return n.has_value();
-                               }},
+                              {"--steps", wholeNumberInto(o.rainSteps)},
                               {"--scenarios", [&](const std::string& v) { o.scenarios = names(v); return true; }},
                               {"--markdown", [&](const std::string& v) { o.markdownPath = v; return true; }},
                               {"--sweep-csv", [&](const std::string& v) { o.sweepCsvPath = v; return true; }}});
