@@ -40,7 +40,9 @@ double stageCost(const Run& run, std::size_t stage) {
     return kNanosecondsPerSecond * seconds / (double(run.bodies) * run.steps);
 }
 
-void printTable(std::FILE* out, std::vector<Run>& runs, bool markdown) {
+/// The table: a row per stage that ran, then the stages' sum, the whole step's CPU time and the
+/// contacts per body; a column per size, then the largest size's figure over the smallest's.
+void printTable(std::FILE* out, const std::vector<Run>& runs, bool markdown) {
     const Run& first = runs.front();
     const Run& last = runs.back();
     if (markdown) {
