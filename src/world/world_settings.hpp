@@ -2,7 +2,10 @@
 /// @brief The simulation parameters a scene's `World` record sets.
 #pragma once
 
+#include <numbers>
+
 #include "core/types.hpp"
+#include "dynamics/softness.hpp"
 
 namespace stepwise {
 
@@ -127,7 +130,7 @@ inline Real integrationStep(const WorldSettings& settings) {
 /// @brief The contact frequency the sequential-impulse solver really uses, Hz:
 /// ContactHertz, capped at a quarter of the substep rate substeps/h.
 inline Real contactHertzInUse(const WorldSettings& settings) {
-    const Real cap = Real(0.25) * Real(settings.substeps) / settings.timeStep;
+    const Real cap = kMaxHertzPerSubstepRate * Real(settings.substeps) / settings.timeStep;
     return settings.contactHertz < cap ? settings.contactHertz : cap;
 }
 
@@ -135,7 +138,7 @@ inline Real contactHertzInUse(const WorldSettings& settings) {
 /// with the soft contacts of @p settings, m: g/ω² with ω = 2π·contactHertzInUse()
 /// (a soft contact is a spring of that frequency; 4 µm at 240 Hz).
 inline Real restingSag(const WorldSettings& settings) {
-    const Real omega = Real(2) * Real(3.14159265358979323846) * contactHertzInUse(settings);
+    const Real omega = Real(2) * std::numbers::pi_v<Real> * contactHertzInUse(settings);
     return glm::length(settings.gravity) / (omega * omega);
 }
 
