@@ -71,10 +71,10 @@ void driftByVelocityChange(SolverWorkspace& workspace, Real h, IntegratorKind in
             Vec3 move = h * change;
             if (lag != Real(0)) move += lag * h * h * body.acceleration;  // explicit Euler, Verlet: an older velocity
             body.position += move;
-            if (turn != Vec3(0) && turnsWithNewVelocity(workspace, i, integrator)) {
-                body.orientation = rotateByAngularVelocity(workspace.poses[index].orientation, body.angularVelocity, h);
-            } else if (turn != Vec3(0)) {
-                body.orientation = turnBySmallAngle(body.orientation, turn, h);
+            if (turn != Vec3(0)) {
+                body.orientation = turnsWithNewVelocity(workspace, i, integrator)
+                                       ? rotateByAngularVelocity(workspace.poses[index].orientation, body.angularVelocity, h)
+                                       : turnBySmallAngle(body.orientation, turn, h);
             }
         }
         // The relax passes measure separations here; no other body's pose is read by a constraint.
