@@ -198,8 +198,8 @@ TEST_CASE("Rotation turns about world X, then world Y, then world Z", "[config]"
     // (0, 1, 0): X by 90 gives (0, 0, 1); Z by 90 leaves it. The order of the fields does not matter.
     requireNear(rotate(scene.dynamics.at(2).orientation, {0, 1, 0}), {0, 0, 1});
     // And the quaternion is the documented product q = qz · qy · qx.
-    const Quat qx = glm::angleAxis(glm::radians(90.0), Vec3(1, 0, 0));
-    const Quat qy = glm::angleAxis(glm::radians(90.0), Vec3(0, 1, 0));
+    const Quat qx = glm::angleAxis(glm::radians(Real(90)), Vec3(1, 0, 0));
+    const Quat qy = glm::angleAxis(glm::radians(Real(90)), Vec3(0, 1, 0));
     const Quat expected = qy * qx;
     const Quat actual = scene.dynamics.at(0).orientation;
     CHECK(std::abs(glm::dot(actual, expected)) == Approx(1));

@@ -232,11 +232,11 @@ TEST_CASE("EnergyChange under explicit Euler grows as g h t / (2 y0) in free fal
     const Single one = runSingle(scene + "Expect, Object=ball, Time=1, EnergyChange=" + std::to_string(expected) +
                                  ", Tolerance=1e-6\n");
     CHECK(one.result.passed);
-    CHECK_THAT(one.result.value, WithinRel(expected, 1e-9));
+    CHECK_THAT(one.result.value, WithinRel(double(expected), 1e-9));
     // The whole scene's energy, checked through the run: the worst step is the last.
     const Single all = runSingle(scene + "Expect, Until=1, EnergyChange=0, Tolerance=0.005\n");
     CHECK_FALSE(all.result.passed);
-    CHECK_THAT(all.result.value, WithinRel(expected, 1e-9));
+    CHECK_THAT(all.result.value, WithinRel(double(expected), 1e-9));
     CHECK_THAT(all.result.time, WithinAbs(1, kRoundOff));
 }
 

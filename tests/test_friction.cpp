@@ -44,7 +44,7 @@ TEST_CASE("A solid sphere rolls down a 30 degree incline at 5/7 g sin(theta)", "
         const Real expected = Real(5) / 7 * kStandardGravity * std::sin(theta * kPi / 180);
         const DynamicObject& ball = world.dynamics()[0];
         INFO("h = " << h);
-        CHECK_THAT(glm::dot(ball.velocity, downSlope(theta)) / world.time(), WithinRel(expected, 0.01));
+        CHECK_THAT(glm::dot(ball.velocity, downSlope(theta)) / world.time(), WithinRel(double(expected), 0.01));
         // And it rolls: the contact point is at rest, v = ω × R.
         const Vec3 contactVelocity = ball.velocity + glm::cross(ball.angularVelocity, -R * scene.planes[0].normal);
         CHECK(glm::length(contactVelocity) < 0.01 * glm::length(ball.velocity));
@@ -90,7 +90,7 @@ TEST_CASE("A hollow sphere rolls slower: 3/5 g sin(theta)", "[friction]") {
     World world(scene);
     while (world.time() < 2 - 1e-9) world.step();
     const Real expected = Real(3) / 5 * kStandardGravity * std::sin(theta * kPi / 180);
-    CHECK_THAT(glm::dot(world.dynamics()[0].velocity, downSlope(theta)) / world.time(), WithinRel(expected, 0.01));
+    CHECK_THAT(glm::dot(world.dynamics()[0].velocity, downSlope(theta)) / world.time(), WithinRel(double(expected), 0.01));
 }
 
 TEST_CASE("A sphere too slippery to roll slides at g(sin(theta) - mu cos(theta)) while spinning up", "[friction]") {
@@ -104,7 +104,7 @@ TEST_CASE("A sphere too slippery to roll slides at g(sin(theta) - mu cos(theta))
     while (world.time() < 1 - 1e-9) world.step();
     const Real t = theta * kPi / 180;
     const Real expected = kStandardGravity * (std::sin(t) - mu * std::cos(t));
-    CHECK_THAT(glm::dot(world.dynamics()[0].velocity, downSlope(theta)) / world.time(), WithinRel(expected, 0.01));
+    CHECK_THAT(glm::dot(world.dynamics()[0].velocity, downSlope(theta)) / world.time(), WithinRel(double(expected), 0.01));
 }
 
 TEST_CASE("A sliding, non-spinning sphere ends rolling at 5/7 of its speed", "[friction]") {
@@ -123,8 +123,8 @@ TEST_CASE("A sliding, non-spinning sphere ends rolling at 5/7 of its speed", "[f
         while (world.time() < 6) world.step();
         const DynamicObject& ball = world.dynamics()[0];
         INFO("mu = " << mu);
-        CHECK_THAT(ball.velocity.x, WithinRel(Real(5) / 7 * v0, 1e-6));
-        CHECK_THAT(ball.angularVelocity.z * 0.5, WithinRel(-ball.velocity.x, 1e-6));  // rolling: v = −ω_z·R
+        CHECK_THAT(ball.velocity.x, WithinRel(double(Real(5) / 7 * v0), 1e-6));
+        CHECK_THAT(ball.angularVelocity.z * 0.5, WithinRel(double(-ball.velocity.x), 1e-6));  // rolling: v = −ω_z·R
     }
 }
 
@@ -162,7 +162,7 @@ TEST_CASE("A box slides down a 30 degree incline at g(sin(theta) - mu cos(theta)
     const Real t = theta * kPi / 180;
     const Real expected = kStandardGravity * (std::sin(t) - mu * std::cos(t));
     const DynamicObject& box = world.dynamics()[0];
-    CHECK_THAT(glm::dot(box.velocity, downSlope(theta)) / world.time(), WithinRel(expected, 0.01));
+    CHECK_THAT(glm::dot(box.velocity, downSlope(theta)) / world.time(), WithinRel(double(expected), 0.01));
     CHECK(tiltDegrees(box, start) < 0.5);  // it slides flat: no tumbling
 }
 
@@ -257,7 +257,7 @@ TEST_CASE("A ball dropped with spin-free sideways speed ends rolling at 5/7 of i
             while (world.time() < 3) world.step();
             INFO(toString(solver) << ", h = " << h);
             const Real sag = solver == SolverKind::Impulse ? Real(0) : restingSag(scene.settings);
-            CHECK_THAT(world.dynamics()[0].velocity.x, WithinRel(Real(5) / 7 * 2, 1e-6));
+            CHECK_THAT(world.dynamics()[0].velocity.x, WithinRel(double(Real(5) / 7 * 2), 1e-6));
             CHECK_THAT(world.dynamics()[0].position.y, WithinAbs(0.1 - sag, 1e-9 + 0.1 * sag));  // on the floor, not above it
         }
     }

@@ -106,7 +106,7 @@ TEST_CASE("A platform pulled from under a ball leaves it rolling at 2/7 of the p
     World world(scene);
     while (world.time() < 2) world.step();
     const DynamicObject& ball = world.dynamics()[0];
-    CHECK_THAT(ball.velocity.x, Catch::Matchers::WithinRel(2 * u / 7, 1e-6));
+    CHECK_THAT(ball.velocity.x, Catch::Matchers::WithinRel(double(2 * u / 7), 1e-6));
     // Rolling without slipping on the platform: v + ω × r at the contact equals u.
     const Vec3 contactVelocity = ball.velocity + glm::cross(ball.angularVelocity, Vec3(0, -0.5, 0));
     CHECK_THAT(contactVelocity.x, WithinAbs(u, 1e-6 * u));

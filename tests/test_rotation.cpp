@@ -202,7 +202,7 @@ TEST_CASE("The reference flip times agree with the exact elliptic-function solut
     const std::vector<Real> reference = referenceFlipTimes(kFlipDuration);
     REQUIRE(exact.size() == 3);  // 3.012 s, 9.036 s, 15.060 s
     REQUIRE(reference.size() == exact.size());
-    for (std::size_t i = 0; i < exact.size(); ++i) CHECK_THAT(reference[i], WithinRel(exact[i], 1e-6));
+    for (std::size_t i = 0; i < exact.size(); ++i) CHECK_THAT(reference[i], WithinRel(double(exact[i]), 1e-6));
 }
 
 TEST_CASE("A box spun about its intermediate axis flips periodically (Dzhanibekov)", "[rotation]") {
@@ -216,13 +216,13 @@ TEST_CASE("A box spun about its intermediate axis flips periodically (Dzhanibeko
         // Equal intervals within 5 %: by symmetry every flip takes the same time.
         const Real interval = run.flips[1] - run.flips[0];
         for (std::size_t i = 2; i < run.flips.size(); ++i) {
-            CHECK_THAT(run.flips[i] - run.flips[i - 1], WithinRel(interval, 0.05));
+            CHECK_THAT(run.flips[i] - run.flips[i - 1], WithinRel(double(interval), 0.05));
         }
         // The splitting's phase error is O(h²): (h·ω)² ≈ (5/60)² ≈ 0.7 % per unit
         // of phase at most, so 2 % on every flip time is a safe bound (measured: 0.02 %).
         for (std::size_t i = 0; i < run.flips.size(); ++i) {
             INFO("flip " << i);
-            CHECK_THAT(run.flips[i], WithinRel(reference[i], 0.02));
+            CHECK_THAT(run.flips[i], WithinRel(double(reference[i]), 0.02));
         }
         // L is never changed without torque, so |L| is exact up to round-off
         // of ω's recomputation; 1e-6 is the brief's bound, met with room.
@@ -465,7 +465,7 @@ TEST_CASE("The lesson 4 scene flips the box on time through World::step", "[rota
         worstEnergyError = std::max(worstEnergyError, std::abs(energyOf(world).rotational - e0.rotational) / e0.rotational);
     }
     REQUIRE(flips.size() == reference.size());
-    for (std::size_t i = 0; i < flips.size(); ++i) CHECK_THAT(flips[i], WithinRel(reference[i], 0.02));
+    for (std::size_t i = 0; i < flips.size(); ++i) CHECK_THAT(flips[i], WithinRel(double(reference[i]), 0.02));
     CHECK(worstMomentumError <= 1e-6);
     CHECK(worstEnergyError <= 0.01);
 }
