@@ -11,6 +11,8 @@
 ///   lagging, leading or exact exactly as the projectile's position does.
 /// - The measurements (rotational energy, angular momentum about the origin)
 ///   and the lesson scene run through World.
+/// - The turn of the packed substeps, four balls at a time (rotation_lanes.hpp):
+///   the scalar turn's bits, or the lane handed back to it. Tags [rotation][lanes].
 ///
 /// Every integrator is driven as a stage: the test supplies the force model
 /// (an AccelerationFunction that writes acceleration and torque) and calls
@@ -19,15 +21,23 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
+#include <random>
 #include <vector>
 
 #include "config/scene_loader.hpp"
 #include "dynamics/inertia.hpp"
 #include "integrators/integrators.hpp"
+#include "integrators/rotation_lanes.hpp"
 #include "test_support.hpp"
 #include "world/measurements.hpp"
 #include "world/world.hpp"
+
+// The lanes test passes Lanes by value to always-inlined functions (see core/lanes.hpp).
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wpsabi"
+#endif
 
 using namespace stepwise;
 using Catch::Matchers::WithinAbs;
@@ -506,6 +516,100 @@ TEST_CASE("rotateByAngularVelocity returns a unit quaternion from one far off un
     CHECK(std::abs(glm::length(got) - 1) < 4 * std::numeric_limits<Real>::epsilon());
     const Quat exact = glm::angleAxis(Real(3) / Real(60), Vec3(0, 1, 0)) * glm::normalize(stretched);
     for (int k = 0; k < 4; ++k) CHECK(std::abs(got[k] - exact[k]) < 8 * std::numeric_limits<Real>::epsilon());
+}
+
+TEST_CASE("The turn in lanes is rotateByAngularVelocity, to the bit, or hands the lane back", "[rotation][lanes]") {
+    // The packed substeps turn four balls at once (rotation_lanes.hpp). Each lane must be
+    // the scalar turn's bits, or say that it needs the scalar turn: a half-angle past the
+    // series (φ > 0.1), a start too far from unit length for the Newton step, a NaN.
+    // Groups of four mixing the cases, so a lane's case cannot leak into its neighbours.
+    const Real h = Real(1) / Real(960);
+    const Real nan = std::numeric_limits<Real>::quiet_NaN();
+    const Quat unit = glm::normalize(Quat(0.8, -0.3, 0.4, 0.33));
+    const Quat nearlyUnit = Real(1 + 1e-9) * unit;  // rounding's drift: the Newton step's
+    const Quat stretched = Real(1.5) * unit;        // the full normalisation's
+    const Vec3 axis = glm::normalize(Vec3(1, -2, 0.5));
+    struct Case {
+        Quat start;
+        Vec3 omega;
+        bool lanesCover;  // the lanes give the answer themselves
+    };
+    const std::vector<Case> cases = {
+        {unit, Vec3(0), true},                                    // no turn: q itself
+        {unit, Vec3(1e-14, 0, 0), true},                          // negligible: q itself
+        {unit, (2 * Real(1e-6) / h) * axis, true},                // series
+        {nearlyUnit, (2 * Real(0.05) / h) * axis, true},          // series, Newton step
+        {unit, (2 * Real(0.0999) / h) * axis, true},              // just inside the series
+        {unit, (2 * Real(0.1001) / h) * axis, false},             // just past it: sin and cos
+        {stretched, Vec3(0, 3, 0), false},                        // far from unit length
+        {unit, Vec3(nan, 0, 0), false},                           // not finite
+        {unit, Vec3(0.3, -40, 7), true},                          // a rolling ball's
+        {Quat(1, 0, 0, 0), Vec3(-2, 0.5, 150), true},             // fast (φ = 0.078), still in the series
+        {unit, (2 * Real(1.2) / h) * axis, false},                // far past the series
+        {nearlyUnit, Vec3(0), true},                              // no turn, off unit: q itself
+    };
+    int covered = 0;
+    for (std::size_t first = 0; first + kLanes <= cases.size(); ++first) {  // every window of four
+        QuatLanes q;
+        Vec3Lanes omega;
+        for (int lane = 0; lane < kLanes; ++lane) {
+            const Case& c = cases[first + static_cast<std::size_t>(lane)];
+            q.w[lane] = c.start.w;
+            q.x[lane] = c.start.x;
+            q.y[lane] = c.start.y;
+            q.z[lane] = c.start.z;
+            omega.setLane(lane, c.omega);
+        }
+        const TurnLanes turned = rotateByAngularVelocity(q, omega, h);
+        for (int lane = 0; lane < kLanes; ++lane) {
+            const Case& c = cases[first + static_cast<std::size_t>(lane)];
+            INFO("case " << first + static_cast<std::size_t>(lane) << ", lane " << lane);
+            REQUIRE((turned.needsScalar[lane] == 0) == c.lanesCover);
+            if (!c.lanesCover) continue;
+            ++covered;
+            const Quat expected = rotateByAngularVelocity(c.start, c.omega, h);
+            const Real got[4] = {turned.orientation.w[lane], turned.orientation.x[lane], turned.orientation.y[lane],
+                                 turned.orientation.z[lane]};
+            const Real want[4] = {expected.w, expected.x, expected.y, expected.z};
+            for (int k = 0; k < 4; ++k) CHECK(std::memcmp(&got[k], &want[k], sizeof(Real)) == 0);
+        }
+    }
+    CHECK(covered > 0);
+
+    // And many ordinary turns: random unit starts, half-angles up to 0.12 (some past the series).
+    std::mt19937 random(11);
+    std::uniform_real_distribution<double> component(-1, 1);
+    int mismatches = 0, handedBack = 0;
+    for (int group = 0; group < 500; ++group) {
+        QuatLanes q;
+        Vec3Lanes omega;
+        Quat starts[kLanes];
+        Vec3 omegas[kLanes];
+        for (int lane = 0; lane < kLanes; ++lane) {
+            starts[lane] = glm::normalize(Quat(component(random), component(random), component(random), component(random)));
+            omegas[lane] = Vec3(component(random), component(random), component(random)) * Real(130);  // |ω|·h/2 ≤ 0.12
+            q.w[lane] = starts[lane].w;
+            q.x[lane] = starts[lane].x;
+            q.y[lane] = starts[lane].y;
+            q.z[lane] = starts[lane].z;
+            omega.setLane(lane, omegas[lane]);
+        }
+        const TurnLanes turned = rotateByAngularVelocity(q, omega, h);
+        for (int lane = 0; lane < kLanes; ++lane) {
+            if (turned.needsScalar[lane]) {
+                ++handedBack;
+                continue;
+            }
+            const Quat expected = rotateByAngularVelocity(starts[lane], omegas[lane], h);
+            const Real got[4] = {turned.orientation.w[lane], turned.orientation.x[lane], turned.orientation.y[lane],
+                                 turned.orientation.z[lane]};
+            const Real want[4] = {expected.w, expected.x, expected.y, expected.z};
+            mismatches += std::memcmp(got, want, sizeof got) != 0 ? 1 : 0;
+        }
+    }
+    CHECK(mismatches == 0);
+    CHECK(handedBack > 0);          // some were past the series,
+    CHECK(handedBack < 500 * kLanes / 10);  // and most were not
 }
 
 TEST_CASE("World inertia of an isotropic body is I*E in every orientation, as the rotated tensor", "[rotation][inertia]") {

@@ -32,27 +32,6 @@ struct BodyLanes {
     Lanes inverseInertia;
 };
 
-STEPWISE_LANES_INLINE Lanes load(const Real* from) {
-    Lanes lanes;
-    std::memcpy(&lanes, from, sizeof lanes);
-    return lanes;
-}
-
-STEPWISE_LANES_INLINE void store(Real* to, const Lanes& lanes) { std::memcpy(to, &lanes, sizeof lanes); }
-
-/// Rows r₀…r₃ of a 4×4 matrix in, its columns out (in place): lane i of
-/// column j is element j of row i. Its own inverse.
-STEPWISE_LANES_INLINE void transpose(Lanes& r0, Lanes& r1, Lanes& r2, Lanes& r3) {
-    const Lanes t0 = shuffleLanes<0, 4, 2, 6>(r0, r1);  // [r0₀ r1₀ r0₂ r1₂]
-    const Lanes t1 = shuffleLanes<1, 5, 3, 7>(r0, r1);  // [r0₁ r1₁ r0₃ r1₃]
-    const Lanes t2 = shuffleLanes<0, 4, 2, 6>(r2, r3);
-    const Lanes t3 = shuffleLanes<1, 5, 3, 7>(r2, r3);
-    r0 = shuffleLanes<0, 1, 4, 5>(t0, t2);  // [r0₀ r1₀ r2₀ r3₀]
-    r1 = shuffleLanes<0, 1, 4, 5>(t1, t3);
-    r2 = shuffleLanes<2, 3, 6, 7>(t0, t2);
-    r3 = shuffleLanes<2, 3, 6, 7>(t1, t3);
-}
-
 STEPWISE_LANES_INLINE const Real* realsOf(const SolverBody& body) { return &body.velocity.x; }
 STEPWISE_LANES_INLINE Real* realsOf(SolverBody& body) { return &body.velocity.x; }
 

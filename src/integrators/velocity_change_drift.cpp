@@ -26,7 +26,8 @@
 /// the rotational twin of x_n + h_s·v_{n+1}: no splitting error at all, and
 /// on the packed substeps (World::substepOnRecords()) one turn a substep
 /// instead of two (the 1k sphere rain −7 %, bench/solver_performance.md,
-/// tenth round). A box's free rotation depends on how its axes lie
+/// tenth round); there the turn is also done four balls at a time, in SIMD
+/// lanes (rotation_lanes.hpp, the same bits: −3 %, twelfth round). A box's free rotation depends on how its axes lie
 /// (rotateTorqueFree()), so it keeps the correction above.
 ///
 /// For symplectic Euler the result is exactly x_n + h_s·v_{n+1}, the
@@ -44,8 +45,16 @@
 /// A body the constraints did not touch (Δv = 0, Δω = 0) keeps its
 /// integrator's free flight exactly. Check: a resting ball (v_n = 0) ends
 /// where it started with every integrator, because Δv = −h_s·a.
+#include <cstddef>
+
 #include "dynamics/contact_solver.hpp"
 #include "integrators/integrators.hpp"
+#include "integrators/rotation_lanes.hpp"
+
+// This file's lane helpers pass Lanes by value too, always inlined (see core/lanes.hpp).
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wpsabi"
+#endif
 
 namespace stepwise {
 
@@ -83,22 +92,112 @@ void driftByVelocityChange(SolverWorkspace& workspace, Real h, IntegratorKind in
     }
 }
 
-void driftRecordsByVelocityChange(SolverWorkspace& workspace, std::size_t first, std::size_t end, Real h) {
+namespace {
+
+/// Record @p i's drift on the packed substeps, one ball (driftFourRecords() does four at once).
+void driftOneRecord(SolverWorkspace& workspace, std::size_t i, Real h) {
     // Symplectic Euler moved with the new velocity (s = 1): no (1 − s)·h²·a term, as above.
-    for (std::size_t i = first; i < end; ++i) {
-        const SolverBody& record = workspace.bodies[i];
-        const BodyVelocity& kicked = workspace.substepStart[i];  // as the kick left them
-        Vec3& centre = workspace.centres[i].position;
-        Quat& orientation = workspace.orientations[i];
-        // Free flight, as integrateSymplecticEuler() moves an object (x + h·v), then what the constraints changed
-        Vec3 position = centre + h * kicked.velocity;
-        const Vec3 change = record.velocity - kicked.velocity;
-        const Vec3 turn = record.angularVelocity - kicked.angularVelocity;
-        if (change != Vec3(0) || turn != Vec3(0)) position += h * change;
-        // One exact turn from the substep's start, by the new ω, or by free flight's if the constraints left it
-        orientation = rotateByAngularVelocity(orientation, turn != Vec3(0) ? record.angularVelocity : kicked.angularVelocity, h);
-        centre = position;  // where the relax passes measure the separations
+    const SolverBody& record = workspace.bodies[i];
+    const BodyVelocity& kicked = workspace.substepStart[i];  // as the kick left them
+    Vec3& centre = workspace.centres[i].position;
+    Quat& orientation = workspace.orientations[i];
+    // Free flight, as integrateSymplecticEuler() moves an object (x + h·v), then what the constraints changed
+    Vec3 position = centre + h * kicked.velocity;
+    const Vec3 change = record.velocity - kicked.velocity;
+    const Vec3 turn = record.angularVelocity - kicked.angularVelocity;
+    if (change != Vec3(0) || turn != Vec3(0)) position += h * change;
+    // One exact turn from the substep's start, by the new ω, or by free flight's if the constraints left it
+    orientation = rotateByAngularVelocity(orientation, turn != Vec3(0) ? record.angularVelocity : kicked.angularVelocity, h);
+    centre = position;  // where the relax passes measure the separations
+}
+
+/// A Vec3Lanes lane by lane: all bits set where any component differs from zero (a NaN does).
+STEPWISE_LANES_INLINE auto nonZero(const Vec3Lanes& v) {
+    const Lanes zero = splat(0);
+    return (v.x != zero) | (v.y != zero) | (v.z != zero);
+}
+
+// The loads below read records as rows of four Reals and transpose them (core/lanes.hpp).
+static_assert(sizeof(SolverBody) == 2 * sizeof(Lanes), "a record is [v_x v_y v_z ω_x][ω_y ω_z m⁻¹ I⁻¹]");
+static_assert(sizeof(BodyVelocity) == 6 * sizeof(Real), "a substep start is [v_x v_y v_z ω_x ω_y ω_z]");
+static_assert(sizeof(SolverCentre) == sizeof(Lanes), "a centre is [x y z, a Real never read]");
+static_assert(sizeof(Quat) == sizeof(Lanes) && offsetof(Quat, x) == 0 && offsetof(Quat, w) == 3 * sizeof(Real),
+              "a quaternion is stored [x y z w] (glm's default)");
+
+/// driftOneRecord() on records @p first … @p first + 3, in lanes: the same lines, the same bits
+/// (the turn is rotation_lanes.hpp's; a lane it does not cover takes the scalar turn).
+STEPWISE_LANES_INLINE void driftFourRecords(SolverWorkspace& workspace, std::size_t first, Real h) {
+    Lanes record[2][kLanes];   // [v_x v_y v_z ω_x], [ω_y ω_z m⁻¹ I⁻¹]
+    Lanes kicked[2][kLanes];   // [v_x v_y v_z ω_x], [v_z ω_x ω_y ω_z]
+    Lanes centreRows[kLanes];  // [x y z pad]
+    Lanes turnRows[kLanes];    // [x y z w]
+    for (int lane = 0; lane < kLanes; ++lane) {
+        const std::size_t i = first + static_cast<std::size_t>(lane);
+        record[0][lane] = load(&workspace.bodies[i].velocity.x);
+        record[1][lane] = load(&workspace.bodies[i].velocity.x + kLanes);
+        kicked[0][lane] = load(&workspace.substepStart[i].velocity.x);
+        kicked[1][lane] = load(&workspace.substepStart[i].velocity.x + 2);
+        centreRows[lane] = load(&workspace.centres[i].position.x);
+        turnRows[lane] = load(&workspace.orientations[i].x);
     }
+    for (auto* rows : {record[0], record[1], kicked[0], kicked[1], centreRows, turnRows}) {
+        transpose(rows[0], rows[1], rows[2], rows[3]);
+    }
+    const Vec3Lanes velocity{record[0][0], record[0][1], record[0][2]};
+    const Vec3Lanes spin{record[0][3], record[1][0], record[1][1]};
+    const Vec3Lanes kickedVelocity{kicked[0][0], kicked[0][1], kicked[0][2]};
+    const Vec3Lanes kickedSpin{kicked[1][1], kicked[1][2], kicked[1][3]};
+    const Vec3Lanes centre{centreRows[0], centreRows[1], centreRows[2]};
+    const QuatLanes orientation{turnRows[3], turnRows[0], turnRows[1], turnRows[2]};
+
+    const Lanes hs = splat(h);
+    const Vec3Lanes freeFlight = centre + hs * kickedVelocity;
+    const Vec3Lanes change = velocity - kickedVelocity;
+    const Vec3Lanes turn = spin - kickedSpin;
+    const auto pushed = nonZero(change) | nonZero(turn);
+    const Vec3Lanes pushedTo = freeFlight + hs * change;
+    const auto turned = nonZero(turn);
+    const Vec3Lanes turnBy{select(turned, spin.x, kickedSpin.x), select(turned, spin.y, kickedSpin.y),
+                           select(turned, spin.z, kickedSpin.z)};
+    TurnLanes turnedTo = rotateByAngularVelocity(orientation, turnBy, h);
+    for (int lane = 0; lane < kLanes; ++lane) {
+        if (!turnedTo.needsScalar[lane]) continue;
+        const std::size_t i = first + static_cast<std::size_t>(lane);
+        const Quat q = rotateByAngularVelocity(workspace.orientations[i], Vec3(turnBy.x[lane], turnBy.y[lane], turnBy.z[lane]), h);
+        turnedTo.orientation.w[lane] = q.w;
+        turnedTo.orientation.x[lane] = q.x;
+        turnedTo.orientation.y[lane] = q.y;
+        turnedTo.orientation.z[lane] = q.z;
+    }
+
+    centreRows[0] = select(pushed, pushedTo.x, freeFlight.x);
+    centreRows[1] = select(pushed, pushedTo.y, freeFlight.y);
+    centreRows[2] = select(pushed, pushedTo.z, freeFlight.z);
+    const QuatLanes& q = turnedTo.orientation;
+    turnRows[0] = q.x;
+    turnRows[1] = q.y;
+    turnRows[2] = q.z;
+    turnRows[3] = q.w;
+    transpose(centreRows[0], centreRows[1], centreRows[2], centreRows[3]);
+    transpose(turnRows[0], turnRows[1], turnRows[2], turnRows[3]);
+    for (int lane = 0; lane < kLanes; ++lane) {
+        const std::size_t i = first + static_cast<std::size_t>(lane);
+        store(&workspace.centres[i].position.x, centreRows[lane]);
+        store(&workspace.orientations[i].x, turnRows[lane]);
+    }
+}
+
+/// Records [@p first, @p end): four at a time, then one at a time.
+STEPWISE_LANES_COPIES void driftRecordBlock(SolverWorkspace& workspace, std::size_t first, std::size_t end, Real h) {
+    std::size_t i = first;
+    for (; i + kLanes <= end; i += kLanes) driftFourRecords(workspace, i, h);
+    for (; i < end; ++i) driftOneRecord(workspace, i, h);
+}
+
+}  // namespace
+
+void driftRecordsByVelocityChange(SolverWorkspace& workspace, std::size_t first, std::size_t end, Real h) {
+    driftRecordBlock(workspace, first, end, h);
 }
 
 }  // namespace stepwise
