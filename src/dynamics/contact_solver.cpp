@@ -419,12 +419,14 @@ void solveContacts(SolverWorkspace& workspace, const ContactSolverSettings& sett
     }
 }
 
-void applyRestitution(SolverWorkspace& workspace) {
+bool applyRestitution(SolverWorkspace& workspace) {
     syncRoundContacts(workspace);
+    bool bounced = false;
     for (std::size_t i = 0; i < workspace.contacts.size(); ++i) {
         SolverContact& c = workspace.contacts[i];
         const ContactStart& start = workspace.starts[i];
         if (start.restitution == Real(0) || c.maxNormalImpulse == Real(0)) continue;
+        bounced = true;
         // Drive v_n to e·v_c (separating), never pulling: the accumulated λ stays ≥ 0.
         SolverBody& a = workspace.bodies[c.bodyA];
         SolverBody& b = workspace.bodies[c.bodyB];
@@ -435,6 +437,7 @@ void applyRestitution(SolverWorkspace& workspace) {
             c.normalImpulse = total;
         });
     }
+    return bounced;
 }
 
 void storeContactImpulses(std::span<const Contact> contacts, SolverWorkspace& workspace,

@@ -362,7 +362,8 @@ void warmStartFromLastSubstep(SolverWorkspace& workspace);
 void solveContacts(SolverWorkspace& workspace, const ContactSolverSettings& settings, bool useBias);
 
 /// @brief After the substeps: the bounce, e·v_c along n, for contacts that pushed and are not resting.
-void applyRestitution(SolverWorkspace& workspace);
+/// @return true if any contact bounced (only then did a solver body's velocity change).
+bool applyRestitution(SolverWorkspace& workspace);
 
 /// @brief Keeps this step's impulses for the next step's warm start, and fills @p reports (may be empty).
 void storeContactImpulses(std::span<const Contact> contacts, SolverWorkspace& workspace,

@@ -472,9 +472,9 @@ void World::stepWithSequentialImpulses() {
     // 8. Bounces, once per step, from the approach speed at touch (src/dynamics/contact_solver.cpp);
     //    joints that pulled harder than their MaxForce break (src/dynamics/joints/joint.cpp)
     runStage(Stage::Restitution, [&] {
-        copyVelocitiesIn(solverWorkspace_);  // the continuous stage may have stopped a body
-        applyRestitution(solverWorkspace_);
-        copyVelocitiesOut(solverWorkspace_);
+        // The records hold the objects' velocities still: the last relax wrote them out, and the
+        // continuous stage moves positions only. Only a bounce changes them, so only then do they go out.
+        if (applyRestitution(solverWorkspace_)) copyVelocitiesOut(solverWorkspace_);
         impulses_.resize(contacts_.size());
         storeContactImpulses(contacts_, solverWorkspace_, impulses_);
         if (plan_.jointSolver.runs) finishJoints(jointWorkspace_, joints_, hs, stepCount_ + 1, time_ + h, links_);
