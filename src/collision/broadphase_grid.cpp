@@ -1,11 +1,14 @@
 /// @file broadphase_grid.cpp
-/// @brief Stage 4, uniform grid: cells sized from the bodies, a hash table filled by counting sort.
+/// @brief Stage 4, uniform grid: cells sized from the bodies, a hash table filled by counting sort,
+/// and the pairs kept from step to step while the bodies stay inside their fat boxes.
 #include "collision/broadphase_grid.hpp"
 
 #include <algorithm>
 #include <bit>
 #include <cmath>
 #include <limits>
+
+#include "core/insertion_sort.hpp"
 
 namespace stepwise {
 
@@ -32,6 +35,26 @@ void testPair(const ProxySet& proxies, std::uint32_t p, std::uint32_t q, std::ve
     if (proxies.isKinematic(p) && proxies.isKinematic(q)) return;
     ++counters.pairTests;
     if (proxies.boxes[p].overlaps(proxies.boxes[q])) pairs.push_back(orderedPair(p, q));
+}
+
+/// Pair @p x comes before pair @p y: by lower proxy, then higher.
+bool comesBefore(const ProxyPair& x, const ProxyPair& y) { return x.a < y.a || (x.a == y.a && x.b < y.b); }
+
+/// Sorts @p pairs by lower proxy, then higher, into @p sorted, in O(pairs + proxies): a counting
+/// sort by the lower proxy, then each proxy's few partners by insertion (core/insertion_sort.hpp).
+void sortByProxies(const std::vector<ProxyPair>& pairs, std::uint32_t proxyCount, std::vector<std::uint32_t>& start,
+                   std::vector<ProxyPair>& sorted) {
+    start.assign(proxyCount + 1, 0);
+    for (const ProxyPair& pair : pairs) ++start[pair.a + 1];
+    for (std::uint32_t p = 0; p < proxyCount; ++p) start[p + 1] += start[p];
+    sorted.resize(pairs.size());
+    for (const ProxyPair& pair : pairs) sorted[start[pair.a]++] = pair;
+    // Placing moved each start to its run's end, the next run's start.
+    std::uint32_t first = 0;
+    for (std::uint32_t p = 0; p < proxyCount; ++p) {
+        insertionSort(std::span<ProxyPair>(sorted.data() + first, start[p] - first), comesBefore);
+        first = start[p];
+    }
 }
 
 }  // namespace
@@ -65,8 +88,59 @@ void UniformGrid::chooseCellSize(const ProxySet& proxies) {
 
 void UniformGrid::findOverlaps(const ProxySet& proxies, std::vector<ProxyPair>& pairs, BroadphaseCounters& counters) {
     const std::uint32_t n = proxies.size();
+    if (n == 0) {
+        kept_.clear();
+        keeping_ = false;
+        movedCount_ = 0;
+        refoundAll_ = true;
+        return;
+    }
+    // Which proxies left the fat box they were filed under?
+    const bool canKeep = keeping_ && fat_.size() == n && keptDynamicCount_ == proxies.dynamicCount;
+    movedCount_ = 0;
+    if (canKeep) {
+        moved_.assign(n, 0);
+        for (std::uint32_t p = 0; p < n; ++p) {
+            if (!fat_[p].contains(proxies.boxes[p])) {
+                moved_[p] = 1;
+                ++movedCount_;
+            }
+        }
+    }
+    const auto fatten = [&](std::uint32_t p) {
+        const Aabb& box = proxies.boxes[p];
+        const Vec3 margin(kGridFatMarginFraction * box.longestSide());
+        fat_[p] = {box.min - margin, box.max + margin};
+    };
+    fat_.resize(n);
+    const ProxySet fat{fat_, proxies.dynamicCount};
+    refoundAll_ = !canKeep || movedCount_ * kGridRefindAllShare > n;
+    if (refoundAll_) {
+        for (std::uint32_t p = 0; p < n; ++p) fatten(p);
+        findAllFatPairs(fat, counters);
+        movedCount_ = n;
+    } else if (movedCount_ > 0) {
+        for (std::uint32_t p = 0; p < n; ++p) {
+            if (moved_[p]) fatten(p);
+        }
+        if (!findFatPairsOfMoved(fat, counters)) {
+            findAllFatPairs(fat, counters);
+            refoundAll_ = true;
+        }
+    }
+    keeping_ = true;
+    keptDynamicCount_ = proxies.dynamicCount;
+
+    // The kept pairs whose exact boxes overlap: those the search on the exact boxes would find.
+    for (const ProxyPair& pair : kept_) {
+        ++counters.pairTests;
+        if (proxies.boxes[pair.a].overlaps(proxies.boxes[pair.b])) pairs.push_back(pair);
+    }
+}
+
+void UniformGrid::fileProxies(const ProxySet& proxies) {
+    const std::uint32_t n = proxies.size();
     oversize_.clear();
-    if (n == 0) return;
     chooseCellSize(proxies);
     isOversize_.assign(n, 0);
     for (std::uint32_t p = 0; p < n; ++p) {
@@ -75,24 +149,67 @@ void UniformGrid::findOverlaps(const ProxySet& proxies, std::vector<ProxyPair>& 
             oversize_.push_back(p);
         }
     }
-
     dense_ = fitDenseGrid(proxies);
+    if (dense_) fillDenseCells(proxies);
+}
+
+void UniformGrid::findAllFatPairs(const ProxySet& fat, BroadphaseCounters& counters) {
+    found_.clear();
+    fileProxies(fat);
     if (dense_) {
-        findOverlapsDense(proxies, pairs, counters);
-        findOversizeOverlapsDense(proxies, pairs, counters);
+        findOverlapsDense(fat, found_, counters);
+        findOversizeOverlapsDense(fat, found_, counters);
     } else {
-        findOverlapsHashed(proxies, pairs, counters);
+        findOverlapsHashed(fat, found_, counters);
         // Oversize bodies against every listed body: the hashed grid has no cell ranges to walk.
         for (const std::uint32_t big : oversize_) {
-            for (std::uint32_t q = 0; q < n; ++q) {
-                if (!isOversize_[q]) testPair(proxies, big, q, pairs, counters);
+            for (std::uint32_t q = 0; q < fat.size(); ++q) {
+                if (!isOversize_[q]) testPair(fat, big, q, found_, counters);
             }
         }
     }
     // The oversize bodies among themselves, each pair once.
     for (std::size_t i = 0; i < oversize_.size(); ++i) {
-        for (std::size_t j = i + 1; j < oversize_.size(); ++j) testPair(proxies, oversize_[i], oversize_[j], pairs, counters);
+        for (std::size_t j = i + 1; j < oversize_.size(); ++j) testPair(fat, oversize_[i], oversize_[j], found_, counters);
     }
+    sortByProxies(found_, fat.size(), pairStart_, kept_);
+}
+
+bool UniformGrid::findFatPairsOfMoved(const ProxySet& fat, BroadphaseCounters& counters) {
+    fileProxies(fat);
+    if (!dense_ || !oversize_.empty()) return false;  // the 27 cells around a body hold all its partners only here
+    found_.clear();
+    for (std::uint32_t e = 0; e < entries_.size(); ++e) {
+        const Entry& entry = entries_[e];
+        if (!moved_[entry.proxy]) continue;
+        const bool kinematic = fat.isKinematic(entry.proxy);
+        const std::int32_t zLow = std::max(entry.cell.z - 1, 0);
+        const std::int32_t zHigh = std::min(entry.cell.z + 1, columns_[2] - 1);
+        for (std::int32_t x = std::max(entry.cell.x - 1, 0); x <= std::min(entry.cell.x + 1, columns_[0] - 1); ++x) {
+            for (std::int32_t y = std::max(entry.cell.y - 1, 0); y <= std::min(entry.cell.y + 1, columns_[1] - 1); ++y) {
+                for (std::uint32_t f = bucketStart_[slotOf(x, y, zLow)]; f < bucketStart_[slotOf(x, y, zHigh) + 1]; ++f) {
+                    const Entry& other = entries_[f];
+                    if (f == e || (kinematic && fat.isKinematic(other.proxy))) continue;
+                    if (moved_[other.proxy] && other.proxy < entry.proxy) continue;  // found from the other side
+                    ++counters.pairTests;
+                    if (entry.box.overlaps(other.box)) found_.push_back(orderedPair(entry.proxy, other.proxy));
+                }
+            }
+        }
+    }
+    sortByProxies(found_, fat.size(), pairStart_, merged_);
+    found_.swap(merged_);
+    // The kept pairs of proxies that stayed, with the new ones merged in, in order: no pair is in both.
+    merged_.clear();
+    auto next = found_.begin();
+    for (const ProxyPair& pair : kept_) {
+        if (moved_[pair.a] || moved_[pair.b]) continue;
+        for (; next != found_.end() && comesBefore(*next, pair); ++next) merged_.push_back(*next);
+        merged_.push_back(pair);
+    }
+    merged_.insert(merged_.end(), next, found_.end());
+    kept_.swap(merged_);
+    return true;
 }
 
 bool UniformGrid::fitDenseGrid(const ProxySet& proxies) {
@@ -118,8 +235,7 @@ std::uint32_t UniformGrid::slotOf(std::int32_t x, std::int32_t y, std::int32_t z
     return static_cast<std::uint32_t>((x * columns_[1] + y) * columns_[2] + z);
 }
 
-void UniformGrid::findOverlapsDense(const ProxySet& proxies, std::vector<ProxyPair>& pairs,
-                                    BroadphaseCounters& counters) {
+void UniformGrid::fillDenseCells(const ProxySet& proxies) {
     const std::uint32_t n = proxies.size();
     // Each listed proxy's cell; the clamp only absorbs the rounding of (min − origin)/size at the far edge.
     cells_.resize(n);
@@ -148,7 +264,10 @@ void UniformGrid::findOverlapsDense(const ProxySet& proxies, std::vector<ProxyPa
     // Placing moved each start to its slot's end, i.e. to where the next slot starts: shift them back.
     for (std::uint32_t s = slots; s > 0; --s) bucketStart_[s] = bucketStart_[s - 1];
     bucketStart_[0] = 0;
+}
 
+void UniformGrid::findOverlapsDense(const ProxySet& proxies, std::vector<ProxyPair>& pairs,
+                                    BroadphaseCounters& counters) {
     // Tests entry e against the entries [first, last): all three axes (the run is not sorted along any).
     const auto testRun = [&](std::uint32_t e, std::uint32_t first, std::uint32_t last) {
         const Entry& entry = entries_[e];
