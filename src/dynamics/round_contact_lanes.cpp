@@ -51,14 +51,22 @@ STEPWISE_LANES_INLINE BodyLanes gather(const std::vector<SolverBody>& bodies, co
 }
 
 /// Writes the velocities back to records @p index, in lane order; m⁻¹ and I⁻¹ stay as they are in memory.
+///
+/// A lane whose record is the static one (B of a plane contact, both sides of an empty lane)
+/// writes to @p discard instead. Its velocities are zero before and after (m⁻¹ = I⁻¹ = 0), so
+/// nothing is lost; but were they written back, every batch with a plane contact would
+/// read the static record just after the batch before it wrote it, and wait for that store
+/// (a 32-byte load of a record half written by 16-byte stores cannot be forwarded). Only
+/// records that really carry a body's velocity from one contact to the next are written.
 STEPWISE_LANES_INLINE void scatter(std::vector<SolverBody>& bodies, const std::uint32_t (&index)[kLanes],
-                                   const BodyLanes& lanes) {
+                                   const BodyLanes& lanes, SolverBody& discard) {
     Lanes low[kLanes] = {lanes.velocity.x, lanes.velocity.y, lanes.velocity.z, lanes.angularVelocity.x};
     transpose(low[0], low[1], low[2], low[3]);
     for (int i = 0; i < kLanes; ++i) {
-        store(realsOf(bodies[index[i]]), low[i]);
+        SolverBody& record = index[i] == kStaticSolverBody ? discard : bodies[index[i]];
+        store(realsOf(record), low[i]);
         const Real rest[2] = {lanes.angularVelocity.y[i], lanes.angularVelocity.z[i]};  // ω_y, ω_z
-        std::memcpy(realsOf(bodies[index[i]]) + kLanes, rest, sizeof rest);
+        std::memcpy(realsOf(record) + kLanes, rest, sizeof rest);
     }
 }
 
@@ -193,13 +201,14 @@ void batchRoundContacts(SolverWorkspace& workspace) {
 
 STEPWISE_LANES_COPIES
 void warmStartRoundContacts(SolverWorkspace& workspace) {
+    SolverBody discard;  // where the static record's lanes go (scatter())
     for (RoundBatch& batch : workspace.roundBatches) {
         BodyLanes a = gather(workspace.bodies, batch.bodyA);
         BodyLanes b = gather(workspace.bodies, batch.bodyB);
         applyNormal(a, b, batch.normal, batch.normalImpulse);
         applyFriction(a, b, batch, cross(batch.normal, batch.tangent0), batch.tangentImpulse0, batch.tangentImpulse1);
-        scatter(workspace.bodies, batch.bodyA, a);
-        scatter(workspace.bodies, batch.bodyB, b);
+        scatter(workspace.bodies, batch.bodyA, a, discard);
+        scatter(workspace.bodies, batch.bodyB, b, discard);
     }
 }
 
@@ -221,6 +230,7 @@ void solveRoundContacts(SolverWorkspace& workspace, const ContactSolverSettings&
     const Lanes slowestPushOut = splat(-kMaxPushOutSpeed);
     const Lanes softMassScale = splat(pushOut ? settings.softness.massScale : Real(1));
     const Lanes softImpulseScale = splat(pushOut ? settings.softness.impulseScale : Real(0));
+    SolverBody discard;  // where the static record's lanes go (scatter())
     for (RoundBatch& batch : workspace.roundBatches) {
         const Vec3Lanes& n = batch.normal;
         // Normal: λ = −K⁻¹·s_m·(v_n + bias) − s_i·λ_acc (softness.hpp); a gap closes in this substep, no further.
@@ -266,8 +276,8 @@ void solveRoundContacts(SolverWorkspace& workspace, const ContactSolverSettings&
         batch.tangentImpulse0 = total0;
         batch.tangentImpulse1 = total1;
 
-        scatter(workspace.bodies, batch.bodyA, a);
-        scatter(workspace.bodies, batch.bodyB, b);
+        scatter(workspace.bodies, batch.bodyA, a, discard);
+        scatter(workspace.bodies, batch.bodyB, b, discard);
     }
     workspace.roundBatchesAhead = true;
 }
