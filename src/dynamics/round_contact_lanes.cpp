@@ -62,11 +62,19 @@ STEPWISE_LANES_INLINE void scatter(std::vector<SolverBody>& bodies, const std::u
                                    const BodyLanes& lanes, SolverBody& discard) {
     Lanes low[kLanes] = {lanes.velocity.x, lanes.velocity.y, lanes.velocity.z, lanes.angularVelocity.x};
     transpose(low[0], low[1], low[2], low[3]);
+    // ω_y and ω_z side by side for each record, two shuffles for all four: [y₀ z₀ y₂ z₂] and
+    // [y₁ z₁ y₃ z₃]; record i takes its pair from the low or the high half of one of them.
+    const Lanes even = shuffleLanes<0, 4, 2, 6>(lanes.angularVelocity.y, lanes.angularVelocity.z);
+    const Lanes odd = shuffleLanes<1, 5, 3, 7>(lanes.angularVelocity.y, lanes.angularVelocity.z);
+    Real evenPairs[kLanes];
+    Real oddPairs[kLanes];
+    store(evenPairs, even);
+    store(oddPairs, odd);
+    const Real* pairs[kLanes] = {evenPairs, oddPairs, evenPairs + 2, oddPairs + 2};
     for (int i = 0; i < kLanes; ++i) {
         SolverBody& record = index[i] == kStaticSolverBody ? discard : bodies[index[i]];
         store(realsOf(record), low[i]);
-        const Real rest[2] = {lanes.angularVelocity.y[i], lanes.angularVelocity.z[i]};  // ω_y, ω_z
-        std::memcpy(realsOf(record) + kLanes, rest, sizeof rest);
+        std::memcpy(realsOf(record) + kLanes, pairs[i], 2 * sizeof(Real));  // ω_y, ω_z
     }
 }
 
