@@ -117,15 +117,20 @@ void UniformGrid::findOverlaps(const ProxySet& proxies, std::vector<ProxyPair>& 
     refoundAll_ = !canKeep || movedCount_ * kGridRefindAllShare > n;
     if (refoundAll_) {
         for (std::uint32_t p = 0; p < n; ++p) fatten(p);
+        fileProxies(fat);
         findAllFatPairs(fat, counters);
         movedCount_ = n;
     } else if (movedCount_ > 0) {
         for (std::uint32_t p = 0; p < n; ++p) {
             if (moved_[p]) fatten(p);
         }
-        if (!findFatPairsOfMoved(fat, counters)) {
+        fileProxies(fat);
+        // The 27 cells around a body hold all its partners only in the dense grid without oversize bodies
+        refoundAll_ = !dense_ || !oversize_.empty();
+        if (refoundAll_) {
             findAllFatPairs(fat, counters);
-            refoundAll_ = true;
+        } else {
+            findFatPairsOfMoved(fat, counters);
         }
     }
     keeping_ = true;
@@ -155,7 +160,6 @@ void UniformGrid::fileProxies(const ProxySet& proxies) {
 
 void UniformGrid::findAllFatPairs(const ProxySet& fat, BroadphaseCounters& counters) {
     found_.clear();
-    fileProxies(fat);
     if (dense_) {
         findOverlapsDense(fat, found_, counters);
         findOversizeOverlapsDense(fat, found_, counters);
@@ -175,9 +179,7 @@ void UniformGrid::findAllFatPairs(const ProxySet& fat, BroadphaseCounters& count
     sortByProxies(found_, fat.size(), pairStart_, kept_);
 }
 
-bool UniformGrid::findFatPairsOfMoved(const ProxySet& fat, BroadphaseCounters& counters) {
-    fileProxies(fat);
-    if (!dense_ || !oversize_.empty()) return false;  // the 27 cells around a body hold all its partners only here
+void UniformGrid::findFatPairsOfMoved(const ProxySet& fat, BroadphaseCounters& counters) {
     found_.clear();
     for (std::uint32_t e = 0; e < entries_.size(); ++e) {
         const Entry& entry = entries_[e];
@@ -209,7 +211,6 @@ bool UniformGrid::findFatPairsOfMoved(const ProxySet& fat, BroadphaseCounters& c
     }
     merged_.insert(merged_.end(), next, found_.end());
     kept_.swap(merged_);
-    return true;
 }
 
 bool UniformGrid::fitDenseGrid(const ProxySet& proxies) {

@@ -107,7 +107,7 @@ private:
     bool fitDenseGrid(const ProxySet& proxies);
     std::uint32_t slotOf(std::int32_t x, std::int32_t y, std::int32_t z) const;
     void findAllFatPairs(const ProxySet& fat, BroadphaseCounters& counters);
-    bool findFatPairsOfMoved(const ProxySet& fat, BroadphaseCounters& counters);
+    void findFatPairsOfMoved(const ProxySet& fat, BroadphaseCounters& counters);
     void fileProxies(const ProxySet& proxies);
     void fillDenseCells(const ProxySet& proxies);
     void findOverlapsDense(const ProxySet& proxies, std::vector<ProxyPair>& pairs, BroadphaseCounters& counters);
