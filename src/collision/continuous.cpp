@@ -154,7 +154,9 @@ Real earlierImpact(const Geometry& moving, const Vec3& start, const Aabb& swept,
     return t && *t < earliest ? *t : earliest;
 }
 
-/// Moves @p body back to @p start + t·Δ when t < 1; true when it did.
+/// Moves @p body back to @p start + t·Δ when t < 1; true when it did. Its velocity stays:
+/// the contact found there next step stops it. (The restitution stage counts on this: after
+/// this stage the solver's records still hold every body's velocity, World::stepWithSequentialImpulses().)
 bool moveBack(DynamicObject& body, const Vec3& start, Real t) {
     if (t >= Real(1)) return false;
     body.position = start + t * (body.position - start);

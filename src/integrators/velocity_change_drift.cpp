@@ -187,17 +187,14 @@ STEPWISE_LANES_INLINE void driftFourRecords(SolverWorkspace& workspace, std::siz
     }
 }
 
-/// Records [@p first, @p end): four at a time, then one at a time.
-STEPWISE_LANES_COPIES void driftRecordBlock(SolverWorkspace& workspace, std::size_t first, std::size_t end, Real h) {
+}  // namespace
+
+// Four records at a time, then one at a time; compiled for AVX-512, AVX2 and any x86-64 (core/lanes.hpp).
+STEPWISE_LANES_COPIES
+void driftRecordsByVelocityChange(SolverWorkspace& workspace, std::size_t first, std::size_t end, Real h) {
     std::size_t i = first;
     for (; i + kLanes <= end; i += kLanes) driftFourRecords(workspace, i, h);
     for (; i < end; ++i) driftOneRecord(workspace, i, h);
-}
-
-}  // namespace
-
-void driftRecordsByVelocityChange(SolverWorkspace& workspace, std::size_t first, std::size_t end, Real h) {
-    driftRecordBlock(workspace, first, end, h);
 }
 
 }  // namespace stepwise
