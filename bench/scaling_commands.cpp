@@ -91,6 +91,22 @@ std::function<bool(const std::string&)> wholeNumberInto(int& target) {
     };
 }
 
+/// An option's handler that reads a scene generator's seed into @p target (as strtoull reads it).
+std::function<bool(const std::string&)> seedInto(std::uint64_t& target) {
+    return [&target](const std::string& v) {
+        target = std::strtoull(v.c_str(), nullptr, 10);
+        return true;
+    };
+}
+
+/// An option's handler that keeps a path (--markdown, --sweep-csv) in @p target.
+std::function<bool(const std::string&)> pathInto(std::optional<std::string>& target) {
+    return [&target](const std::string& v) {
+        target = v;
+        return true;
+    };
+}
+
 /// An option's handler that reads comma-separated whole numbers (counts()) into @p target.
 std::function<bool(const std::string&)> wholeNumbersInto(std::vector<std::size_t>& target) {
     return [&target](const std::string& v) {
@@ -128,9 +144,9 @@ int scalingCommand(const std::vector<std::string>& args) {
                               {"--steps", wholeNumberInto(o.rainSteps)},
                               {"--large-steps", wholeNumberInto(o.largeRainSteps)},
                               {"--pile-steps", wholeNumberInto(o.pileSteps)},
-                              {"--seed", [&](const std::string& v) { o.seed = std::strtoull(v.c_str(), nullptr, 10); return true; }},
+                              {"--seed", seedInto(o.seed)},
                               {"--scenes", [&](const std::string& v) { o.scenes = names(v); return true; }},
-                              {"--markdown", [&](const std::string& v) { o.markdownPath = v; return true; }}});
+                              {"--markdown", pathInto(o.markdownPath)}});
     return status ? status : runScaling(o);
 }
 
@@ -140,8 +156,8 @@ int stageCostsCommand(const std::vector<std::string>& args) {
                              {{"--sizes", wholeNumbersInto(o.sizes)},
                               {"--settle", wholeNumberInto(o.settleSteps)},
                               {"--rounds", wholeNumberInto(o.rounds)},
-                              {"--seed", [&](const std::string& v) { o.seed = std::strtoull(v.c_str(), nullptr, 10); return true; }},
-                              {"--markdown", [&](const std::string& v) { o.markdownPath = v; return true; }}});
+                              {"--seed", seedInto(o.seed)},
+                              {"--markdown", pathInto(o.markdownPath)}});
     return status ? status : runStageCosts(o);
 }
 
@@ -154,8 +170,8 @@ int bulletCommand([[maybe_unused]] const std::vector<std::string>& args) {
                               {"--config", [&](const std::string& v) { o.configDir = v; return true; }},
                               {"--steps", wholeNumberInto(o.rainSteps)},
                               {"--scenarios", [&](const std::string& v) { o.scenarios = names(v); return true; }},
-                              {"--markdown", [&](const std::string& v) { o.markdownPath = v; return true; }},
-                              {"--sweep-csv", [&](const std::string& v) { o.sweepCsvPath = v; return true; }}});
+                              {"--markdown", pathInto(o.markdownPath)},
+                              {"--sweep-csv", pathInto(o.sweepCsvPath)}});
     return status ? status : runSideBySide(o);
 #else
     std::fprintf(stderr,
