@@ -225,67 +225,134 @@ void clearRoundContactImpulses(SolverWorkspace& workspace) {
     workspace.roundBatchesAhead = true;
 }
 
-// solveContacts()'s pass (contact_solver.cpp), line for line, on four contacts at once: each `if`
-// on a contact's own numbers becomes a select between the two results, lane by lane. Compiled
-// three times (STEPWISE_LANES_COPIES, core/lanes.hpp): AVX-512, AVX2 and any x86-64, the same numbers.
-STEPWISE_LANES_COPIES
-void solveRoundContacts(SolverWorkspace& workspace, const ContactSolverSettings& settings, bool useBias) {
-    const bool pushOut = useBias && settings.positionCorrection;
-    const Lanes zero = splat(0);
-    const Lanes one = splat(1);
-    const Lanes inverseSubstep = splat(Real(1) / settings.substep);
-    const Lanes biasRate = splat(settings.softness.biasRate);
-    const Lanes slowestPushOut = splat(-kMaxPushOutSpeed);
-    const Lanes softMassScale = splat(pushOut ? settings.softness.massScale : Real(1));
-    const Lanes softImpulseScale = splat(pushOut ? settings.softness.impulseScale : Real(0));
-    SolverBody discard;  // where the static record's lanes go (scatter())
-    for (RoundBatch& batch : workspace.roundBatches) {
-        const Vec3Lanes& n = batch.normal;
-        // Normal: λ = −K⁻¹·s_m·(v_n + bias) − s_i·λ_acc (softness.hpp); a gap closes in this substep, no further.
-        const Lanes separation =
-            dot(gatherCentres(workspace.centres, batch.bodyB) - gatherCentres(workspace.centres, batch.bodyA), n) + batch.separationOffset;
-        const auto gap = separation > zero;
-        const Lanes softBias = pushOut ? maxLanes(biasRate * separation, slowestPushOut) : zero;
-        const Lanes bias = select(gap, separation * inverseSubstep, softBias);
-        const Lanes massScale = select(gap, one, softMassScale);
-        const Lanes impulseScale = select(gap, zero, softImpulseScale);
+namespace {
 
-        BodyLanes a = gather(workspace.bodies, batch.bodyA);
-        BodyLanes b = gather(workspace.bodies, batch.bodyB);
-        const Lanes vn = dot(b.velocity - a.velocity, n);
+/// What a pass's formulas take from the settings, as Lanes, once per pass.
+struct PassConstants {
+    bool pushOut = false;     ///< The soft bias pushes overlapping bodies apart (solve, not relax).
+    bool accumulate = true;   ///< ContactSolverSettings::accumulate.
+    Lanes zero{};
+    Lanes one{};
+    Lanes inverseSubstep{};   ///< 1/h_s, 1/s.
+    Lanes biasRate{};         ///< softness.hpp, 1/s.
+    Lanes slowestPushOut{};   ///< −kMaxPushOutSpeed, m/s.
+    Lanes softMassScale{};    ///< s_m where bodies overlap (1 without the push).
+    Lanes softImpulseScale{}; ///< s_i where bodies overlap (0 without the push).
+};
+
+/// Batches of one wave solved side by side (solveBatches()): the most the
+/// processor's registers and reorder window profit from (below).
+constexpr std::size_t kBatchesSideBySide = 3;
+
+/// solveContacts()'s pass (contact_solver.cpp), line for line, on the @p N batches from @p batches on, all of one wave:
+/// each `if` on a contact's own numbers becomes a select between the two results, lane by lane.
+///
+/// **Why N batches at once.** One batch is a chain of about 130 cycles, each step
+/// waiting for the last: gather, v_n, λ, the velocities it leaves, friction's square root
+/// and division, scatter. The processor overlaps the next batch only as far as its
+/// reorder window reaches ahead, about one batch's instructions. Batches of one wave share
+/// no body, so their chains are independent: written phase by phase, every phase once
+/// for each batch, the N chains run side by side. Three is best here: the 1k and 4k
+/// rain −7 % against one at a time; two gained 2 %, four lost to spilled registers
+/// (bench/solver_performance.md, thirteenth round). The numbers are each batch's own,
+/// so the bits are the same whatever N.
+template <std::size_t N>
+STEPWISE_LANES_INLINE void solveBatches(RoundBatch* batches, SolverWorkspace& workspace, const PassConstants& k,
+                                        SolverBody& discard) {
+    BodyLanes a[N];
+    BodyLanes b[N];
+    Lanes applied[N];
+    // Normal: λ = −K⁻¹·s_m·(v_n + bias) − s_i·λ_acc (softness.hpp); a gap closes in this substep, no further.
+    for (std::size_t j = 0; j < N; ++j) {
+        RoundBatch& batch = batches[j];
+        const Vec3Lanes& n = batch.normal;
+        const Lanes separation =
+            dot(gatherCentres(workspace.centres, batch.bodyB) - gatherCentres(workspace.centres, batch.bodyA), n) +
+            batch.separationOffset;
+        const auto gap = separation > k.zero;
+        const Lanes softBias = k.pushOut ? maxLanes(k.biasRate * separation, k.slowestPushOut) : k.zero;
+        const Lanes bias = select(gap, separation * k.inverseSubstep, softBias);
+        const Lanes massScale = select(gap, k.one, k.softMassScale);
+        const Lanes impulseScale = select(gap, k.zero, k.softImpulseScale);
+
+        a[j] = gather(workspace.bodies, batch.bodyA);
+        b[j] = gather(workspace.bodies, batch.bodyB);
+        const Lanes vn = dot(b[j].velocity - a[j].velocity, n);
         const Lanes impulse = -batch.normalMass * massScale * (vn + bias) - impulseScale * batch.normalImpulse;
-        Lanes applied;
-        if (settings.accumulate) {
-            const Lanes total = maxLanes(batch.normalImpulse + impulse, zero);
-            applied = total - batch.normalImpulse;
+        if (k.accumulate) {
+            const Lanes total = maxLanes(batch.normalImpulse + impulse, k.zero);
+            applied[j] = total - batch.normalImpulse;
             batch.normalImpulse = total;
         } else {  // Box2D-Lite's switch: clamp each increment
-            applied = maxLanes(impulse, zero);
-            batch.normalImpulse += applied;
+            applied[j] = maxLanes(impulse, k.zero);
+            batch.normalImpulse += applied[j];
         }
         batch.maxNormalImpulse = maxLanes(batch.maxNormalImpulse, batch.normalImpulse);
-        applyNormal(a, b, n, applied);
+    }
+    for (std::size_t j = 0; j < N; ++j) applyNormal(a[j], b[j], batches[j].normal, applied[j]);
 
-        // Friction inside Coulomb's circle |λ_t| ≤ μ·λ_n, both tangents read before either is applied.
-        // (A lane that does not push and holds no friction, which the scalar pass skips, computes a
-        // scale of 0 or 1 on a zero impulse here: it changes nothing either.)
-        const Lanes limit = batch.friction * batch.normalImpulse;
+    // Friction inside Coulomb's circle |λ_t| ≤ μ·λ_n, both tangents read before either is applied.
+    // (A lane that does not push and holds no friction, which the scalar pass skips, computes a
+    // scale of 0 or 1 on a zero impulse here: it changes nothing either.)
+    Vec3Lanes tangent1[N];
+    Lanes total0[N];
+    Lanes total1[N];
+    for (std::size_t j = 0; j < N; ++j) {
+        const RoundBatch& batch = batches[j];
+        tangent1[j] = cross(batch.normal, batch.tangent0);  // t₂ = n × t₁, as prepare made it (tangentBasis())
         Lanes along0;
         Lanes along1;
-        const Vec3Lanes tangent1 = cross(n, batch.tangent0);  // t₂ = n × t₁, as prepare made it (tangentBasis())
-        frictionVelocities(a, b, batch, tangent1, along0, along1);
-        Lanes total0 = batch.tangentImpulse0 - batch.tangentMass * along0;
-        Lanes total1 = batch.tangentImpulse1 - batch.tangentMass * along1;
-        const Lanes magnitude = sqrtLanes(total0 * total0 + total1 * total1);
-        const Lanes scale = select(magnitude > limit, limit / magnitude, one);
-        total0 *= scale;
-        total1 *= scale;
-        applyFriction(a, b, batch, tangent1, total0 - batch.tangentImpulse0, total1 - batch.tangentImpulse1);
-        batch.tangentImpulse0 = total0;
-        batch.tangentImpulse1 = total1;
+        frictionVelocities(a[j], b[j], batch, tangent1[j], along0, along1);
+        total0[j] = batch.tangentImpulse0 - batch.tangentMass * along0;
+        total1[j] = batch.tangentImpulse1 - batch.tangentMass * along1;
+    }
+    for (std::size_t j = 0; j < N; ++j) {
+        const Lanes limit = batches[j].friction * batches[j].normalImpulse;
+        const Lanes magnitude = sqrtLanes(total0[j] * total0[j] + total1[j] * total1[j]);
+        const Lanes scale = select(magnitude > limit, limit / magnitude, k.one);
+        total0[j] *= scale;
+        total1[j] *= scale;
+    }
+    for (std::size_t j = 0; j < N; ++j) {
+        RoundBatch& batch = batches[j];
+        applyFriction(a[j], b[j], batch, tangent1[j], total0[j] - batch.tangentImpulse0, total1[j] - batch.tangentImpulse1);
+        batch.tangentImpulse0 = total0[j];
+        batch.tangentImpulse1 = total1[j];
+    }
 
-        scatter(workspace.bodies, batch.bodyA, a, discard);
-        scatter(workspace.bodies, batch.bodyB, b, discard);
+    for (std::size_t j = 0; j < N; ++j) {
+        scatter(workspace.bodies, batches[j].bodyA, a[j], discard);
+        scatter(workspace.bodies, batches[j].bodyB, b[j], discard);
+    }
+}
+
+}  // namespace
+
+// Wave by wave, up to kBatchesSideBySide batches of a wave at a time. Compiled three times
+// (STEPWISE_LANES_COPIES, core/lanes.hpp): AVX-512, AVX2 and any x86-64, the same numbers.
+STEPWISE_LANES_COPIES
+void solveRoundContacts(SolverWorkspace& workspace, const ContactSolverSettings& settings, bool useBias) {
+    PassConstants k;
+    k.pushOut = useBias && settings.positionCorrection;
+    k.accumulate = settings.accumulate;
+    k.zero = splat(0);
+    k.one = splat(1);
+    k.inverseSubstep = splat(Real(1) / settings.substep);
+    k.biasRate = splat(settings.softness.biasRate);
+    k.slowestPushOut = splat(-kMaxPushOutSpeed);
+    k.softMassScale = splat(k.pushOut ? settings.softness.massScale : Real(1));
+    k.softImpulseScale = splat(k.pushOut ? settings.softness.impulseScale : Real(0));
+    SolverBody discard;  // where the static record's lanes go (scatter())
+    RoundBatch* const batches = workspace.roundBatches.data();
+    const std::size_t count = workspace.roundBatches.size();
+    for (std::size_t first = 0; first < count;) {
+        std::size_t run = 1;  // batches from `first` on in its wave, at most kBatchesSideBySide
+        while (run < kBatchesSideBySide && first + run < count && batches[first + run].wave == batches[first].wave) ++run;
+        static_assert(kBatchesSideBySide == 3, "one solveBatches<N> below for each N up to kBatchesSideBySide");
+        if (run == 3) solveBatches<3>(batches + first, workspace, k, discard);
+        else if (run == 2) solveBatches<2>(batches + first, workspace, k, discard);
+        else solveBatches<1>(batches + first, workspace, k, discard);
+        first += run;
     }
     workspace.roundBatchesAhead = true;
 }
