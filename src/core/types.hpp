@@ -47,4 +47,13 @@ inline bool isFinite(const Quat& q) {
     return std::isfinite(q.w) && std::isfinite(q.x) && std::isfinite(q.y) && std::isfinite(q.z);
 }
 
+/// @brief The *finite probe* of @p v: x·0 is 0 for a finite x and NaN for ±∞ or NaN, and a
+/// sum of zeros cannot overflow, so a sum of probes is zero exactly when every number in it
+/// is finite. Branch-free: a loop that writes numbers can add their probes as it goes and
+/// test the one sum at the end (World::checkFinite()).
+inline Real zeroIfFinite(const Vec3& v) { return v.x * Real(0) + v.y * Real(0) + v.z * Real(0); }
+
+/// @brief The finite probe of the four components of @p q.
+inline Real zeroIfFinite(const Quat& q) { return q.w * Real(0) + q.x * Real(0) + q.y * Real(0) + q.z * Real(0); }
+
 }  // namespace stepwise

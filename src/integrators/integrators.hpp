@@ -97,9 +97,9 @@ void integrateSymplecticEuler(std::span<DynamicObject> bodies, Real h);
 /// In a later substep (@p firstSubstep false) the warm start rides along: what the contacts did to
 /// the ball in the last substep is added to the kicked velocities, as warmStartFromLastSubstep()
 /// adds it on the object path. @p canTurn: the step plan's rotation decision (skipsRotation()).
-/// Works on records [@p first, @p end), so that the World can probe each block as it goes.
-void integrateSymplecticEulerOnRecords(SolverWorkspace& workspace, std::size_t first, std::size_t end, Real h,
-                                       bool canTurn, bool firstSubstep);
+/// @return The finite probe (zeroIfFinite(), core/types.hpp) of every velocity it wrote: zero
+/// exactly when all are finite, summed as they are written instead of read again afterwards.
+Real integrateSymplecticEulerOnRecords(SolverWorkspace& workspace, Real h, bool canTurn, bool firstSubstep);
 
 /// @brief Velocity Verlet: x ← x + h·v + ½h²·a, a_new = a(x_new), v ← v + ½h·(a + a_new);
 /// for rotation L ← L + ½h·τ, rotateTorqueFree() for h, τ_new = τ(q_new), L ← L + ½h·τ_new.
@@ -163,8 +163,9 @@ void driftByVelocityChange(SolverWorkspace& workspace, Real h, IntegratorKind in
 /// have moved it, then by h·Δv as above, and turns once from the substep's start, by h·ω with the
 /// solved ω (or the kicked one, if the constraints left it as it was). Writes
 /// SolverWorkspace::centres and SolverWorkspace::orientations; the objects are not touched.
-/// Works on records [@p first, @p end).
-void driftRecordsByVelocityChange(SolverWorkspace& workspace, std::size_t first, std::size_t end, Real h);
+/// @return The finite probe (zeroIfFinite()) of every record's solved velocities and of the
+/// pose it wrote: zero exactly when all are finite.
+Real driftRecordsByVelocityChange(SolverWorkspace& workspace, Real h);
 
 /// @brief Stage 3: moves kinematic bodies along their prescribed constant velocities.
 void moveKinematics(std::span<KinematicsObject> bodies, Real h);

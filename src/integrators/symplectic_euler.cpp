@@ -59,9 +59,9 @@ void integrateSymplecticEuler(std::span<DynamicObject> bodies, Real h) {
     }
 }
 
-void integrateSymplecticEulerOnRecords(SolverWorkspace& workspace, std::size_t first, std::size_t end, Real h,
-                                       bool canTurn, bool firstSubstep) {
-    for (std::size_t i = first; i < end; ++i) {
+Real integrateSymplecticEulerOnRecords(SolverWorkspace& workspace, Real h, bool canTurn, bool firstSubstep) {
+    Real probe = 0;
+    for (std::size_t i = 1; i < workspace.bodies.size(); ++i) {
         SolverBody& record = workspace.bodies[i];
         BodyVelocity& start = workspace.substepStart[i];
         const FreeFlight& flight = workspace.freeFlight[i];
@@ -75,9 +75,13 @@ void integrateSymplecticEulerOnRecords(SolverWorkspace& workspace, std::size_t f
         const bool skipsTurn = !canTurn && momentum == Vec3(0) && angularVelocity == Vec3(0) && flight.torque == Vec3(0);
         if (!skipsTurn) angularVelocity = record.inverseInertia * (momentum + h * flight.torque);  // ω = (L + h·τ)/I
         start = {velocity, angularVelocity};  // free flight's velocities: what the drift measures Δv from
-        record.velocity = firstSubstep ? velocity : velocity + change;
-        record.angularVelocity = firstSubstep ? angularVelocity : angularVelocity + turn;
+        const Vec3 warmVelocity = firstSubstep ? velocity : velocity + change;
+        const Vec3 warmAngularVelocity = firstSubstep ? angularVelocity : angularVelocity + turn;
+        record.velocity = warmVelocity;
+        record.angularVelocity = warmAngularVelocity;
+        probe += zeroIfFinite(warmVelocity) + zeroIfFinite(warmAngularVelocity);  // while still in registers
     }
+    return probe;
 }
 
 }  // namespace stepwise

@@ -94,8 +94,9 @@ void driftByVelocityChange(SolverWorkspace& workspace, Real h, IntegratorKind in
 
 namespace {
 
-/// Record @p i's drift on the packed substeps, one ball (driftFourRecords() does four at once).
-void driftOneRecord(SolverWorkspace& workspace, std::size_t i, Real h) {
+/// Record @p i's drift on the packed substeps, one ball (driftFourRecords() does four at once);
+/// returns the finite probe of its velocities and new pose.
+Real driftOneRecord(SolverWorkspace& workspace, std::size_t i, Real h) {
     // Symplectic Euler moved with the new velocity (s = 1): no (1 − s)·h²·a term, as above.
     const SolverBody& record = workspace.bodies[i];
     const BodyVelocity& kicked = workspace.substepStart[i];  // as the kick left them
@@ -109,6 +110,8 @@ void driftOneRecord(SolverWorkspace& workspace, std::size_t i, Real h) {
     // One exact turn from the substep's start, by the new ω, or by free flight's if the constraints left it
     orientation = rotateByAngularVelocity(orientation, turn != Vec3(0) ? record.angularVelocity : kicked.angularVelocity, h);
     centre = position;  // where the relax passes measure the separations
+    return zeroIfFinite(record.velocity) + zeroIfFinite(record.angularVelocity) + zeroIfFinite(centre) +
+           zeroIfFinite(orientation);
 }
 
 /// A Vec3Lanes lane by lane: all bits set where any component differs from zero (a NaN does).
@@ -124,9 +127,16 @@ static_assert(sizeof(SolverCentre) == sizeof(Lanes), "a centre is [x y z, a Real
 static_assert(sizeof(Quat) == sizeof(Lanes) && offsetof(Quat, x) == 0 && offsetof(Quat, w) == 3 * sizeof(Real),
               "a quaternion is stored [x y z w] (glm's default)");
 
+/// The finite probe of four vectors, lane by lane (zeroIfFinite(), core/types.hpp).
+STEPWISE_LANES_INLINE Lanes zeroIfFinite(const Vec3Lanes& v) {
+    const Lanes zero = splat(0);
+    return v.x * zero + v.y * zero + v.z * zero;
+}
+
 /// driftOneRecord() on records @p first … @p first + 3, in lanes: the same lines, the same bits
-/// (the turn is rotation_lanes.hpp's; a lane it does not cover takes the scalar turn).
-STEPWISE_LANES_INLINE void driftFourRecords(SolverWorkspace& workspace, std::size_t first, Real h) {
+/// (the turn is rotation_lanes.hpp's; a lane it does not cover takes the scalar turn). Adds the
+/// four records' finite probes to @p probe.
+STEPWISE_LANES_INLINE void driftFourRecords(SolverWorkspace& workspace, std::size_t first, Real h, Lanes& probe) {
     Lanes record[2][kLanes];   // [v_x v_y v_z ω_x], [ω_y ω_z m⁻¹ I⁻¹]
     Lanes kicked[2][kLanes];   // [v_x v_y v_z ω_x], [v_z ω_x ω_y ω_z]
     Lanes centreRows[kLanes];  // [x y z pad]
@@ -174,6 +184,9 @@ STEPWISE_LANES_INLINE void driftFourRecords(SolverWorkspace& workspace, std::siz
     centreRows[1] = select(pushed, pushedTo.y, freeFlight.y);
     centreRows[2] = select(pushed, pushedTo.z, freeFlight.z);
     const QuatLanes& q = turnedTo.orientation;
+    const Vec3Lanes centreTo{centreRows[0], centreRows[1], centreRows[2]};
+    probe += zeroIfFinite(velocity) + zeroIfFinite(spin) + zeroIfFinite(centreTo) +
+             zeroIfFinite(Vec3Lanes{q.x, q.y, q.z}) + q.w * splat(0);
     turnRows[0] = q.x;
     turnRows[1] = q.y;
     turnRows[2] = q.z;
@@ -190,11 +203,17 @@ STEPWISE_LANES_INLINE void driftFourRecords(SolverWorkspace& workspace, std::siz
 }  // namespace
 
 // Four records at a time, then one at a time; compiled for AVX-512, AVX2 and any x86-64 (core/lanes.hpp).
+// The probes are summed as the numbers are written: reading a 64k rain's records again for
+// them cost 4 % of the 1k rain's step (bench/solver_performance.md, thirteenth round).
 STEPWISE_LANES_COPIES
-void driftRecordsByVelocityChange(SolverWorkspace& workspace, std::size_t first, std::size_t end, Real h) {
-    std::size_t i = first;
-    for (; i + kLanes <= end; i += kLanes) driftFourRecords(workspace, i, h);
-    for (; i < end; ++i) driftOneRecord(workspace, i, h);
+Real driftRecordsByVelocityChange(SolverWorkspace& workspace, Real h) {
+    const std::size_t end = workspace.bodies.size();
+    Lanes probes = splat(0);
+    std::size_t i = 1;  // record 0 is the static one
+    for (; i + kLanes <= end; i += kLanes) driftFourRecords(workspace, i, h, probes);
+    Real probe = (probes[0] + probes[1]) + (probes[2] + probes[3]);
+    for (; i < end; ++i) probe += driftOneRecord(workspace, i, h);
+    return probe;
 }
 
 }  // namespace stepwise

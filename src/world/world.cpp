@@ -6,7 +6,6 @@
 #include <chrono>
 #include <cmath>
 #include <functional>
-#include <limits>
 #include <stdexcept>
 
 #include "collision/narrowphase.hpp"
@@ -61,11 +60,6 @@ unsigned statePartsWrittenBy(Stage stage, IntegratorKind integrator) {
 /// 400 bytes are 12.8 kB, well inside a 32 kB L1 data cache.
 constexpr std::size_t kIntegrateBlock = 32;
 
-/// x·0 is 0 for a finite x and NaN for ±∞ or NaN, and a sum of zeros cannot overflow.
-Real zeroIfFinite(const Vec3& v) { return v.x * Real(0) + v.y * Real(0) + v.z * Real(0); }
-/// The same for the four components of a quaternion.
-Real zeroIfFinite(const Quat& q) { return q.w * Real(0) + q.x * Real(0) + q.y * Real(0) + q.z * Real(0); }
-
 /// Zero exactly when the @p parts of the body's state are finite. checkFinite()
 /// runs after every stage, several times per substep, so it first takes this
 /// branch-free sum and searches component by component only when it fails.
@@ -79,9 +73,6 @@ Real finiteProbe(const DynamicObject& body, unsigned parts) {
     return probe;
 }
 
-/// "Up to the last record", for a range of records.
-constexpr std::size_t kAllRecords = std::numeric_limits<std::size_t>::max();
-
 /// The same probe over the contact solver's packed copies: each record's v and
 /// ω, and (with kPose in @p parts) the pose the drift recorded for its body.
 /// After the solve and relax stages these are the numbers just written to the
@@ -92,10 +83,9 @@ constexpr std::size_t kAllRecords = std::numeric_limits<std::size_t>::max();
 /// overflowed.)
 /// On the packed substeps (@p packed) the poses are the records' own centres and
 /// orientations (World::substepOnRecords()).
-Real finiteProbe(const SolverWorkspace& workspace, unsigned parts, bool packed, std::size_t first = 1,
-                 std::size_t end = kAllRecords) {
+Real finiteProbe(const SolverWorkspace& workspace, unsigned parts, bool packed) {
     Real probe = 0;
-    for (std::size_t i = first; i < std::min(end, workspace.bodies.size()); ++i) {
+    for (std::size_t i = 1; i < workspace.bodies.size(); ++i) {
         const SolverBody& record = workspace.bodies[i];
         probe += zeroIfFinite(record.velocity) + zeroIfFinite(record.angularVelocity);
         if ((parts & kPose) && packed) {
@@ -262,21 +252,6 @@ void World::integrate(Real h, const AccelerationFunction& forces) {
             integrateSymplecticEuler(block, h);
         }
     });
-}
-
-/// Runs @p pass over the solver's records in blocks of kIntegrateBlock, probing
-/// each block's @p parts for non-finite numbers straight after, while it is
-/// still in cache (as inProbedObjectRuns() does over the objects); true when all were finite.
-template <class RecordPass>
-bool World::inProbedRecordBlocks(unsigned parts, RecordPass&& pass) {
-    const std::size_t count = solverWorkspace_.bodies.size();
-    Real probe = 0;
-    for (std::size_t first = 1; first < count; first += kIntegrateBlock) {
-        const std::size_t end = std::min(count, first + kIntegrateBlock);
-        pass(first, end);
-        probe += finiteProbe(solverWorkspace_, parts, true, first, end);
-    }
-    return probe == Real(0);
 }
 
 /// Symplectic Euler for h over the bodies without a solver record, in runs
@@ -506,9 +481,7 @@ void World::substepOnRecords(Real hs, const ContactSolverSettings& contactSettin
         substep_ = substep;  // for the observer's StageEvent
         // 5. Free flight: the kick on the records, whole flight for the bodies without one
         runStage(Stage::Integrate, [&] {
-            recordsFinite_ = inProbedRecordBlocks(kMotion, [&](std::size_t first, std::size_t end) {
-                integrateSymplecticEulerOnRecords(records, first, end, hs, plan_.rotation.runs, substep == 0);
-            });
+            recordsFinite_ = integrateSymplecticEulerOnRecords(records, hs, plan_.rotation.runs, substep == 0) == Real(0);
             integrateBodiesWithoutRecord(hs);
         });
         runStage(Stage::MoveKinematics, [&] { moveKinematics(kinematics_, hs); });
@@ -519,9 +492,7 @@ void World::substepOnRecords(Real hs, const ContactSolverSettings& contactSettin
             if (substep == 0) warmStartContacts(records, settings_.accumulateImpulses);
             for (int pass = 0; pass < settings_.velocityIterations; ++pass) solveContacts(records, contactSettings, true);
             // The probe after the drift sees the passes' velocities too: the drift does not change them
-            recordsFinite_ = inProbedRecordBlocks(kPose | kMotion, [&](std::size_t first, std::size_t end) {
-                driftRecordsByVelocityChange(records, first, end, hs);
-            });
+            recordsFinite_ = driftRecordsByVelocityChange(records, hs) == Real(0);
         });
 
         // 7. Relax; after the last one the objects get their balls' state back
@@ -595,9 +566,9 @@ void World::checkFinite(Stage stage) const {
     // until the last relax (substepOnRecords()): the records are probed (the kick writes only their v
     // and ω), and a record names its object. The other bodies are objects, probed as they flew.
     const bool onRecords = substepsOnRecords_ && substep_ >= 0;
-    // The kick and the drift probed each block of records as they wrote it (inProbedRecordBlocks()).
-    const bool probedInBlocks = recordsFinite_ && (stage == Stage::Integrate || stage == Stage::SolveConstraints);
-    if (onRecords && parts != 0 && (solverStage || stage == Stage::Integrate) && !probedInBlocks) {
+    // The kick and the drift probed the records as they wrote them (their return values, substepOnRecords()).
+    const bool probedAsWritten = recordsFinite_ && (stage == Stage::Integrate || stage == Stage::SolveConstraints);
+    if (onRecords && parts != 0 && (solverStage || stage == Stage::Integrate) && !probedAsWritten) {
         const SolverWorkspace& w = solverWorkspace_;
         const unsigned recordParts = stage == Stage::Integrate ? unsigned(kMotion) : parts;
         if (finiteProbe(w, recordParts, true) != Real(0)) {

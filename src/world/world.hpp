@@ -124,8 +124,6 @@ private:
     void integrateBodiesWithoutRecord(Real h);
     template <class Picks, class Move>
     bool inProbedObjectRuns(Picks&& picks, Move&& move);
-    template <class RecordPass>
-    bool inProbedRecordBlocks(unsigned parts, RecordPass&& pass);
     BodySet bodies();
 
     WorldSettings settings_;
@@ -161,7 +159,7 @@ private:
     /// This step's substeps run on the solver's packed records (substepOnRecords()): until the
     /// last relax, the balls with a record are current there, not in their objects.
     bool substepsOnRecords_ = false;
-    /// The last packed kick or drift found every number it wrote finite, block by block (inProbedRecordBlocks()).
+    /// The last packed kick or drift found every number it wrote finite, as it wrote them (substepOnRecords()).
     bool recordsFinite_ = false;
     Real time_ = 0;
     std::uint64_t stepCount_ = 0;
