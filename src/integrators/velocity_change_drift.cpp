@@ -94,7 +94,7 @@ void driftByVelocityChange(SolverWorkspace& workspace, Real h, IntegratorKind in
 
 namespace {
 
-/// Record @p i's drift on the packed substeps, one ball (driftFourRecords() does four at once);
+/// Record @p i's drift on the packed substeps, one ball (turnFourRecords() and storeFourRecords() do four at once);
 /// returns the finite probe of its velocities and new pose.
 Real driftOneRecord(SolverWorkspace& workspace, std::size_t i, Real h) {
     // Symplectic Euler moved with the new velocity (s = 1): no (1 − s)·h²·a term, as above.
@@ -133,10 +133,19 @@ STEPWISE_LANES_INLINE Lanes zeroIfFinite(const Vec3Lanes& v) {
     return v.x * zero + v.y * zero + v.z * zero;
 }
 
-/// driftOneRecord() on records @p first … @p first + 3, in lanes: the same lines, the same bits
-/// (the turn is rotation_lanes.hpp's; a lane it does not cover takes the scalar turn). Adds the
-/// four records' finite probes to @p probe.
-STEPWISE_LANES_INLINE void driftFourRecords(SolverWorkspace& workspace, std::size_t first, Real h, Lanes& probe) {
+/// Four records' drift in lanes, between turnFourRecords() and storeFourRecords().
+struct FourRecordDrift {
+    Vec3Lanes velocity;      ///< The solved v, m/s.
+    Vec3Lanes spin;          ///< The solved ω, rad/s.
+    Vec3Lanes turnBy;        ///< The ω each ball turns by, rad/s.
+    Vec3Lanes centre;        ///< Where each ball moves to, m.
+    Lanes centrePad;         ///< The centres' fourth Real, stored back as it was.
+    TurnLanes turned;        ///< The turn, and the lanes that need the scalar one.
+};
+
+/// driftOneRecord() on records @p first … @p first + 3, in lanes, up to the turn: the same
+/// lines, the same bits (the turn is rotation_lanes.hpp's).
+STEPWISE_LANES_INLINE FourRecordDrift turnFourRecords(const SolverWorkspace& workspace, std::size_t first, Real h) {
     Lanes record[2][kLanes];   // [v_x v_y v_z ω_x], [ω_y ω_z m⁻¹ I⁻¹]
     Lanes kicked[2][kLanes];   // [v_x v_y v_z ω_x], [v_z ω_x ω_y ω_z]
     Lanes centreRows[kLanes];  // [x y z pad]
@@ -153,8 +162,9 @@ STEPWISE_LANES_INLINE void driftFourRecords(SolverWorkspace& workspace, std::siz
     for (auto* rows : {record[0], record[1], kicked[0], kicked[1], centreRows, turnRows}) {
         transpose(rows[0], rows[1], rows[2], rows[3]);
     }
-    const Vec3Lanes velocity{record[0][0], record[0][1], record[0][2]};
-    const Vec3Lanes spin{record[0][3], record[1][0], record[1][1]};
+    FourRecordDrift drift;
+    drift.velocity = {record[0][0], record[0][1], record[0][2]};
+    drift.spin = {record[0][3], record[1][0], record[1][1]};
     const Vec3Lanes kickedVelocity{kicked[0][0], kicked[0][1], kicked[0][2]};
     const Vec3Lanes kickedSpin{kicked[1][1], kicked[1][2], kicked[1][3]};
     const Vec3Lanes centre{centreRows[0], centreRows[1], centreRows[2]};
@@ -162,35 +172,40 @@ STEPWISE_LANES_INLINE void driftFourRecords(SolverWorkspace& workspace, std::siz
 
     const Lanes hs = splat(h);
     const Vec3Lanes freeFlight = centre + hs * kickedVelocity;
-    const Vec3Lanes change = velocity - kickedVelocity;
-    const Vec3Lanes turn = spin - kickedSpin;
+    const Vec3Lanes change = drift.velocity - kickedVelocity;
+    const Vec3Lanes turn = drift.spin - kickedSpin;
     const auto pushed = nonZero(change) | nonZero(turn);
     const Vec3Lanes pushedTo = freeFlight + hs * change;
+    drift.centre = {select(pushed, pushedTo.x, freeFlight.x), select(pushed, pushedTo.y, freeFlight.y),
+                    select(pushed, pushedTo.z, freeFlight.z)};
+    drift.centrePad = centreRows[3];
     const auto turned = nonZero(turn);
-    const Vec3Lanes turnBy{select(turned, spin.x, kickedSpin.x), select(turned, spin.y, kickedSpin.y),
-                           select(turned, spin.z, kickedSpin.z)};
-    TurnLanes turnedTo = rotateByAngularVelocity(orientation, turnBy, h);
-    for (int lane = 0; lane < kLanes; ++lane) {
-        if (!turnedTo.needsScalar[lane]) continue;
-        const std::size_t i = first + static_cast<std::size_t>(lane);
-        const Quat q = rotateByAngularVelocity(workspace.orientations[i], Vec3(turnBy.x[lane], turnBy.y[lane], turnBy.z[lane]), h);
-        turnedTo.orientation.w[lane] = q.w;
-        turnedTo.orientation.x[lane] = q.x;
-        turnedTo.orientation.y[lane] = q.y;
-        turnedTo.orientation.z[lane] = q.z;
-    }
+    drift.turnBy = {select(turned, drift.spin.x, kickedSpin.x), select(turned, drift.spin.y, kickedSpin.y),
+                    select(turned, drift.spin.z, kickedSpin.z)};
+    drift.turned = rotateByAngularVelocity(orientation, drift.turnBy, h);
+    return drift;
+}
 
-    centreRows[0] = select(pushed, pushedTo.x, freeFlight.x);
-    centreRows[1] = select(pushed, pushedTo.y, freeFlight.y);
-    centreRows[2] = select(pushed, pushedTo.z, freeFlight.z);
-    const QuatLanes& q = turnedTo.orientation;
-    const Vec3Lanes centreTo{centreRows[0], centreRows[1], centreRows[2]};
-    probe += zeroIfFinite(velocity) + zeroIfFinite(spin) + zeroIfFinite(centreTo) +
+/// The rest of driftOneRecord() on records @p first … @p first + 3: a lane the series does
+/// not cover takes the scalar turn; then the new centres and orientations are stored, and the
+/// four records' finite probes added to @p probe.
+STEPWISE_LANES_INLINE void storeFourRecords(SolverWorkspace& workspace, std::size_t first, Real h, FourRecordDrift& drift,
+                                            Lanes& probe) {
+    QuatLanes& q = drift.turned.orientation;
+    for (int lane = 0; lane < kLanes; ++lane) {
+        if (!drift.turned.needsScalar[lane]) continue;
+        const std::size_t i = first + static_cast<std::size_t>(lane);
+        const Vec3 turnBy(drift.turnBy.x[lane], drift.turnBy.y[lane], drift.turnBy.z[lane]);
+        const Quat scalar = rotateByAngularVelocity(workspace.orientations[i], turnBy, h);
+        q.w[lane] = scalar.w;
+        q.x[lane] = scalar.x;
+        q.y[lane] = scalar.y;
+        q.z[lane] = scalar.z;
+    }
+    probe += zeroIfFinite(drift.velocity) + zeroIfFinite(drift.spin) + zeroIfFinite(drift.centre) +
              zeroIfFinite(Vec3Lanes{q.x, q.y, q.z}) + q.w * splat(0);
-    turnRows[0] = q.x;
-    turnRows[1] = q.y;
-    turnRows[2] = q.z;
-    turnRows[3] = q.w;
+    Lanes centreRows[kLanes] = {drift.centre.x, drift.centre.y, drift.centre.z, drift.centrePad};
+    Lanes turnRows[kLanes] = {q.x, q.y, q.z, q.w};
     transpose(centreRows[0], centreRows[1], centreRows[2], centreRows[3]);
     transpose(turnRows[0], turnRows[1], turnRows[2], turnRows[3]);
     for (int lane = 0; lane < kLanes; ++lane) {
@@ -202,15 +217,27 @@ STEPWISE_LANES_INLINE void driftFourRecords(SolverWorkspace& workspace, std::siz
 
 }  // namespace
 
-// Four records at a time, then one at a time; compiled for AVX-512, AVX2 and any x86-64 (core/lanes.hpp).
-// The probes are summed as the numbers are written: reading a 64k rain's records again for
-// them cost 4 % of the 1k rain's step (bench/solver_performance.md, thirteenth round).
+// Eight records at a time, then four, then one; compiled for AVX-512, AVX2 and any x86-64
+// (core/lanes.hpp). The turn is a chain of some forty operations, each waiting for the last
+// (the series, the product, the Newton step): two groups of four are turned before either is
+// stored, so that their chains run side by side (the 1k rain's solve stage, which holds the
+// drift, −5 %; bench/solver_performance.md, thirteenth round). The probes are summed as the
+// numbers are written: reading the records again for them cost 4 % of the 1k rain's step.
 STEPWISE_LANES_COPIES
 Real driftRecordsByVelocityChange(SolverWorkspace& workspace, Real h) {
     const std::size_t end = workspace.bodies.size();
     Lanes probes = splat(0);
     std::size_t i = 1;  // record 0 is the static one
-    for (; i + kLanes <= end; i += kLanes) driftFourRecords(workspace, i, h, probes);
+    for (; i + 2 * kLanes <= end; i += 2 * kLanes) {
+        FourRecordDrift low = turnFourRecords(workspace, i, h);
+        FourRecordDrift high = turnFourRecords(workspace, i + kLanes, h);
+        storeFourRecords(workspace, i, h, low, probes);
+        storeFourRecords(workspace, i + kLanes, h, high, probes);
+    }
+    for (; i + kLanes <= end; i += kLanes) {
+        FourRecordDrift drift = turnFourRecords(workspace, i, h);
+        storeFourRecords(workspace, i, h, drift, probes);
+    }
     Real probe = (probes[0] + probes[1]) + (probes[2] + probes[3]);
     for (; i < end; ++i) probe += driftOneRecord(workspace, i, h);
     return probe;
