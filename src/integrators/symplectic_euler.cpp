@@ -39,6 +39,7 @@
 /// Reference: Hairer, Lubich & Wanner, *Geometric Numerical Integration*, §I.1.2
 /// and §VII.5; Millington, *Game Physics Engine Development*, §3.3;
 /// Dullweber, Leimkuhler & McLachlan, J. Chem. Phys. 107 (1997) 5840.
+#include "core/lanes.hpp"
 #include "dynamics/contact_solver.hpp"
 #include "dynamics/inertia.hpp"
 #include "integrators/integrators.hpp"
@@ -59,6 +60,10 @@ void integrateSymplecticEuler(std::span<DynamicObject> bodies, Real h) {
     }
 }
 
+// Compiled three times like the lanes (core/lanes.hpp): not for SIMD, but for the AVX
+// encoding's three-operand instructions, which spare this short loop its sixteen register
+// copies (the settled 1k rain's integrate stage −6 %, bench/solver_performance.md, thirteenth round).
+STEPWISE_LANES_COPIES
 Real integrateSymplecticEulerOnRecords(SolverWorkspace& workspace, Real h, bool canTurn, bool firstSubstep) {
     Real probe = 0;
     for (std::size_t i = 1; i < workspace.bodies.size(); ++i) {
