@@ -113,7 +113,8 @@ SolverContact prepareOne(const BodySet& bodies, const Contact& contact, Real h, 
     start = ContactStart{};
     start.indexA = contact.a;
     start.refB = contact.b;
-    start.rA = contact.point - a.position;
+    const Vec3 rA = contact.point - a.position;  // read below from here, not from `start` (see offsetB)
+    start.rA = rA;
     start.startPoint = contact.point;
     start.startSeparation = -contact.depth;
     c.normal = contact.normal;
@@ -144,7 +145,7 @@ SolverContact prepareOne(const BodySet& bodies, const Contact& contact, Real h, 
     const Vec3 offsetB = contact.point - centreB;
     if (contact.b.kind != BodyKind::Plane) start.rB = offsetB;
     c.separationOffset = start.startSeparation + (turnsB ? Real(0) : glm::dot(offsetB, c.normal)) -
-                         (turnsA ? Real(0) : glm::dot(start.rA, c.normal));
+                         (turnsA ? Real(0) : glm::dot(rA, c.normal));
     if (turnsA || turnsB) {
         TurningAnchors anchors;
         if (turnsA) anchors.localA = glm::conjugate(a.orientation) * start.rA;
@@ -159,8 +160,10 @@ SolverContact prepareOne(const BodySet& bodies, const Contact& contact, Real h, 
     // J's angular parts and K, once per step: r, d and I⁻¹ are fixed through it (solver_body.hpp).
     // A ball on a ball or a plane (no anchor turns, no surface moves): levers along n, rows computed by the pass.
     if (!turnsA && !turnsB && contact.b.kind != BodyKind::Kinematic) {
-        c.leverA = glm::dot(start.rA, c.normal);
-        c.leverB = glm::dot(start.rB, c.normal);
+        // The levers from the local vectors: read back from `start`, a 16-byte load of a vector
+        // just written as 8-byte stores waits for them (the processor cannot forward it).
+        c.leverA = glm::dot(rA, c.normal);
+        c.leverB = contact.b.kind != BodyKind::Plane ? glm::dot(offsetB, c.normal) : Real(0);
         c.normalMass = Real(1) / (bodyA.inverseMass + bodyB.inverseMass);
         c.tangentMass[0] = c.tangentMass[1] = Real(1) / roundTangentInverseMass(bodyA, bodyB, c.leverA, c.leverB);
     } else {
