@@ -229,15 +229,14 @@ namespace {
 
 /// What a pass's formulas take from the settings, as Lanes, once per pass.
 struct PassConstants {
-    bool pushOut = false;     ///< The soft bias pushes overlapping bodies apart (solve, not relax).
     bool accumulate = true;   ///< ContactSolverSettings::accumulate.
     Lanes zero{};
     Lanes one{};
     Lanes inverseSubstep{};   ///< 1/h_s, 1/s.
     Lanes biasRate{};         ///< softness.hpp, 1/s.
     Lanes slowestPushOut{};   ///< −kMaxPushOutSpeed, m/s.
-    Lanes softMassScale{};    ///< s_m where bodies overlap (1 without the push).
-    Lanes softImpulseScale{}; ///< s_i where bodies overlap (0 without the push).
+    Lanes softMassScale{};    ///< s_m where bodies overlap (softness.hpp; the pass without the push uses 1).
+    Lanes softImpulseScale{}; ///< s_i where bodies overlap (the pass without the push uses 0).
 };
 
 /// Batches of one wave solved side by side (solveBatches()): the most the
@@ -256,7 +255,7 @@ constexpr std::size_t kBatchesSideBySide = 3;
 /// rain −7 % against one at a time; two gained 2 %, four lost to spilled registers
 /// (bench/solver_performance.md, thirteenth round). The numbers are each batch's own,
 /// so the bits are the same whatever N.
-template <std::size_t N>
+template <std::size_t N, bool PushOut>
 STEPWISE_LANES_INLINE void solveBatches(RoundBatch* batches, SolverWorkspace& workspace, const PassConstants& k,
                                         SolverBody& discard) {
     BodyLanes a[N];
@@ -270,15 +269,20 @@ STEPWISE_LANES_INLINE void solveBatches(RoundBatch* batches, SolverWorkspace& wo
             dot(gatherCentres(workspace.centres, batch.bodyB) - gatherCentres(workspace.centres, batch.bodyA), n) +
             batch.separationOffset;
         const auto gap = separation > k.zero;
-        const Lanes softBias = k.pushOut ? maxLanes(k.biasRate * separation, k.slowestPushOut) : k.zero;
-        const Lanes bias = select(gap, separation * k.inverseSubstep, softBias);
-        const Lanes massScale = select(gap, k.one, k.softMassScale);
-        const Lanes impulseScale = select(gap, k.zero, k.softImpulseScale);
+        const Lanes gapBias = separation * k.inverseSubstep;
 
         a[j] = gather(workspace.bodies, batch.bodyA);
         b[j] = gather(workspace.bodies, batch.bodyB);
         const Lanes vn = dot(b[j].velocity - a[j].velocity, n);
-        const Lanes impulse = -batch.normalMass * massScale * (vn + bias) - impulseScale * batch.normalImpulse;
+        Lanes impulse;
+        if constexpr (PushOut) {
+            const Lanes bias = select(gap, gapBias, maxLanes(k.biasRate * separation, k.slowestPushOut));
+            const Lanes massScale = select(gap, k.one, k.softMassScale);
+            const Lanes impulseScale = select(gap, k.zero, k.softImpulseScale);
+            impulse = -batch.normalMass * massScale * (vn + bias) - impulseScale * batch.normalImpulse;
+        } else {  // no push: s_m = 1, s_i = 0, and an overlap has no bias
+            impulse = -batch.normalMass * (vn + select(gap, gapBias, k.zero));
+        }
         if (k.accumulate) {
             const Lanes total = maxLanes(batch.normalImpulse + impulse, k.zero);
             applied[j] = total - batch.normalImpulse;
@@ -326,22 +330,11 @@ STEPWISE_LANES_INLINE void solveBatches(RoundBatch* batches, SolverWorkspace& wo
     }
 }
 
-}  // namespace
-
-// Wave by wave, up to kBatchesSideBySide batches of a wave at a time. Compiled three times
-// (STEPWISE_LANES_COPIES, core/lanes.hpp): AVX-512, AVX2 and any x86-64, the same numbers.
-STEPWISE_LANES_COPIES
-void solveRoundContacts(SolverWorkspace& workspace, const ContactSolverSettings& settings, bool useBias) {
-    PassConstants k;
-    k.pushOut = useBias && settings.positionCorrection;
-    k.accumulate = settings.accumulate;
-    k.zero = splat(0);
-    k.one = splat(1);
-    k.inverseSubstep = splat(Real(1) / settings.substep);
-    k.biasRate = splat(settings.softness.biasRate);
-    k.slowestPushOut = splat(-kMaxPushOutSpeed);
-    k.softMassScale = splat(k.pushOut ? settings.softness.massScale : Real(1));
-    k.softImpulseScale = splat(k.pushOut ? settings.softness.impulseScale : Real(0));
+/// One pass: wave by wave, up to kBatchesSideBySide batches of a wave at a time. With
+/// @p PushOut a template argument, the relax pass (no push) is compiled without the soft
+/// bias's selects and scales, which are 1 and 0 there (−3 % at 1k, the same bits).
+template <bool PushOut>
+STEPWISE_LANES_INLINE void solveWaves(SolverWorkspace& workspace, const PassConstants& k) {
     SolverBody discard;  // where the static record's lanes go (scatter())
     RoundBatch* const batches = workspace.roundBatches.data();
     const std::size_t count = workspace.roundBatches.size();
@@ -349,11 +342,29 @@ void solveRoundContacts(SolverWorkspace& workspace, const ContactSolverSettings&
         std::size_t run = 1;  // batches from `first` on in its wave, at most kBatchesSideBySide
         while (run < kBatchesSideBySide && first + run < count && batches[first + run].wave == batches[first].wave) ++run;
         static_assert(kBatchesSideBySide == 3, "one solveBatches<N> below for each N up to kBatchesSideBySide");
-        if (run == 3) solveBatches<3>(batches + first, workspace, k, discard);
-        else if (run == 2) solveBatches<2>(batches + first, workspace, k, discard);
-        else solveBatches<1>(batches + first, workspace, k, discard);
+        if (run == 3) solveBatches<3, PushOut>(batches + first, workspace, k, discard);
+        else if (run == 2) solveBatches<2, PushOut>(batches + first, workspace, k, discard);
+        else solveBatches<1, PushOut>(batches + first, workspace, k, discard);
         first += run;
     }
+}
+
+}  // namespace
+
+// Compiled three times (STEPWISE_LANES_COPIES, core/lanes.hpp): AVX-512, AVX2 and any x86-64, the same numbers.
+STEPWISE_LANES_COPIES
+void solveRoundContacts(SolverWorkspace& workspace, const ContactSolverSettings& settings, bool useBias) {
+    PassConstants k;
+    k.accumulate = settings.accumulate;
+    k.zero = splat(0);
+    k.one = splat(1);
+    k.inverseSubstep = splat(Real(1) / settings.substep);
+    k.biasRate = splat(settings.softness.biasRate);
+    k.slowestPushOut = splat(-kMaxPushOutSpeed);
+    k.softMassScale = splat(settings.softness.massScale);
+    k.softImpulseScale = splat(settings.softness.impulseScale);
+    if (useBias && settings.positionCorrection) solveWaves<true>(workspace, k);  // the soft bias pushes overlaps apart
+    else solveWaves<false>(workspace, k);
     workspace.roundBatchesAhead = true;
 }
 
