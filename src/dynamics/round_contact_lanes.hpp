@@ -21,8 +21,10 @@
 /// walking the contacts in their order. Two contacts of one wave never share
 /// a body, and for every body its contacts come in waves in their own order.
 /// A pass then solves wave after wave, four contacts of a wave at a time (a
-/// *batch*): each body meets its contacts in exactly the order the plain
-/// pass would, so the result is the plain pass's, bit for bit, only faster.
+/// *batch*), and up to three batches of a wave side by side (solveBatches()
+/// in round_contact_lanes.cpp): each body meets its contacts in exactly the
+/// order the plain pass would, so the result is the plain pass's, bit for
+/// bit, only faster.
 /// (This is list scheduling of the contacts' dependency graph. Colouring
 /// that graph, as Box2D v3 does, fills the batches with fewer, larger groups
 /// but changes the order, and with it how far one pass carries a pile's
