@@ -52,6 +52,8 @@ unsigned statePartsWrittenBy(Stage stage, IntegratorKind integrator) {
         case Stage::ResolveImpulses:
         case Stage::RelaxConstraints:
         case Stage::Restitution: return kMotion;
+        case Stage::Continuous: return kPose;  // positions moved back along their paths (continuous.cpp)
+        case Stage::Sleep: return 0;  // flags, a timer, and exact zeros for the velocities of a body that falls asleep
         default: return kEverything;  // the once-a-step stages
     }
 }
