@@ -113,7 +113,7 @@ SolverContact prepareOne(const BodySet& bodies, const Contact& contact, Real h, 
     start = ContactStart{};
     start.indexA = contact.a;
     start.refB = contact.b;
-    const Vec3 rA = contact.point - a.position;  // read below from here, not from `start` (see offsetB)
+    const Vec3 rA = contact.point - a.position;  // used below from here, not read back from `start` (see the levers)
     start.rA = rA;
     start.startPoint = contact.point;
     start.startSeparation = -contact.depth;
@@ -148,7 +148,7 @@ SolverContact prepareOne(const BodySet& bodies, const Contact& contact, Real h, 
                          (turnsA ? Real(0) : glm::dot(rA, c.normal));
     if (turnsA || turnsB) {
         TurningAnchors anchors;
-        if (turnsA) anchors.localA = glm::conjugate(a.orientation) * start.rA;
+        if (turnsA) anchors.localA = glm::conjugate(a.orientation) * rA;
         if (turnsB) anchors.localB = glm::conjugate(*orientationB) * offsetB;
         c.turningAnchors = static_cast<std::uint32_t>(w.turningAnchors.size());
         w.turningAnchors.push_back(anchors);
