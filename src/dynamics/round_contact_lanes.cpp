@@ -162,6 +162,9 @@ constexpr std::size_t kCacheLine = 64;
 /// read where it is first needed waits for memory.
 constexpr std::uint32_t kBatchingLookAhead = 8;
 
+/// The same for syncRoundContacts(), in batches of four contacts.
+constexpr std::size_t kSyncLookAhead = 2;
+
 }  // namespace
 
 void batchRoundContacts(SolverWorkspace& workspace) {
@@ -388,7 +391,17 @@ void solveRoundContacts(SolverWorkspace& workspace, const ContactSolverSettings&
 
 void syncRoundContacts(SolverWorkspace& workspace) {
     if (!workspace.roundBatchesAhead) return;
-    for (const RoundBatch& batch : workspace.roundBatches) {
+    const std::size_t count = workspace.roundBatches.size();
+    for (std::size_t b = 0; b < count; ++b) {
+        const RoundBatch& batch = workspace.roundBatches[b];
+        // The contacts again in wave order: their records asked for (to be written) a few batches ahead
+        if (b + kSyncLookAhead < count) {
+            for (const std::uint32_t index : workspace.roundBatches[b + kSyncLookAhead].contact) {
+                if (index == kEmptyLane) continue;
+                __builtin_prefetch(&workspace.contacts[index].normalImpulse, 1);
+                __builtin_prefetch(&workspace.contacts[index].maxNormalImpulse, 1);
+            }
+        }
         for (int lane = 0; lane < kLanes; ++lane) {
             if (batch.contact[lane] == kEmptyLane) continue;
             SolverContact& c = workspace.contacts[batch.contact[lane]];
