@@ -150,10 +150,6 @@ void setLane(RoundBatch& batch, int lane, std::uint32_t index, const SolverConta
     batch.maxNormalImpulse[lane] = c.maxNormalImpulse;
 }
 
-}  // namespace
-
-namespace {
-
 /// Bytes in a cache line (x86-64).
 constexpr std::size_t kCacheLine = 64;
 
