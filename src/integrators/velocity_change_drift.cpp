@@ -133,6 +133,12 @@ STEPWISE_LANES_INLINE Lanes zeroIfFinite(const Vec3Lanes& v) {
     return v.x * zero + v.y * zero + v.z * zero;
 }
 
+/// The same for four quaternions.
+STEPWISE_LANES_INLINE Lanes zeroIfFinite(const QuatLanes& q) {
+    const Lanes zero = splat(0);
+    return q.w * zero + q.x * zero + q.y * zero + q.z * zero;
+}
+
 /// Four records' drift in lanes, between turnFourRecords() and storeFourRecords().
 struct FourRecordDrift {
     Vec3Lanes velocity;      ///< The solved v, m/s.
@@ -203,7 +209,7 @@ STEPWISE_LANES_INLINE void storeFourRecords(SolverWorkspace& workspace, std::siz
         q.z[lane] = scalar.z;
     }
     probe += zeroIfFinite(drift.velocity) + zeroIfFinite(drift.spin) + zeroIfFinite(drift.centre) +
-             zeroIfFinite(Vec3Lanes{q.x, q.y, q.z}) + q.w * splat(0);
+             zeroIfFinite(q);
     Lanes centreRows[kLanes] = {drift.centre.x, drift.centre.y, drift.centre.z, drift.centrePad};
     Lanes turnRows[kLanes] = {q.x, q.y, q.z, q.w};
     transpose(centreRows[0], centreRows[1], centreRows[2], centreRows[3]);
