@@ -250,10 +250,12 @@ void prepareContacts(const BodySet& bodies, std::span<const Contact> contacts, s
     workspace.starts.resize(contacts.size());
     workspace.rows.clear();
     workspace.turningAnchors.clear();
+    startWaves(workspace);
     std::size_t nextCached = 0;  // the contacts come in key order, mostly: each lookup starts where the last ended
     for (std::size_t i = 0; i < contacts.size(); ++i) {
         SolverContact& c = workspace.contacts[i];
         c = prepareOne(bodies, contacts[i], h, workspace, workspace.starts[i]);
+        placeInWave(workspace, static_cast<std::uint32_t>(i));  // batchRoundContacts()'s first walk, while c is in the cache
         if (!warmStart) continue;
         if (const CachedImpulse* cached = findCachedImpulse(workspace.previousImpulses, keyOf(contacts[i]), nextCached)) {
             c.normalImpulse = cached->normalImpulse;
@@ -261,7 +263,7 @@ void prepareContacts(const BodySet& bodies, std::span<const Contact> contacts, s
             for (int k = 0; k < 2; ++k) c.tangentImpulse[k] = glm::dot(cached->frictionImpulse, c.tangent[k]);
         }
     }
-    batchRoundContacts(workspace);
+    packWaves(workspace);
 }
 
 void recordPoses(const BodySet& bodies, SolverWorkspace& workspace) {

@@ -210,10 +210,11 @@ struct SolverWorkspace {
     /// substeps their impulses live here; syncRoundContacts() copies them into `contacts`.
     std::vector<RoundBatch> roundBatches;
     std::vector<std::uint32_t> otherContacts;    ///< The contacts solved one at a time, in order, after the batches: those with stored rows.
-    std::vector<std::uint32_t> nextWave;         ///< Per record: the first wave its next contact may take (scratch of batchRoundContacts()).
+    std::vector<std::uint32_t> nextWave;         ///< Per record: the first wave its next contact may take (scratch of placeInWave()).
     std::vector<std::uint32_t> waveOf;           ///< Per contact: its wave (scratch).
     std::vector<std::uint32_t> waveStart;        ///< Per wave: where its contacts start in waveOrder (scratch).
     std::vector<std::uint32_t> waveOrder;        ///< The round contacts, wave by wave (scratch).
+    std::uint32_t waves = 0;                     ///< How many waves placeInWave() has opened (scratch).
     bool roundBatchesAhead = false;              ///< The batches hold newer impulses than `contacts` (syncRoundContacts()).
     /// Per record, on the packed substeps only (packRecords()): its ball's orientation, turned there.
     /// (Its centre is in `centres`, its v and ω in `bodies`.)

@@ -161,32 +161,44 @@ constexpr std::uint32_t kBatchingLookAhead = 8;
 /// The same for syncRoundContacts(), in batches of four contacts.
 constexpr std::size_t kSyncLookAhead = 2;
 
+/// SolverWorkspace::waveOf of a contact with stored rows: in no wave.
+constexpr std::uint32_t kNotRound = 0xffffffffu;
+
 }  // namespace
 
-void batchRoundContacts(SolverWorkspace& workspace) {
-    constexpr std::uint32_t kNotRound = 0xffffffffu;
+void startWaves(SolverWorkspace& workspace) {
     workspace.roundBatches.clear();
     workspace.otherContacts.clear();
     workspace.roundBatchesAhead = false;
     // Per record: the wave its next contact may take (one after its last contact's), 0 before any.
     workspace.nextWave.assign(workspace.bodies.size(), 0);
     workspace.waveOf.resize(workspace.contacts.size());
-    std::uint32_t waves = 0;
-    for (std::uint32_t i = 0; i < workspace.contacts.size(); ++i) {
-        const SolverContact& c = workspace.contacts[i];
-        if (c.rows != kRoundContact) {
-            workspace.waveOf[i] = kNotRound;
-            workspace.otherContacts.push_back(i);  // solved alone, after the batches
-            continue;
-        }
-        const bool bothDynamic = c.bodyB != kStaticSolverBody;  // nothing moves the static record: no wait
-        const std::uint32_t wave = std::max(workspace.nextWave[c.bodyA], bothDynamic ? workspace.nextWave[c.bodyB] : 0);
-        workspace.waveOf[i] = wave;
-        workspace.nextWave[c.bodyA] = wave + 1;
-        if (bothDynamic) workspace.nextWave[c.bodyB] = wave + 1;
-        waves = std::max(waves, wave + 1);
-    }
+    workspace.waves = 0;
+}
 
+void placeInWave(SolverWorkspace& workspace, std::uint32_t i) {
+    const SolverContact& c = workspace.contacts[i];
+    if (c.rows != kRoundContact) {
+        workspace.waveOf[i] = kNotRound;
+        workspace.otherContacts.push_back(i);  // solved alone, after the batches
+        return;
+    }
+    const bool bothDynamic = c.bodyB != kStaticSolverBody;  // nothing moves the static record: no wait
+    const std::uint32_t wave = std::max(workspace.nextWave[c.bodyA], bothDynamic ? workspace.nextWave[c.bodyB] : 0);
+    workspace.waveOf[i] = wave;
+    workspace.nextWave[c.bodyA] = wave + 1;
+    if (bothDynamic) workspace.nextWave[c.bodyB] = wave + 1;
+    workspace.waves = std::max(workspace.waves, wave + 1);
+}
+
+void batchRoundContacts(SolverWorkspace& workspace) {
+    startWaves(workspace);
+    for (std::uint32_t i = 0; i < workspace.contacts.size(); ++i) placeInWave(workspace, i);
+    packWaves(workspace);
+}
+
+void packWaves(SolverWorkspace& workspace) {
+    const std::uint32_t waves = workspace.waves;
     // Counting sort by wave (contact order kept within a wave): each wave's contacts, four to a batch.
     workspace.waveStart.assign(waves + 1, 0);
     for (const std::uint32_t wave : workspace.waveOf) {
