@@ -87,52 +87,64 @@ std::size_t updateSleep(const BodySet& bodies, std::span<const Contact> contacts
     const Real linear2 = settings.sleepLinearSpeed * settings.sleepLinearSpeed;
     const Real angular2 = settings.sleepAngularSpeed * settings.sleepAngularSpeed;
 
-    // 1. Still times: compare squared speeds, no square root per body.
-    for (DynamicObject& body : dynamics) {
-        if (body.asleep) continue;
-        const bool still = glm::dot(body.velocity, body.velocity) < linear2 &&
-                           glm::dot(body.angularVelocity, body.angularVelocity) < angular2;
-        body.stillTime = still ? body.stillTime + h : Real(0);
-    }
-    for (const Contact& contact : contacts) {  // carried by a moving platform is not still
-        if (isMovingKinematic(bodies, contact.b)) dynamics[contact.a].stillTime = 0;
-    }
-
-    // 2. Islands: union–find over dynamic–dynamic contacts and joints.
+    // 1. Islands: union–find over dynamic–dynamic contacts and joints. (First, so that the
+    //    bodies are walked once for 2, not once for their still times and again for their islands:
+    //    with 64k bodies each walk reads megabytes of objects for a few numbers of each.)
     workspace.parent.resize(n);
     for (std::uint32_t i = 0; i < n; ++i) workspace.parent[i] = i;
+    workspace.carried.clear();
     for (const Contact& contact : contacts) {
         if (contact.b.kind == BodyKind::Dynamic) join(workspace.parent, contact.a, contact.b.index);
+        else if (isMovingKinematic(bodies, contact.b)) workspace.carried.push_back(contact.a);
     }
     for (const BodyLink& link : links) {
         if (link.b != kWorldAnchor) join(workspace.parent, link.a, link.b);
     }
 
-    // 3. An island sleeps when its least still body has been still long enough.
+    // 2. Still times (squared speeds: no square root per body), and each island's least.
     workspace.islandStillTime.assign(n, std::numeric_limits<Real>::max());
-    for (std::uint32_t i = 0; i < n; ++i) {
-        if (dynamics[i].asleep) continue;
-        Real& least = workspace.islandStillTime[findRoot(workspace.parent, i)];
-        least = std::min(least, dynamics[i].stillTime);
-    }
     std::size_t asleep = 0;
-    bool fellAsleep = false;
     for (std::uint32_t i = 0; i < n; ++i) {
         DynamicObject& body = dynamics[i];
-        if (!body.asleep) {
-            const std::uint32_t root = findRoot(workspace.parent, i);
-            if (workspace.islandStillTime[root] >= settings.timeToSleep) {
-                body.asleep = true;
-                body.sleepIsland = workspace.nextSleepIsland + root;
-                body.velocity = Vec3(0);
-                body.angularVelocity = Vec3(0);
-                body.angularMomentum = Vec3(0);
-                fellAsleep = true;
-            }
+        if (body.asleep) {
+            ++asleep;
+            continue;
         }
-        if (body.asleep) ++asleep;
+        const bool still = glm::dot(body.velocity, body.velocity) < linear2 &&
+                           glm::dot(body.angularVelocity, body.angularVelocity) < angular2;
+        body.stillTime = still ? body.stillTime + h : Real(0);
+        Real& least = workspace.islandStillTime[findRoot(workspace.parent, i)];
+        least = std::min(least, body.stillTime);
     }
-    if (fellAsleep) workspace.nextSleepIsland += static_cast<std::uint32_t>(n);  // fresh ids for later islands
+    for (const std::uint32_t a : workspace.carried) {  // carried by a moving platform is not still
+        dynamics[a].stillTime = 0;
+        if (!dynamics[a].asleep) workspace.islandStillTime[findRoot(workspace.parent, a)] = 0;
+    }
+
+    // 3. An island sleeps when its least still body has been still long enough. Most steps no
+    //    island has (a pile with one body still rolling is one island, awake): then the bodies
+    //    are not walked again.
+    bool anyFallsAsleep = false;
+    for (std::uint32_t i = 0; i < n && !anyFallsAsleep; ++i) {
+        const Real least = workspace.islandStillTime[i];  // max() for a body that is not a root, or asleep
+        anyFallsAsleep = workspace.parent[i] == i && least >= settings.timeToSleep &&
+                         least != std::numeric_limits<Real>::max();
+    }
+    if (!anyFallsAsleep) return asleep;
+    for (std::uint32_t i = 0; i < n; ++i) {
+        DynamicObject& body = dynamics[i];
+        if (body.asleep) continue;
+        const std::uint32_t root = findRoot(workspace.parent, i);
+        if (workspace.islandStillTime[root] >= settings.timeToSleep) {
+            body.asleep = true;
+            body.sleepIsland = workspace.nextSleepIsland + root;
+            body.velocity = Vec3(0);
+            body.angularVelocity = Vec3(0);
+            body.angularMomentum = Vec3(0);
+            ++asleep;
+        }
+    }
+    workspace.nextSleepIsland += static_cast<std::uint32_t>(n);  // fresh ids for later islands
     return asleep;
 }
 

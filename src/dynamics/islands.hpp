@@ -47,6 +47,7 @@ struct BodyLink {
 struct IslandWorkspace {
     std::vector<std::uint32_t> parent;   ///< Union–find forest over dynamic bodies.
     std::vector<Real> islandStillTime;   ///< Per root: the least still time of its bodies, s.
+    std::vector<std::uint32_t> carried;  ///< Bodies resting on a moving kinematic body this step (never still).
     std::uint32_t nextSleepIsland = 1;   ///< Id for the next island that falls asleep (0 = never slept).
 };
 

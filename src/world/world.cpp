@@ -155,7 +155,11 @@ World::World(Scene scene)
 /// The step plan from what the World holds now (src/world/step_plan.cpp); it allocates nothing.
 void World::replan() {
     plan_ = makeStepPlan({settings_, dynamics_, kinematics_, planes_, springs_, attractors_, joints_});
-    for (DynamicObject& body : dynamics_) body.canTurn = plan_.rotation.runs;  // read by the integrators
+    asleep_ = 0;
+    for (DynamicObject& body : dynamics_) {
+        body.canTurn = plan_.rotation.runs;  // read by the integrators
+        if (body.asleep) ++asleep_;
+    }
     planStale_ = false;
 }
 
@@ -366,7 +370,7 @@ void World::stepWithSequentialImpulses() {
     //    (src/collision/broadphase.cpp → broadphase_*.cpp, src/dynamics/islands.cpp, src/dynamics/joints/joint.cpp)
     runStage(Stage::Broadphase, [&] {
         broadphase_.findPairs(settings_.broadphase, bodies(), pairs_);
-        dropSleepingPairs(bodies(), pairs_);
+        if (asleep_ > 0) dropSleepingPairs(bodies(), pairs_);
         // What a joint holds does not collide (joint.hpp)
         if (plan_.jointSolver.runs) dropJointedPairs(joints_, jointWorkspace_, pairs_);
     });
@@ -383,7 +387,7 @@ void World::stepWithSequentialImpulses() {
     //    (step_plan.hpp, "packed substeps"); an observer looks at the objects, so then they are not.
     substepsOnRecords_ = false;
     runStage(Stage::PrepareConstraints, [&] {
-        wakeTouchedIslands(bodies(), contacts_, links_);
+        if (asleep_ > 0) wakeTouchedIslands(bodies(), contacts_, links_);
         prepareContacts(bodies(), contacts_, links_, h, settings_.warmStarting, solverWorkspace_);
         if (plan_.jointSolver.runs) prepareJoints(bodies(), joints_, settings_.warmStarting, jointWorkspace_);
         substepsOnRecords_ = plan_.packedSubsteps.runs && observer_ == nullptr && packRecords(solverWorkspace_);
@@ -459,7 +463,7 @@ void World::stepWithSequentialImpulses() {
 
     // 9. Islands at rest fall asleep (src/dynamics/islands.cpp)
     if (settings_.sleeping) {
-        runStage(Stage::Sleep, [&] { updateSleep(bodies(), contacts_, links_, settings_, islandWorkspace_); });
+        runStage(Stage::Sleep, [&] { asleep_ = updateSleep(bodies(), contacts_, links_, settings_, islandWorkspace_); });
     }
 }
 

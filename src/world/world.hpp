@@ -146,6 +146,9 @@ private:
 
     StepPlan plan_;
     bool planStale_ = false;  ///< A body may have changed through dynamics() or kinematics(): replan before stepping.
+    /// Bodies asleep after the last sleep stage or replan(), or more (a body woken since still counts):
+    /// with none, no candidate pair is dropped and no island woken, so those walks are skipped.
+    std::size_t asleep_ = 0;
     std::unique_ptr<ThreadPool> threadPool_;  ///< Created once here; a pointer so that the World can be moved.
     NarrowphaseWorkspace narrowphaseWorkspace_;
     SweepWorkspace sweepWorkspace_;
