@@ -159,6 +159,59 @@ TEST_CASE("A sleeping tower wakes when a sphere hits it, and does not wake for a
     CHECK(world.dynamics()[9].velocity.x > 0);  // pushed the way the ball flew
 }
 
+TEST_CASE("A ball put to sleep through World::dynamics() costs no pair until a falling ball wakes it", "[sleep]") {
+    // The World counts its sleepers to skip the sleeper checks while there are none (World::asleep_);
+    // a body put to sleep by hand must be counted too, or its pair with the ground would be kept.
+    Scene scene = test::emptyScene();
+    scene.planes.push_back(test::ground());
+    scene.dynamics.push_back(test::sphere("sleeper", Vec3(0, 0.5, 0), Vec3(0), 0.5, 1, 0));
+    scene.dynamics.push_back(test::sphere("dropper", Vec3(0, 5, 0), Vec3(0), 0.5, 1, 0));
+    World world(scene);
+    world.dynamics()[0].asleep = true;
+    world.step();
+    CHECK(world.candidatePairs().empty());  // the sleeper against the ground is dropped; the dropper is 4 m up
+    CHECK(world.dynamics()[0].asleep);
+
+    // The dropper falls 3.5 m to touch it: √(2·3.5/g) ≈ 0.84 s. The sleeper wakes then, not before,
+    // and holds the dropper up (no more than a few millimetres of overlap).
+    Real wokeAt = -1;
+    while (world.time() < 2) {
+        world.step();
+        if (wokeAt < 0 && !world.dynamics()[0].asleep) wokeAt = world.time();
+    }
+    INFO("woke at " << wokeAt << " s");
+    CHECK(wokeAt > 0.7);
+    CHECK(wokeAt < 1.0);
+    CHECK(world.dynamics()[1].position.y > Real(1.49));
+}
+
+TEST_CASE("A ball carried by a slow kinematic platform never falls asleep, though its speed is below the sleep speed", "[sleep][kinematic]") {
+    // On a platform at u = 1 cm/s the ball rolls at 2u/7 (test_kinematic.cpp): 3 mm/s, below the
+    // sleep speed of 5 cm/s. Carried is not still: asleep, it would stop while the platform moved on
+    // (and be woken by it a step later, every TimeToSleep).
+    const Real u = 0.01;
+    Scene scene = test::emptyScene(IntegratorKind::SymplecticEuler, Real(1) / 120);
+    KinematicsObject platform;
+    platform.name = "platform";
+    platform.shape = Shape::Box;
+    platform.position = Vec3(0, -0.5, 0);
+    platform.scale = Vec3(40, 1, 4);
+    platform.velocity = Vec3(u, 0, 0);
+    scene.kinematics.push_back(platform);
+    scene.dynamics.push_back(test::sphere("ball", Vec3(0, 0.5, 0), Vec3(0), 0.5, 1, 0, 0.5));
+    REQUIRE(scene.settings.sleeping);
+    REQUIRE(2 * u / 7 < scene.settings.sleepLinearSpeed);
+    World world(scene);
+    Real asleepAt = -1;  // the first time it was asleep (the platform would wake it again a step later)
+    while (world.time() < 3) {
+        world.step();
+        if (asleepAt < 0 && world.dynamics()[0].asleep) asleepAt = world.time();
+    }
+    INFO("asleep at " << asleepAt << " s");
+    CHECK(asleepAt < 0);
+    CHECK_THAT(world.dynamics()[0].velocity.x, Catch::Matchers::WithinRel(double(2 * u / 7), 1e-6));
+}
+
 TEST_CASE("The solver measures a gap where the anchors are: a sphere's support, a box's turning corner", "[solver]") {
     // currentSeparation() (contact_solver.hpp) keeps one constant per contact and a box's corner in its
     // body frame. Against plain geometry on the ground y = 0: a ball's gap is its height minus its radius,
