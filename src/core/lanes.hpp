@@ -30,6 +30,7 @@
 #endif
 
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <cstring>
 #include <type_traits>
@@ -62,6 +63,10 @@ namespace stepwise {
 
 /// How many contacts a Lanes value carries.
 inline constexpr int kLanes = 4;
+
+/// Bytes in a cache line (x86-64, and most ARM cores): what memory moves in, and what a
+/// record streamed by every pass is aligned to (RoundBatch), so that it spans no extra line.
+inline constexpr std::size_t kCacheLine = 64;
 
 /// @brief Four Reals, operated on together. Aligned to their whole size: a
 /// build without AVX would align four doubles to 16 bytes only, while the AVX

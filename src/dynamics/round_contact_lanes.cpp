@@ -150,9 +150,6 @@ void setLane(RoundBatch& batch, int lane, std::uint32_t index, const SolverConta
     batch.maxNormalImpulse[lane] = c.maxNormalImpulse;
 }
 
-/// Bytes in a cache line (x86-64).
-constexpr std::size_t kCacheLine = 64;
-
 /// How many contacts ahead the batching asks for a contact's record. The batches are built in
 /// wave order, which jumps about the contacts: with 64k balls they are 32 MB, and each record
 /// read where it is first needed waits for memory.

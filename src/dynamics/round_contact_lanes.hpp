@@ -72,8 +72,9 @@ inline constexpr std::uint32_t kEmptyLane = 0xffffffffu;
 /// (tangentBasis(), the same bits). Leaving those seven Lanes out made a
 /// batch 576 bytes instead of 800, and the passes of the settled 64k sphere
 /// rain, which read 27 MB of batches each instead of 37, about 18 % cheaper
-/// (bench/solver_performance.md, eleventh round).
-struct RoundBatch {
+/// (bench/solver_performance.md, eleventh round). Aligned to a cache line, a
+/// batch is nine whole lines, not parts of ten.
+struct alignas(kCacheLine) RoundBatch {
     std::uint32_t contact[kLanes];  ///< Index in SolverWorkspace::contacts, or kEmptyLane.
     std::uint32_t bodyA[kLanes];    ///< A's solver-body record.
     std::uint32_t bodyB[kLanes];    ///< B's record (kStaticSolverBody for a plane).

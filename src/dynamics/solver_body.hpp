@@ -33,6 +33,7 @@
 /// Reference: Catto, Box2D v3 `solver.h` (b2BodyState, b2BodySim), 2024.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -43,13 +44,23 @@ namespace stepwise {
 /// @brief Record 0 of the solver-body array: the immovable B of a contact with a plane or kinematic body.
 inline constexpr std::uint32_t kStaticSolverBody = 0;
 
+/// @brief Bytes a SolverBody is aligned to: its own size, eight Reals (64 bytes, one x86-64 cache line, in double).
+inline constexpr std::size_t kSolverBodyAlignment = 8 * sizeof(Real);
+
 /// @brief What a contact pass reads and writes of one dynamic body: 64 bytes, one cache line.
 ///
 /// A pass copies both records of a contact into local variables, solves the
 /// contact's three rows on the copies, and stores them back once. The copies
 /// cannot alias anything else, so the compiler keeps them in registers
 /// instead of storing and reloading a body after every row.
-struct SolverBody {
+///
+/// Aligned to its size, so that a record is one cache line and not two halves of
+/// two: the array's storage came 48 bytes past a line, so every record straddled
+/// two lines, and with 64k balls (6 MB of records, more than the 2 MB of L2) each
+/// body a pass touched cost two fetches from L3 instead of one (the settled 64k
+/// rain's batched pass 43.6 → 41.6 ns a ball, bench/solver_performance.md,
+/// fourteenth round).
+struct alignas(kSolverBodyAlignment) SolverBody {
     Vec3 velocity{0, 0, 0};         ///< Linear velocity of the centre of mass, m/s.
     Vec3 angularVelocity{0, 0, 0};  ///< Angular velocity, world frame, rad/s.
     Real inverseMass = 0;           ///< 1/m, 1/kg (zero: static).
