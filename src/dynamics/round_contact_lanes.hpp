@@ -99,14 +99,18 @@ struct alignas(kCacheLine) RoundBatch {
 void batchRoundContacts(SolverWorkspace& workspace);
 
 /// @name batchRoundContacts() in three parts
+///
 /// prepareContacts() places each contact in its wave as soon as it has made it, while the
 /// contact's record is still in the L2 cache: a separate walk over the records read 184 bytes of
 /// each for the 12 the wave needs, which with 64k balls came from L3 (31 MB a step).
 ///@{
+
 /// @brief Empties the batches and the waves.
 void startWaves(SolverWorkspace& workspace);
+
 /// @brief Contact @p i's wave (its record made; contacts placed in order), or the list of the others.
 void placeInWave(SolverWorkspace& workspace, std::uint32_t i);
+
 /// @brief The placed contacts, wave by wave, four to a RoundBatch.
 void packWaves(SolverWorkspace& workspace);
 ///@}
