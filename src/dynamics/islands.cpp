@@ -124,12 +124,9 @@ std::size_t updateSleep(const BodySet& bodies, std::span<const Contact> contacts
     // 3. An island sleeps when its least still body has been still long enough. Most steps no
     //    island has (a pile with one body still rolling is one island, awake): then the bodies
     //    are not walked again.
-    bool anyFallsAsleep = false;
-    for (std::uint32_t i = 0; i < n && !anyFallsAsleep; ++i) {
-        const Real least = workspace.islandStillTime[i];  // max() for a body that is not a root, or asleep
-        anyFallsAsleep = workspace.parent[i] == i && least >= settings.timeToSleep &&
-                         least != std::numeric_limits<Real>::max();
-    }
+    const Real none = std::numeric_limits<Real>::max();  // the entry of a body that is no root, or roots only sleepers
+    const bool anyFallsAsleep = std::any_of(workspace.islandStillTime.begin(), workspace.islandStillTime.end(),
+                                            [&](Real least) { return least != none && least >= settings.timeToSleep; });
     if (!anyFallsAsleep) return asleep;
     for (std::uint32_t i = 0; i < n; ++i) {
         DynamicObject& body = dynamics[i];
