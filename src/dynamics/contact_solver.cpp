@@ -32,6 +32,7 @@ void makeBodyRecords(const BodySet& bodies, std::span<const Contact> contacts, s
         w.bodyRecord[link.a] = kInContact;
         if (link.b != kWorldAnchor) w.bodyRecord[link.b] = kInContact;
     }
+    w.ballsTurnOnce = links.empty();
     w.bodies.clear();
     w.inertias.clear();
     w.recordBody.clear();
@@ -54,6 +55,7 @@ void makeBodyRecords(const BodySet& bodies, std::span<const Contact> contacts, s
         w.recordBody.push_back(index);
         w.ballInertia.push_back(ball ? body.inertiaBody.x : Real(0));
     }
+    w.turnSums.assign(w.bodies.size(), SpinSum{});
 }
 
 /// The three rows of a round contact, computed from its normal, tangents and

@@ -177,6 +177,12 @@ struct FreeFlight {
     Vec3 torque{0, 0, 0};         ///< τ from the apply-forces stage, N·m.
 };
 
+/// @brief A sum of angular velocities, padded to four Reals so that it is one aligned load (SolverWorkspace::turnSums).
+struct alignas(4 * sizeof(Real)) SpinSum {
+    Vec3 sum{0, 0, 0};  ///< Σ ω, rad/s.
+    Real unused = 0;    ///< Padding to four Reals.
+};
+
 /// @brief What the contact solver needs of the World's settings for one substep.
 struct ContactSolverSettings {
     Real substep = 0;                ///< h_s = h / substeps, s.
@@ -216,9 +222,18 @@ struct SolverWorkspace {
     std::vector<std::uint32_t> waveOrder;        ///< The round contacts, wave by wave (scratch).
     std::uint32_t waves = 0;                     ///< How many waves placeInWave() has opened (scratch).
     bool roundBatchesAhead = false;              ///< The batches hold newer impulses than `contacts` (syncRoundContacts()).
-    /// Per record, on the packed substeps only (packRecords()): its ball's orientation, turned there.
-    /// (Its centre is in `centres`, its v and ω in `bodies`.)
+    /// Per record, on the packed substeps only (packRecords()): its ball's orientation at the step's
+    /// start, turned there by the last substep's drift (`turnSums`). (Its centre is in `centres`,
+    /// its v and ω in `bodies`.)
     std::vector<Quat> orientations;
+    /// Per record: the ω its ball has turned by in each substep so far, summed, rad/s; the last
+    /// substep's drift turns the ball once by h_s times the sum (velocity_change_drift.cpp, "A ball
+    /// turns once a step"). Zeroed by prepareContacts().
+    std::vector<SpinSum> turnSums;
+    /// No joint holds a body this step: then nothing reads a ball's orientation inside the step, and
+    /// a ball under symplectic Euler turns once, at its end (`turnSums`). A joint's anchor turns with its
+    /// ball, so with a joint every ball turns in every substep. Set by prepareContacts().
+    bool ballsTurnOnce = true;
     std::vector<FreeFlight> freeFlight;          ///< Per record, on the packed substeps only: its a and τ.
     /// Per record, on the packed substeps only: its L at the start of the step, kg·m²/s, which the first
     /// substep's kick starts from (later ones take L = I·ω, as copyVelocitiesOut() writes it).

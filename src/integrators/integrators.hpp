@@ -150,22 +150,25 @@ Real positionShareOfVelocityChange(IntegratorKind integrator);
 /// @brief Sequential impulse: moves each body the constraints pushed by h·Δv + (1 − s)·h²·a and turns it by h·Δω,
 /// Δv and Δω being what the solve changed since recordSubstepStart() (velocity_change_drift.cpp); then
 /// records its pose for the relax passes (SolverWorkspace::poses, and its centre in SolverWorkspace::centres).
-/// A ball under symplectic Euler is instead turned again from the substep's start, by h·ω with the solved ω.
+/// A ball under symplectic Euler turns by h·ω with the solved ω instead; in a step without joints it is held
+/// at the step's orientation and turns once, in the @p lastSubstep, by h·Σω over the substeps
+/// (SolverWorkspace::turnSums).
 ///
 /// Visits only the bodies with a solver record, those in a contact or a
 /// joint: no other body's velocity can have changed. Each one's solved
 /// velocities are first written back to its object (copyVelocitiesOut() for
 /// that record), in the same pass over the bodies.
-void driftByVelocityChange(SolverWorkspace& workspace, Real h, IntegratorKind integrator);
+void driftByVelocityChange(SolverWorkspace& workspace, Real h, IntegratorKind integrator, bool lastSubstep);
 
 /// @brief The same drift on the packed substeps' records (World::substepOnRecords()), after
 /// symplectic Euler's kick: each ball moves by h·v with its kicked v, as the integrator would
-/// have moved it, then by h·Δv as above, and turns once from the substep's start, by h·ω with the
-/// solved ω (or the kicked one, if the constraints left it as it was). Writes
-/// SolverWorkspace::centres and SolverWorkspace::orientations; the objects are not touched.
-/// @return The finite probe (zeroIfFinite()) of every record's solved velocities and of the
-/// pose it wrote: zero exactly when all are finite.
-Real driftRecordsByVelocityChange(SolverWorkspace& workspace, Real h);
+/// have moved it, then by h·Δv as above, and adds to its SolverWorkspace::turnSums the solved ω
+/// (or the kicked one, if the constraints left it as it was); in the @p lastSubstep it turns once,
+/// from the step's orientation, by h·Σω. Writes SolverWorkspace::centres and `turnSums`, and in the
+/// last substep SolverWorkspace::orientations; the objects are not touched.
+/// @return The finite probe (zeroIfFinite()) of every record's solved velocities and of what
+/// it wrote: zero exactly when all are finite.
+Real driftRecordsByVelocityChange(SolverWorkspace& workspace, Real h, bool lastSubstep);
 
 /// @brief Stage 3: moves kinematic bodies along their prescribed constant velocities.
 void moveKinematics(std::span<KinematicsObject> bodies, Real h);

@@ -1,9 +1,9 @@
 /// @file rotation_lanes.hpp
 /// @brief rotateByAngularVelocity() on four bodies at once (SIMD lanes), to the bit.
 ///
-/// On the packed substeps every ball turns once a substep (the drift,
-/// velocity_change_drift.cpp): at 16 substeps, 16 000 turns a step in the
-/// 1k sphere rain, each a short chain of multiplications (a series for cos φ
+/// On the packed substeps every ball turns once a step, in the last substep's
+/// drift (velocity_change_drift.cpp): 1 000 turns a step in the 1k sphere
+/// rain, each a short chain of multiplications (a series for cos φ
 /// and sin φ / φ, a quaternion product, a Newton step back to unit length)
 /// that a scalar loop does one ball at a time. The same formulas on Lanes
 /// (core/lanes.hpp) turn four balls with the instructions of one.

@@ -30,9 +30,9 @@
 /// A ball in a contact can live in the contact solver's packed record for a
 /// whole step (World::substepOnRecords()). There the two lines are split
 /// around the solve: the kick v + h·a (and L + h·τ, ω = L/I) before it,
-/// integrateSymplecticEulerOnRecords() below; the move x + h·v and the turn
-/// after it, with the kicked velocities and then the solver's change,
-/// driftRecordsByVelocityChange(). The operations are those of the object
+/// integrateSymplecticEulerOnRecords() below; the move x + h·v after it,
+/// with the kicked velocities and then the solver's change, and the turn
+/// once a step, driftRecordsByVelocityChange(). The operations are those of the object
 /// road (this integrator, then driftByVelocityChange()), in the same order,
 /// so the ball ends where the object road leaves it, to the bit.
 ///

@@ -91,7 +91,8 @@ Real finiteProbe(const SolverWorkspace& workspace, unsigned parts, bool packed) 
         const SolverBody& record = workspace.bodies[i];
         probe += zeroIfFinite(record.velocity) + zeroIfFinite(record.angularVelocity);
         if ((parts & kPose) && packed) {
-            probe += zeroIfFinite(workspace.centres[i].position) + zeroIfFinite(workspace.orientations[i]);
+            probe += zeroIfFinite(workspace.centres[i].position) + zeroIfFinite(workspace.turnSums[i].sum) +
+                     zeroIfFinite(workspace.orientations[i]);
         } else if (parts & kPose) {
             const Pose& pose = workspace.poses[workspace.recordBody[i]];
             probe += zeroIfFinite(pose.position) + zeroIfFinite(pose.orientation);
@@ -428,7 +429,7 @@ void World::stepWithSequentialImpulses() {
                 solveContacts(solverWorkspace_, contactSettings, true);
             }
             // The velocities back to the objects, each body moved by what they gained, its pose recorded
-            driftByVelocityChange(solverWorkspace_, hs, settings_.integrator);
+            driftByVelocityChange(solverWorkspace_, hs, settings_.integrator, substep + 1 == settings_.substeps);
         });
 
         // 7. Relax: the same passes without the push-out bias, so the push-out leaves no speed behind.
@@ -476,8 +477,9 @@ void World::stepWithSequentialImpulses() {
 /// in the arrays beside it, so nothing is copied in or out between the
 /// passes. Symplectic Euler's two lines are split around the solve: the kick
 /// before it (with the warm start from the last substep, which also only adds
-/// to v), the move by h·v after it, with the solver's change in the same pass
-/// (src/integrators/symplectic_euler.cpp, velocity_change_drift.cpp). The
+/// to v), the move by h·v after it, with the solver's change in the same pass,
+/// and the turn in the last substep's (src/integrators/symplectic_euler.cpp,
+/// velocity_change_drift.cpp: "A ball turns once a step"). The
 /// bodies without a record fly free on their objects. After the last relax
 /// the objects get their balls back, and from the bounce on the step goes on
 /// as before.
@@ -498,7 +500,7 @@ void World::substepOnRecords(Real hs, const ContactSolverSettings& contactSettin
             if (substep == 0) warmStartContacts(records, settings_.accumulateImpulses);
             for (int pass = 0; pass < settings_.velocityIterations; ++pass) solveContacts(records, contactSettings, true);
             // The probe after the drift sees the passes' velocities too: the drift does not change them
-            recordsFinite_ = driftRecordsByVelocityChange(records, hs) == Real(0);
+            recordsFinite_ = driftRecordsByVelocityChange(records, hs, substep + 1 == settings_.substeps) == Real(0);
         });
 
         // 7. Relax; after the last one the objects get their balls' state back
@@ -583,7 +585,9 @@ void World::checkFinite(Stage stage) const {
                 if (!stepwise::isFinite(w.bodies[i].velocity)) fail(name, "velocity");
                 if (!stepwise::isFinite(w.bodies[i].angularVelocity)) fail(name, "angular velocity");
                 if ((recordParts & kPose) && !stepwise::isFinite(w.centres[i].position)) fail(name, "position");
-                if ((recordParts & kPose) && !stepwise::isFinite(w.orientations[i])) fail(name, "orientation");
+                if ((recordParts & kPose) && !(stepwise::isFinite(w.orientations[i]) && stepwise::isFinite(w.turnSums[i].sum))) {
+                    fail(name, "orientation");
+                }
             }
         }
     }
