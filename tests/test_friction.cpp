@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "test_support.hpp"
 
@@ -77,6 +78,46 @@ TEST_CASE("A ball rolling down an incline turns by the distance it rolls over it
             CHECK(apart < 1e-3);
         }
     }
+}
+
+namespace {
+
+/// The ball's orientation after each substep's solve (its drift), for one step.
+struct OrientationsAfterDrift : StepObserver {
+    std::vector<Quat> orientations;
+    void afterStage(const StageEvent& event, const World& world) override {
+        if (event.stage == Stage::SolveConstraints) orientations.push_back(world.dynamics()[0].orientation);
+    }
+};
+
+}  // namespace
+
+TEST_CASE("A rolling ball keeps its orientation through a step's substeps and turns once, in the last", "[friction][observer]") {
+    // Nothing in a step reads a ball's orientation (velocity_change_drift.cpp, "A ball turns once
+    // a step"), so the drift holds it and turns it in the last substep, by the substeps' turns
+    // summed. Rolling without slipping, that turn is the step's distance over the radius.
+    const Real theta = 30, R = 0.5;
+    Scene scene = test::emptyScene(IntegratorKind::SymplecticEuler, Real(1) / 60);
+    scene.planes.push_back(incline(theta));
+    scene.dynamics.push_back(test::sphere("ball", R * scene.planes[0].normal, Vec3(0), R, 1, 0, 0.5));
+    World world(scene);
+    while (world.time() < 1 - 1e-9) world.step();  // rolling at about 3.5 m/s
+    const Quat before = world.dynamics()[0].orientation;
+    const Vec3 start = world.dynamics()[0].position;
+    OrientationsAfterDrift watcher;
+    world.setObserver(&watcher);
+    world.step();
+    REQUIRE(watcher.orientations.size() == std::size_t(scene.settings.substeps));
+    for (std::size_t k = 0; k + 1 < watcher.orientations.size(); ++k) {
+        INFO("substep " << k);
+        CHECK(watcher.orientations[k] == before);
+    }
+    const Quat after = world.dynamics()[0].orientation;
+    CHECK(watcher.orientations.back() == after);
+    const Real rolled = glm::dot(world.dynamics()[0].position - start, downSlope(theta));
+    const Real turned = 2 * std::acos(std::min(Real(1), std::abs(glm::dot(after, before))));
+    CHECK(rolled > Real(0.05));
+    CHECK_THAT(turned, WithinRel(double(rolled / R), 0.01));  // the slip at the contact is under 1 % of v (above)
 }
 
 TEST_CASE("A hollow sphere rolls slower: 3/5 g sin(theta)", "[friction]") {
