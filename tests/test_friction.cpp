@@ -120,6 +120,35 @@ TEST_CASE("A rolling ball keeps its orientation through a step's substeps and tu
     CHECK_THAT(turned, WithinRel(double(rolled / R), 0.01));  // the slip at the contact is under 1 % of v (above)
 }
 
+TEST_CASE("With a spring in the scene a rolling ball turns in every substep: the spring's anchor turns with it", "[friction][observer]") {
+    // A spring reads its anchor on the ball at every substep (x + R·r): an orientation held
+    // for the step would pull from where the anchor was. So does a joint ([joints]).
+    const Real theta = 30, R = 0.5;
+    Scene scene = test::emptyScene(IntegratorKind::SymplecticEuler, Real(1) / 60);
+    scene.planes.push_back(incline(theta));
+    scene.dynamics.push_back(test::sphere("ball", R * scene.planes[0].normal, Vec3(0), R, 1, 0, 0.5));
+    Spring spring;
+    spring.name = "weak";
+    spring.anchorA = Vec3(0, R, 0);             // on the ball's surface, off its centre
+    spring.anchorB = Vec3(0, 100, 0);           // a world point far above
+    spring.stiffness = Real(1e-3);              // N/m: a pull of a tenth of a newton at most
+    spring.restLength = Real(100);
+    scene.springs.push_back(spring);
+    World world(scene);
+    while (world.time() < 1 - 1e-9) world.step();
+    OrientationsAfterDrift watcher;
+    world.setObserver(&watcher);
+    const Quat before = world.dynamics()[0].orientation;
+    world.step();
+    REQUIRE(watcher.orientations.size() == std::size_t(scene.settings.substeps));
+    Quat last = before;
+    for (std::size_t k = 0; k < watcher.orientations.size(); ++k) {
+        INFO("substep " << k);
+        CHECK(watcher.orientations[k] != last);  // rolling at about 7 rad/s: every substep turns it
+        last = watcher.orientations[k];
+    }
+}
+
 TEST_CASE("A hollow sphere rolls slower: 3/5 g sin(theta)", "[friction]") {
     // I = ⅔·m·R² ⇒ a = g·sinθ / (1 + 2/3) = 3/5·g·sinθ.
     const Real theta = 30, R = 0.5;

@@ -32,7 +32,6 @@ void makeBodyRecords(const BodySet& bodies, std::span<const Contact> contacts, s
         w.bodyRecord[link.a] = kInContact;
         if (link.b != kWorldAnchor) w.bodyRecord[link.b] = kInContact;
     }
-    w.ballsTurnOnce = links.empty();
     w.bodies.clear();
     w.inertias.clear();
     w.recordBody.clear();

@@ -230,9 +230,10 @@ struct SolverWorkspace {
     /// substep's drift turns the ball once by h_s times the sum (velocity_change_drift.cpp, "A ball
     /// turns once a step"). Zeroed by prepareContacts().
     std::vector<SpinSum> turnSums;
-    /// No joint holds a body this step: then nothing reads a ball's orientation inside the step, and
-    /// a ball under symplectic Euler turns once, at its end (`turnSums`). A joint's anchor turns with its
-    /// ball, so with a joint every ball turns in every substep. Set by prepareContacts().
+    /// No joint holds a body and no spring pulls one: then nothing reads a ball's orientation inside
+    /// the step, and a ball under symplectic Euler turns once, at its end (`turnSums`). A joint's or a
+    /// spring's anchor turns with its ball, so with either every ball turns in every substep. Set by
+    /// the World before the substeps.
     bool ballsTurnOnce = true;
     std::vector<FreeFlight> freeFlight;          ///< Per record, on the packed substeps only: its a and τ.
     /// Per record, on the packed substeps only: its L at the start of the step, kg·m²/s, which the first

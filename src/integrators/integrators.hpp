@@ -150,7 +150,7 @@ Real positionShareOfVelocityChange(IntegratorKind integrator);
 /// @brief Sequential impulse: moves each body the constraints pushed by h·Δv + (1 − s)·h²·a and turns it by h·Δω,
 /// Δv and Δω being what the solve changed since recordSubstepStart() (velocity_change_drift.cpp); then
 /// records its pose for the relax passes (SolverWorkspace::poses, and its centre in SolverWorkspace::centres).
-/// A ball under symplectic Euler turns by h·ω with the solved ω instead; in a step without joints it is held
+/// A ball under symplectic Euler turns by h·ω with the solved ω instead; in a scene without joints and springs it is held
 /// at the step's orientation and turns once, in the @p lastSubstep, by h·Σω over the substeps
 /// (SolverWorkspace::turnSums).
 ///

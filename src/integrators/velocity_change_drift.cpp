@@ -27,9 +27,10 @@
 /// **A ball turns once a step.** Nothing inside a step reads a ball's
 /// orientation: its contacts are measured from its centre (a sphere's
 /// surface point is the centre plus R·n however it is turned) and its
-/// inertia is the same about every axis. Only a joint's anchor turns with
-/// its ball, so in a step without joints (SolverWorkspace::ballsTurnOnce)
-/// the drift keeps each ball at the step's orientation q_n, adds each
+/// inertia is the same about every axis. Only a joint's or a spring's
+/// anchor turns with its ball, so in a scene without joints and springs
+/// (SolverWorkspace::ballsTurnOnce) the drift keeps each ball at the step's
+/// orientation q_n, adds each
 /// substep's ω to a sum, and in the last substep turns it once:
 /// \f[ q_{n+1} = \exp\!\Big(\tfrac12 h_s \sum_{k=1}^{S} \hat\omega_k\Big)\, q_n
 ///     \quad\text{instead of}\quad
