@@ -83,8 +83,8 @@ Real finiteProbe(const DynamicObject& body, unsigned parts) {
 /// every object. (The angular momentum is I·ω for a ball and L + I·Δω for a box, with
 /// a finite ω: the next stage that checks it, integrate or restitution, names it if it
 /// overflowed.)
-/// On the packed substeps (@p packed) the poses are the records' own centres and
-/// orientations (World::substepOnRecords()).
+/// On the packed substeps (@p packed) the poses are the records' own centres,
+/// orientations and summed turns (World::substepOnRecords()).
 Real finiteProbe(const SolverWorkspace& workspace, unsigned parts, bool packed) {
     Real probe = 0;
     for (std::size_t i = 1; i < workspace.bodies.size(); ++i) {
