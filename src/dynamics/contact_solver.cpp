@@ -174,11 +174,14 @@ SolverContact prepareOne(const BodySet& bodies, const Contact& contact, Real h, 
         rows.normal = makeContactRow(inertiaA, inertiaB, start.rA, start.rB, c.normal);
         c.normalMass = Real(1) / inverseEffectiveMass(bodyA, bodyB, rows.normal);
         rows.normalSurfaceSpeed = glm::dot(start.staticVelocity, c.normal);
+        Real tangentInverseMass[2];
         for (int k = 0; k < 2; ++k) {
             rows.tangent[k] = makeContactRow(inertiaA, inertiaB, start.rA, start.rB, c.tangent[k]);
-            c.tangentMass[k] = Real(1) / inverseEffectiveMass(bodyA, bodyB, rows.tangent[k]);
+            tangentInverseMass[k] = inverseEffectiveMass(bodyA, bodyB, rows.tangent[k]);
             rows.tangentSurfaceSpeed[k] = glm::dot(start.staticVelocity, c.tangent[k]);
         }
+        // One mass for the pair, or a sliding box's friction is not against its sliding (frictionPairMass())
+        c.tangentMass[0] = c.tangentMass[1] = frictionPairMass(tangentInverseMass[0], tangentInverseMass[1]);
         c.rows = static_cast<std::uint32_t>(w.rows.size());
         w.rows.push_back(rows);
     }

@@ -122,7 +122,7 @@ struct SolverContact {
     Vec3 normal{0, 1, 0};            ///< From A towards B, fixed for the step.
     Vec3 tangent[2];                 ///< Friction directions across the normal, with n × t₁ = t₂ (tangentBasis()).
     Real normalMass = 0;             ///< K⁻¹ along n, kg.
-    Real tangentMass[2] = {0, 0};    ///< K⁻¹ along each tangent, kg.
+    Real tangentMass[2] = {0, 0};    ///< K⁻¹ along the tangents: one mass for both, frictionPairMass(), kg.
     Real friction = 0;               ///< μ of the pair.
     Real normalImpulse = 0;          ///< Accumulated λ_n of the current substep, N·s.
     Real tangentImpulse[2] = {0, 0}; ///< Accumulated friction impulses, N·s.

@@ -71,7 +71,8 @@ ContactConstraint prepare(const BodySet& bodies, const Contact& contact, Real h,
     c.normal = contact.normal;
     tangentBasis(c.normal, c.tangent);
     c.normalMass = Real(1) / inverseEffectiveMass(c, c.normal);
-    for (int k = 0; k < 2; ++k) c.tangentMass[k] = Real(1) / inverseEffectiveMass(c, c.tangent[k]);
+    c.tangentMass[0] = c.tangentMass[1] =
+        frictionPairMass(inverseEffectiveMass(c, c.tangent[0]), inverseEffectiveMass(c, c.tangent[1]));
     c.friction = combineFriction(a.friction, other.friction);
 
     // The bounce is decided once, from the velocities before any impulse:

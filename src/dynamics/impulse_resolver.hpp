@@ -65,7 +65,7 @@ struct ContactConstraint {
     Vec3 normal{0, 1, 0};          ///< From A towards B.
     Vec3 tangent[2];               ///< Two unit vectors across the normal, for friction.
     Real normalMass = 0;           ///< 1 / (effective inverse mass along n), kg.
-    Real tangentMass[2] = {0, 0};  ///< The same along each tangent, kg.
+    Real tangentMass[2] = {0, 0};  ///< Along each tangent: one mass for both, frictionPairMass(), kg.
     Real targetSeparation = 0;     ///< e·v_c: the normal speed the passes aim for, m/s.
     bool resting = false;          ///< Support, not impact: v_c below kRestingContactSteps·h·max(|a_n|, |a_A·n|, |a_B·n|).
     bool speculative = false;      ///< The surfaces are still a gap apart (Contact::depth < −kTouchTolerance).
@@ -97,6 +97,23 @@ struct CachedImpulse {
 
 /// @brief Two unit vectors t₁, t₂ that complete the unit normal @p n to a right-handed orthonormal basis (n, t₁, t₂).
 void tangentBasis(const Vec3& n, Vec3 (&t)[2]);
+
+/// @brief The one effective mass both friction rows of a contact point share, kg:
+/// 2 / (K₁₁ + K₂₂), from the inverse masses @p inverseMass0, @p inverseMass1 along t₁ and t₂.
+///
+/// The two tangent rows are solved together and clamped to Coulomb's circle. With a
+/// mass of its own on each row, a pass sets the friction impulse to P − diag(m₁, m₂)·u
+/// for the sliding velocity u, and at a sliding point the clamped impulse then points
+/// along −diag(m₁, m₂)·u instead of −u: not against the sliding, and turned by how the
+/// tangents happen to lie. A box's contact point has different inverse masses along
+/// the two tangents (its lever arms turn it differently), so a box sliding down an
+/// incline whose slope lay between t₁ and t₂ slid up to 7 % too fast and drifted
+/// sideways. One mass for both, from the trace of K's tangent block (the same in
+/// every basis of the tangent plane), makes each increment −m·u: against the sliding,
+/// in any basis. A sticking point still converges: a pass multiplies its error by
+/// I − m·K_t, whose eigenvalues 1 − λᵢ/λ̄ (λ̄ the mean of K_t's two) lie in (−1, 1).
+/// A ball's two inverse masses are equal, and this is then exactly 1/K₁₁.
+inline Real frictionPairMass(Real inverseMass0, Real inverseMass1) { return Real(2) / (inverseMass0 + inverseMass1); }
 
 /// @brief The warm-start key of @p contact: body A, body B (kind in the top two bits, index below), feature id.
 ContactKey keyOf(const Contact& contact);
