@@ -141,7 +141,10 @@ TEST_CASE("A pass in lanes is the scalar pass, four contacts at a time", "[solve
     // -ffp-contract=off so that none fuses). A build for a processor with FMA (-march=native)
     // may fuse the scalar pass and not the lanes; it gets a tolerance of a billionth of the values.
     BallHeap heap;
-    const ContactSolverSettings settings = substepSettings();
+    ContactSolverSettings settings = substepSettings();
+    // Both kinds of relax pass: the normal rows only (the default), and with friction.
+    settings.relaxBallFriction = GENERATE(false, true);
+    INFO("relaxBallFriction " << settings.relaxBallFriction);
     SolverWorkspace lanes;
     prepareContacts(heap.bodies(), heap.contacts, {}, Real(1) / 60, false, lanes);
     // Something to warm start from: the impulses a previous step might have left.
@@ -190,4 +193,38 @@ TEST_CASE("A pass in lanes is the scalar pass, four contacts at a time", "[solve
     // The static record stays at rest whatever the empty lanes and plane contacts wrote into it.
     CHECK(lanes.bodies[kStaticSolverBody].velocity == Vec3(0));
     CHECK(lanes.bodies[kStaticSolverBody].angularVelocity == Vec3(0));
+}
+
+TEST_CASE("A relax pass leaves a ball contact's friction as the solve pass left it, unless told to solve it too", "[solver][lanes][friction]") {
+    // The relax pass is there to take back the push-out speed, which the normal rows carry;
+    // a round contact's friction rows are not coupled to its own normal row (K_nt = 0: the normal
+    // impulse passes through the centres), so by default the relax solves the normal rows only
+    // (contact_solver.hpp, "Friction in the relax"). Were the template argument or the setting
+    // not wired through, one of the two checks below fails.
+    BallHeap heap;
+    ContactSolverSettings settings = substepSettings();
+    const bool relaxBallFriction = GENERATE(false, true);
+    settings.relaxBallFriction = relaxBallFriction;
+    INFO("relaxBallFriction " << relaxBallFriction);
+    SolverWorkspace w;
+    prepareContacts(heap.bodies(), heap.contacts, {}, Real(1) / 60, false, w);
+    recordPoses(heap.bodies(), w);
+    copyVelocitiesIn(w);
+    solveContacts(w, settings, true);
+    syncRoundContacts(w);
+    const std::vector<SolverContact> afterSolve = w.contacts;
+    solveContacts(w, settings, false);
+    syncRoundContacts(w);
+
+    int normalsChanged = 0;
+    int frictionChanged = 0;
+    for (std::size_t i = 0; i < w.contacts.size(); ++i) {
+        if (w.contacts[i].normalImpulse != afterSolve[i].normalImpulse) ++normalsChanged;
+        for (int k = 0; k < 2; ++k) {
+            if (w.contacts[i].tangentImpulse[k] != afterSolve[i].tangentImpulse[k]) ++frictionChanged;
+        }
+    }
+    CHECK(normalsChanged > 50);  // the relax pass ran, and took back push-out
+    if (relaxBallFriction) CHECK(frictionChanged > 50);
+    else CHECK(frictionChanged == 0);
 }

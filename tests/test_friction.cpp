@@ -404,3 +404,37 @@ TEST_CASE("A ball rolling slowly into a wall bounces back: gravity does not make
     CHECK(world.dynamics()[0].velocity.x < -0.05);  // came back off the wall
     CHECK(world.dynamics()[0].position.x < 0.5);
 }
+
+TEST_CASE("Three balls stacked as a triangle stand when mu reaches 2 - sqrt(3) between them, and fall apart below it", "[friction][contacts]") {
+    // Two balls side by side on the floor, just touching, a third resting on both: its centre
+    // is √3·R above theirs and each upper contact's normal is 60° above the horizontal. The top
+    // ball pushes the lower ones apart; only friction holds them (their own contact can only
+    // push). Per lower ball, with N and F the normal and friction force from the top ball and
+    // f the floor's friction: the torques about its centre give f = F, the horizontal forces
+    // N/2 = F·(1 + √3/2), the top ball's weight N·√3 + F = m·g. So F/N = 1/(2 + √3) = 2 − √3
+    // = 0.268 between the balls, and f/N_floor = (2 − √3)/3 = 0.089 on the floor (N_floor = 3/2·m·g).
+    // Coulomb: the stack stands if μ_balls ≥ 2 − √3 (and μ_floor ≥ 0.089), else the top ball
+    // slides down between the lower ones. A contact's μ is the product of its bodies' (the
+    // floor's factor is 1): balls of friction √μ give μ between them and √μ on the floor.
+    // Both kinds of relax pass (RelaxBallFriction) must find the threshold.
+    const Real R = 0.5;
+    const Real threshold = 2 - std::sqrt(Real(3));
+    const bool relaxBallFriction = GENERATE(false, true);
+    for (const Real mu : {Real(0.25), Real(0.29)}) {  // 7 % below and 8 % above the threshold
+        Scene scene = test::emptyScene(IntegratorKind::SymplecticEuler, Real(1) / 60);
+        scene.settings.relaxBallFriction = relaxBallFriction;
+        scene.planes.push_back(test::ground());
+        const Real f = std::sqrt(mu);
+        const Vec3 topStart(0, R + std::sqrt(Real(3)) * R, 0);
+        scene.dynamics.push_back(test::sphere("left", Vec3(-R, R, 0), Vec3(0), R, 1, 0, f));
+        scene.dynamics.push_back(test::sphere("right", Vec3(R, R, 0), Vec3(0), R, 1, 0, f));
+        scene.dynamics.push_back(test::sphere("top", topStart, Vec3(0), R, 1, 0, f));
+        World world(scene);
+        while (world.time() < 4) world.step();
+        const Real drop = topStart.y - world.dynamics()[2].position.y;
+        INFO("mu between the balls " << mu << " (threshold " << threshold << "), RelaxBallFriction " << relaxBallFriction
+                                     << ": the top ball dropped " << drop << " m in 4 s");
+        if (mu > threshold) CHECK(drop < 1e-3);  // stands: a millimetre at most in 4 s
+        else CHECK(drop > R);                     // falls apart: the top ball comes down between the others
+    }
+}

@@ -103,6 +103,7 @@ constexpr FieldSpec kWorldFields[] = {
     {"Substeps",            FieldKind::Number,  kNamedOnly, Range::Count},            // per step
     {"Iterations",          FieldKind::Number,  kNamedOnly, Range::Count},            // solve passes per substep
     {"RelaxIterations",     FieldKind::Number,  kNamedOnly, Range::WholeNumber},      // relax passes per substep
+    {"RelaxBallFriction",   FieldKind::Boolean, kNamedOnly, Range::Any},              // relax passes re-solve a ball's friction
     {"ImpulseIterations",   FieldKind::Number,  kNamedOnly, Range::Count},            // Solver=Impulse passes
     {"WarmStarting",        FieldKind::Boolean, kNamedOnly, Range::Any},
     {"AccumulateImpulses",  FieldKind::Boolean, kNamedOnly, Range::Any},

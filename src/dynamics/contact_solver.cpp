@@ -421,7 +421,7 @@ void solveContacts(SolverWorkspace& workspace, const ContactSolverSettings& sett
             }
             c.maxNormalImpulse = std::max(c.maxNormalImpulse, c.normalImpulse);
             rows.applyNormal(a, b, applied);
-            solveFriction(c, rows, a, b);
+            if (passSolvesFriction(c, settings, useBias)) solveFriction(c, rows, a, b);
         });
         bodies[c.bodyA] = a;
         bodies[c.bodyB] = b;

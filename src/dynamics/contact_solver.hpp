@@ -29,6 +29,29 @@
 /// the accumulated friction impulse is kept inside Coulomb's circle
 /// |λ_t| ≤ μ·λ_n, with λ_n the current accumulated normal impulse.
 ///
+/// **Friction in the relax.** The relax pass is there for the normal rows: it
+/// takes back the push-out speed they were given. Friction rows have no bias.
+/// Whether the relax must solve them again depends on how a contact's normal
+/// impulse moves its own point across the surface, the off-diagonal entry
+/// K_nt = J_n·M⁻¹·J_tᵀ. At a box's corner it is not zero (r × n and r × t
+/// are not at right angles in general): the relax's normal impulse turns the
+/// box and sets the corner sliding, and without friction in the relax a 100:1
+/// stack creeps 37 mm in 10 s instead of 1.5 mm. At a ball's contact the
+/// normal row has no angular part (the impulse passes through the centres)
+/// and n ⊥ t, so K_nt = 0: the relax's normal impulse leaves that contact's
+/// sliding exactly as it was, and its friction rows are solved once a
+/// substep, in the solve pass. So a relax pass solves a contact with stored
+/// rows (a box's, a kinematic body's) whole, and a round contact's normal row
+/// only, unless ContactSolverSettings::relaxBallFriction (`RelaxBallFriction=true`)
+/// asks for both. Other contacts' relax impulses still change a ball's sliding
+/// (it is a Gauss–Seidel pass), and the next solve pass takes that up: three
+/// balls stacked as a triangle stand and fall at the same μ = 2 − √3 either
+/// way (tests/test_friction.cpp), and the 1k sphere rain steps 13 % faster
+/// (bench/solver_performance.md, sixteenth round). Engines commonly solve
+/// friction in fewer passes than the normal rows: PhysX's PGS solver, by
+/// default, skips it in all but the last three of its biased (position)
+/// iterations (`PxSceneFlag::eENABLE_FRICTION_EVERY_ITERATION` turns it on in all).
+///
 /// **Restitution** is applied once, after all substeps, from the approach
 /// speed at the moment of touching v_c (reconstructed from the pre-solve
 /// velocity and the gap, see prepareContacts()). A contact that never
@@ -189,7 +212,15 @@ struct ContactSolverSettings {
     Softness softness;               ///< From ContactHertz and ContactDampingRatio at h_s.
     bool accumulate = true;          ///< Clamp the accumulated impulse (true) or each increment (false).
     bool positionCorrection = true;  ///< Use the soft bias on overlaps (false: overlaps are never pushed out).
+    bool relaxBallFriction = false;  ///< The relax passes solve a round contact's friction too ("Friction in the relax", above).
 };
+
+/// @brief Whether a pass solves the friction rows of contact @p c: every solve pass does; a relax
+/// pass (@p useBias false) for a contact with stored rows always, for a round one only with
+/// ContactSolverSettings::relaxBallFriction ("Friction in the relax", above).
+inline bool passSolvesFriction(const SolverContact& c, const ContactSolverSettings& settings, bool useBias) {
+    return useBias || settings.relaxBallFriction || c.rows != kRoundContact;
+}
 
 /// @brief Scratch arrays of the sequential-impulse contact solver, reused every step.
 struct SolverWorkspace {
@@ -375,7 +406,8 @@ void warmStartFromLastSubstep(SolverWorkspace& workspace);
 
 /// @brief One Gauss–Seidel pass over all contacts: the round ones four at a time, wave by
 /// wave (round_contact_lanes.hpp), then the others one at a time in their order.
-/// @param useBias true for the solve (soft push-out), false for the relax pass.
+/// @param useBias true for the solve (soft push-out), false for the relax pass (which solves a
+///        round contact's friction only with ContactSolverSettings::relaxBallFriction: passSolvesFriction()).
 void solveContacts(SolverWorkspace& workspace, const ContactSolverSettings& settings, bool useBias);
 
 /// @brief After the substeps: the bounce, e·v_c along n, for contacts that pushed and are not resting.

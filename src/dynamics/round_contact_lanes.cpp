@@ -269,6 +269,41 @@ struct PassConstants {
 /// processor's registers and reorder window profit from (below).
 constexpr std::size_t kBatchesSideBySide = 3;
 
+/// The friction part of solveBatches(): on the bodies @p a, @p b of @p N batches of one wave,
+/// after their normal impulses.
+template <std::size_t N>
+STEPWISE_LANES_INLINE void solveFrictionOfBatches(RoundBatch* batches, BodyLanes (&a)[N], BodyLanes (&b)[N],
+                                                  const PassConstants& k) {
+    // Friction inside Coulomb's circle |λ_t| ≤ μ·λ_n, both tangents read before either is applied.
+    // (A lane that does not push and holds no friction, which the scalar pass skips, computes a
+    // scale of 0 or 1 on a zero impulse here: it changes nothing either.)
+    Vec3Lanes tangent1[N];
+    Lanes total0[N];
+    Lanes total1[N];
+    for (std::size_t j = 0; j < N; ++j) {
+        const RoundBatch& batch = batches[j];
+        tangent1[j] = cross(batch.normal, batch.tangent0);  // t₂ = n × t₁, as prepare made it (tangentBasis())
+        Lanes along0;
+        Lanes along1;
+        frictionVelocities(a[j], b[j], batch, tangent1[j], along0, along1);
+        total0[j] = batch.tangentImpulse0 - batch.tangentMass * along0;
+        total1[j] = batch.tangentImpulse1 - batch.tangentMass * along1;
+    }
+    for (std::size_t j = 0; j < N; ++j) {
+        const Lanes limit = batches[j].friction * batches[j].normalImpulse;
+        const Lanes magnitude = sqrtLanes(total0[j] * total0[j] + total1[j] * total1[j]);
+        const Lanes scale = select(magnitude > limit, limit / magnitude, k.one);
+        total0[j] *= scale;
+        total1[j] *= scale;
+    }
+    for (std::size_t j = 0; j < N; ++j) {
+        RoundBatch& batch = batches[j];
+        applyFriction(a[j], b[j], batch, tangent1[j], total0[j] - batch.tangentImpulse0, total1[j] - batch.tangentImpulse1);
+        batch.tangentImpulse0 = total0[j];
+        batch.tangentImpulse1 = total1[j];
+    }
+}
+
 /// solveContacts()'s pass (contact_solver.cpp), line for line, on the @p N batches from @p batches on, all of one wave:
 /// each `if` on a contact's own numbers becomes a select between the two results, lane by lane.
 ///
@@ -281,7 +316,11 @@ constexpr std::size_t kBatchesSideBySide = 3;
 /// rain −7 % against one at a time; two gained 2 %, four lost to spilled registers
 /// (bench/solver_performance.md, thirteenth round). The numbers are each batch's own,
 /// so the bits are the same whatever N.
-template <std::size_t N, bool PushOut>
+///
+/// With @p Friction false (a relax pass, unless ContactSolverSettings::relaxBallFriction) the
+/// batches' normal rows are solved and their friction is left as the solve pass left it
+/// (contact_solver.hpp, "Friction in the relax").
+template <std::size_t N, bool PushOut, bool Friction>
 STEPWISE_LANES_INLINE void solveBatches(RoundBatch* batches, SolverWorkspace& workspace, const PassConstants& k,
                                         SolverBody& discard) {
     BodyLanes a[N];
@@ -320,36 +359,7 @@ STEPWISE_LANES_INLINE void solveBatches(RoundBatch* batches, SolverWorkspace& wo
         batch.maxNormalImpulse = maxLanes(batch.maxNormalImpulse, batch.normalImpulse);
     }
     for (std::size_t j = 0; j < N; ++j) applyNormal(a[j], b[j], batches[j].normal, applied[j]);
-
-    // Friction inside Coulomb's circle |λ_t| ≤ μ·λ_n, both tangents read before either is applied.
-    // (A lane that does not push and holds no friction, which the scalar pass skips, computes a
-    // scale of 0 or 1 on a zero impulse here: it changes nothing either.)
-    Vec3Lanes tangent1[N];
-    Lanes total0[N];
-    Lanes total1[N];
-    for (std::size_t j = 0; j < N; ++j) {
-        const RoundBatch& batch = batches[j];
-        tangent1[j] = cross(batch.normal, batch.tangent0);  // t₂ = n × t₁, as prepare made it (tangentBasis())
-        Lanes along0;
-        Lanes along1;
-        frictionVelocities(a[j], b[j], batch, tangent1[j], along0, along1);
-        total0[j] = batch.tangentImpulse0 - batch.tangentMass * along0;
-        total1[j] = batch.tangentImpulse1 - batch.tangentMass * along1;
-    }
-    for (std::size_t j = 0; j < N; ++j) {
-        const Lanes limit = batches[j].friction * batches[j].normalImpulse;
-        const Lanes magnitude = sqrtLanes(total0[j] * total0[j] + total1[j] * total1[j]);
-        const Lanes scale = select(magnitude > limit, limit / magnitude, k.one);
-        total0[j] *= scale;
-        total1[j] *= scale;
-    }
-    for (std::size_t j = 0; j < N; ++j) {
-        RoundBatch& batch = batches[j];
-        applyFriction(a[j], b[j], batch, tangent1[j], total0[j] - batch.tangentImpulse0, total1[j] - batch.tangentImpulse1);
-        batch.tangentImpulse0 = total0[j];
-        batch.tangentImpulse1 = total1[j];
-    }
-
+    if constexpr (Friction) solveFrictionOfBatches<N>(batches, a, b, k);
     for (std::size_t j = 0; j < N; ++j) {
         scatter(workspace.bodies, batches[j].bodyA, a[j], discard);
         scatter(workspace.bodies, batches[j].bodyB, b[j], discard);
@@ -359,7 +369,7 @@ STEPWISE_LANES_INLINE void solveBatches(RoundBatch* batches, SolverWorkspace& wo
 /// One pass: wave by wave, up to kBatchesSideBySide batches of a wave at a time. With
 /// @p PushOut a template argument, the relax pass (no push) is compiled without the soft
 /// bias's selects and scales, which are 1 and 0 there (−3 % at 1k, the same bits).
-template <bool PushOut>
+template <bool PushOut, bool Friction>
 STEPWISE_LANES_INLINE void solveWaves(SolverWorkspace& workspace, const PassConstants& k) {
     SolverBody discard;  // where the static record's lanes go (scatter())
     RoundBatch* const batches = workspace.roundBatches.data();
@@ -368,9 +378,9 @@ STEPWISE_LANES_INLINE void solveWaves(SolverWorkspace& workspace, const PassCons
         std::size_t run = 1;  // batches from `first` on in its wave, at most kBatchesSideBySide
         while (run < kBatchesSideBySide && first + run < count && batches[first + run].wave == batches[first].wave) ++run;
         static_assert(kBatchesSideBySide == 3, "one solveBatches<N> below for each N up to kBatchesSideBySide");
-        if (run == 3) solveBatches<3, PushOut>(batches + first, workspace, k, discard);
-        else if (run == 2) solveBatches<2, PushOut>(batches + first, workspace, k, discard);
-        else solveBatches<1, PushOut>(batches + first, workspace, k, discard);
+        if (run == 3) solveBatches<3, PushOut, Friction>(batches + first, workspace, k, discard);
+        else if (run == 2) solveBatches<2, PushOut, Friction>(batches + first, workspace, k, discard);
+        else solveBatches<1, PushOut, Friction>(batches + first, workspace, k, discard);
         first += run;
     }
 }
@@ -389,8 +399,9 @@ void solveRoundContacts(SolverWorkspace& workspace, const ContactSolverSettings&
     k.slowestPushOut = splat(-kMaxPushOutSpeed);
     k.softMassScale = splat(settings.softness.massScale);
     k.softImpulseScale = splat(settings.softness.impulseScale);
-    if (useBias && settings.positionCorrection) solveWaves<true>(workspace, k);  // the soft bias pushes overlaps apart
-    else solveWaves<false>(workspace, k);
+    if (useBias && settings.positionCorrection) solveWaves<true, true>(workspace, k);  // the soft bias pushes overlaps apart
+    else if (useBias || settings.relaxBallFriction) solveWaves<false, true>(workspace, k);
+    else solveWaves<false, false>(workspace, k);  // a relax pass: the normal rows only
     workspace.roundBatchesAhead = true;
 }
 

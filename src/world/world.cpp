@@ -354,6 +354,7 @@ void World::stepWithSequentialImpulses() {
     contactSettings.substep = hs;
     contactSettings.accumulate = settings_.accumulateImpulses;
     contactSettings.positionCorrection = settings_.positionCorrection;
+    contactSettings.relaxBallFriction = settings_.relaxBallFriction;
     contactSettings.softness = makeSoftness(contactHertzInUse(settings_),
                                             settings_.contactDampingRatio, hs);
     const JointSolverSettings jointSettings = jointSolverSettings(settings_, hs);
@@ -434,7 +435,8 @@ void World::stepWithSequentialImpulses() {
             driftByVelocityChange(solverWorkspace_, hs, settings_.integrator, substep + 1 == settings_.substeps);
         });
 
-        // 7. Relax: the same passes without the push-out bias, so the push-out leaves no speed behind.
+        // 7. Relax: the same passes without the push-out bias, so the push-out leaves no speed behind
+        //    (a ball's contacts: their normal rows; contact_solver.hpp, "Friction in the relax").
         //    The drift moved the bodies but left their velocities alone: the copies are still current.
         runStage(Stage::RelaxConstraints, [&] {
             recordKinematicPoses(bodies(), solverWorkspace_);  // the drift recorded the dynamic bodies' poses

@@ -103,6 +103,9 @@ struct WorldSettings {
     int substeps = kDefaultSubsteps;                   ///< Sequential impulse: substeps per step, ≥ 1.
     int velocityIterations = 1;                        ///< Sequential impulse: solve passes per substep, ≥ 1.
     int relaxIterations = 1;                           ///< Sequential impulse: relax passes per substep, ≥ 0.
+    /// Sequential impulse: the relax passes solve a ball contact's friction too (false: its normal row only;
+    /// a box's contacts always get both). contact_solver.hpp, "Friction in the relax".
+    bool relaxBallFriction = false;
     bool accumulateImpulses = true;                    ///< Clamp accumulated impulses (true) or each increment.
     bool positionCorrection = true;                    ///< Soft push-out of overlaps and joint drift.
     Real contactHertz = kDefaultContactHertz;          ///< Contact softness frequency, Hz.
