@@ -132,7 +132,7 @@ The settings on both sides, so that the comparison is fair:
 
 | | Stepwise | Bullet 3.24 (Debian `libbullet-dev`, `btScalar` = float) |
 |---|---|---|
-| solver | the scene's: `SequentialImpulse` by default (16 substeps, 1 velocity and 1 relax iteration each, soft contacts at 240 Hz, warm starting); the free box, bounce and incline scenes say `Solver=Impulse` (10 iterations); the rain tables add rows for `Substeps=12` (soft contacts then capped at 180 Hz), against the same Bullet run | `btSequentialImpulseConstraintSolver`, 10 iterations, warm starting, split impulse (below 4 cm of penetration), ERP 0.2 |
+| solver | the scene's: `SequentialImpulse` by default (16 substeps, 1 velocity and 1 relax iteration each, the relax solving a ball contact's normal row only (`RelaxBallFriction=false`), soft contacts at 240 Hz, warm starting); the free box, bounce and incline scenes say `Solver=Impulse` (10 iterations); the rain tables add rows for `Substeps=12` (soft contacts then capped at 180 Hz), against the same Bullet run | `btSequentialImpulseConstraintSolver`, 10 iterations, warm starting, split impulse (below 4 cm of penetration), ERP 0.2 |
 | step | `World::step()`, h from the scene | `stepSimulation(h, 1, h)`: exactly one step of h |
 | broadphase | `Auto` (chooses from the scene) | `btDbvtBroadphase` |
 | sleeping | the scene's `Sleep` (default on: still under 0.05 m/s and 0.05 rad/s for 0.5 s); tower and pyramid say `Sleep=false` | `Sleep=false`: `DISABLE_DEACTIVATION` on every body; otherwise Bullet's default (under 0.8 m/s and 1 rad/s for 2 s) |
