@@ -416,13 +416,15 @@ TEST_CASE("Three balls stacked as a triangle stand when mu reaches 2 - sqrt(3) b
     // Coulomb: the stack stands if μ_balls ≥ 2 − √3 (and μ_floor ≥ 0.089), else the top ball
     // slides down between the lower ones. A contact's μ is the product of its bodies' (the
     // floor's factor is 1): balls of friction √μ give μ between them and √μ on the floor.
-    // Both kinds of relax pass (RelaxBallFriction) must find the threshold.
+    // Both kinds of relax pass (RelaxBallFriction) must put the line between 0.25 and 0.29
+    // (measured: between 0.27 and 0.28 by default, 0.26 and 0.27 with the relax's friction).
     const Real R = 0.5;
     const Real threshold = 2 - std::sqrt(Real(3));
     const bool relaxBallFriction = GENERATE(false, true);
     for (const Real mu : {Real(0.25), Real(0.29)}) {  // 7 % below and 8 % above the threshold
         Scene scene = test::emptyScene(IntegratorKind::SymplecticEuler, Real(1) / 60);
         scene.settings.relaxBallFriction = relaxBallFriction;
+        scene.settings.sleeping = false;  // a stack that creeps must not be saved by falling asleep
         scene.planes.push_back(test::ground());
         const Real f = std::sqrt(mu);
         const Vec3 topStart(0, R + std::sqrt(Real(3)) * R, 0);
