@@ -45,14 +45,16 @@
 /// only, unless ContactSolverSettings::relaxBallFriction (`RelaxBallFriction=true`)
 /// asks for both. Other contacts' relax impulses still change a ball's sliding
 /// (it is a Gauss–Seidel pass), and the next solve pass takes that up. What
-/// that costs is measurable: three balls stacked as a triangle, which stand
-/// exactly from μ = 2 − √3 = 0.268 between them, stand from 0.28 and fall at
-/// 0.27 (with the relax's friction: stand at 0.27, fall at 0.26; 4 s without
-/// sleep; tests/test_friction.cpp checks 0.25 and 0.29). The 1k sphere rain
-/// steps 13 % faster (bench/solver_performance.md, sixteenth round). Engines commonly solve
-/// friction in fewer passes than the normal rows: PhysX's PGS solver, by
-/// default, skips it in all but the last three of its biased (position)
-/// iterations (`PxSceneFlag::eENABLE_FRICTION_EVERY_ITERATION` turns it on in all).
+/// that costs is measurable and small: three balls stacked as a triangle,
+/// which stand exactly from μ = 2 − √3 = 0.2679 between them, stand in the
+/// engine from 0.2704 and fall at 0.2702 (with the relax's friction: from
+/// 0.2700, falling at 0.2695; 4 s without sleep): both within 1 % of
+/// Coulomb's line (tests/test_friction.cpp checks 0.25 and 0.29). The 1k sphere rain
+/// steps 13 % faster (bench/solver_performance.md, sixteenth round).
+/// Engines commonly solve friction in fewer passes than the normal rows:
+/// PhysX's PGS solver, by default, skips it in all but the last three of its
+/// biased (position) iterations (`PxSceneFlag::eENABLE_FRICTION_EVERY_ITERATION`
+/// turns it on in all).
 ///
 /// **Restitution** is applied once, after all substeps, from the approach
 /// speed at the moment of touching v_c (reconstructed from the pre-solve
