@@ -255,11 +255,14 @@ void prepareContacts(const BodySet& bodies, std::span<const Contact> contacts, s
     workspace.rows.clear();
     workspace.turningAnchors.clear();
     startWaves(workspace);
+    workspace.bouncing.clear();
+    workspace.bouncing.reserve(contacts.size());  // no allocation while the contacts do not outgrow the last steps'
     std::size_t nextCached = 0;  // the contacts come in key order, mostly: each lookup starts where the last ended
     for (std::size_t i = 0; i < contacts.size(); ++i) {
         SolverContact& c = workspace.contacts[i];
         c = prepareOne(bodies, contacts[i], h, workspace, workspace.starts[i]);
         placeInWave(workspace, static_cast<std::uint32_t>(i));  // batchRoundContacts()'s first walk, while c is in the cache
+        if (workspace.starts[i].restitution != Real(0)) workspace.bouncing.push_back(static_cast<std::uint32_t>(i));
         if (!warmStart) continue;
         if (const CachedImpulse* cached = findCachedImpulse(workspace.previousImpulses, keyOf(contacts[i]), nextCached)) {
             c.normalImpulse = cached->normalImpulse;
@@ -431,10 +434,10 @@ void solveContacts(SolverWorkspace& workspace, const ContactSolverSettings& sett
 bool applyRestitution(SolverWorkspace& workspace) {
     syncRoundContacts(workspace);
     bool bounced = false;
-    for (std::size_t i = 0; i < workspace.contacts.size(); ++i) {
+    for (const std::uint32_t i : workspace.bouncing) {  // the contacts with e ≠ 0, in order
         SolverContact& c = workspace.contacts[i];
         const ContactStart& start = workspace.starts[i];
-        if (start.restitution == Real(0) || c.maxNormalImpulse == Real(0)) continue;
+        if (c.maxNormalImpulse == Real(0)) continue;
         bounced = true;
         // Drive v_n to e·v_c (separating), never pulling: the accumulated λ stays ≥ 0.
         SolverBody& a = workspace.bodies[c.bodyA];
