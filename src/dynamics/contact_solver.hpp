@@ -219,11 +219,17 @@ struct ContactSolverSettings {
     bool relaxBallFriction = false;  ///< The relax passes solve a round contact's friction too ("Friction in the relax", above).
 };
 
-/// @brief Whether a pass solves the friction rows of contact @p c: every solve pass does; a relax
-/// pass (@p useBias false) for a contact with stored rows always, for a round one only with
-/// ContactSolverSettings::relaxBallFriction ("Friction in the relax", above).
+/// @brief Whether a pass solves the friction rows of the round contacts: every solve pass does,
+/// a relax pass (@p useBias false) only with ContactSolverSettings::relaxBallFriction
+/// ("Friction in the relax", above).
+inline bool passSolvesRoundFriction(const ContactSolverSettings& settings, bool useBias) {
+    return useBias || settings.relaxBallFriction;
+}
+
+/// @brief Whether a pass solves the friction rows of contact @p c: a contact with stored rows in
+/// every pass, a round one as passSolvesRoundFriction() says.
 inline bool passSolvesFriction(const SolverContact& c, const ContactSolverSettings& settings, bool useBias) {
-    return useBias || settings.relaxBallFriction || c.rows != kRoundContact;
+    return c.rows != kRoundContact || passSolvesRoundFriction(settings, useBias);
 }
 
 /// @brief Scratch arrays of the sequential-impulse contact solver, reused every step.

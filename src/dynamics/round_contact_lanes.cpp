@@ -400,7 +400,7 @@ void solveRoundContacts(SolverWorkspace& workspace, const ContactSolverSettings&
     k.softMassScale = splat(settings.softness.massScale);
     k.softImpulseScale = splat(settings.softness.impulseScale);
     if (useBias && settings.positionCorrection) solveWaves<true, true>(workspace, k);  // the soft bias pushes overlaps apart
-    else if (useBias || settings.relaxBallFriction) solveWaves<false, true>(workspace, k);
+    else if (passSolvesRoundFriction(settings, useBias)) solveWaves<false, true>(workspace, k);
     else solveWaves<false, false>(workspace, k);  // a relax pass: the normal rows only
     workspace.roundBatchesAhead = true;
 }
