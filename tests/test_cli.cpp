@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "command_runner.hpp"
+#include "config/scene_loader.hpp"
 
 using Catch::Matchers::Contains;
 
@@ -126,9 +127,7 @@ TEST_CASE("Every shipped scene runs for one simulated second, and a self-checkin
     for (const auto& entry : std::filesystem::directory_iterator(kSourceDir + "/config")) {
         if (entry.path().extension() != ".scene") continue;
         INFO(entry.path().string());
-        std::ifstream in(entry.path());
-        bool selfChecking = false;
-        for (std::string line; std::getline(in, line);) selfChecking = selfChecking || line.rfind("Expect", 0) == 0;
+        const bool selfChecking = !stepwise::loadSceneFile(entry.path().string()).expectations.empty();
         const Result r = runStepwise("run '" + entry.path().string() + "'" + (selfChecking ? "" : " --duration 1"));
         INFO(r.output);
         CHECK(r.exitCode == 0);
