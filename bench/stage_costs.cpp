@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <memory>
 #include <string>
 
@@ -32,6 +33,7 @@ struct Run {
     StageRecords before{};              ///< the stage clocks when the timing began
     std::unique_ptr<StepTimer> timer;   ///< CPU time of each timed step
     double contacts = 0;                ///< summed over the timed steps
+    SolverFootprint footprint;          ///< the contact solver's arrays after the last timed step
 };
 
 /// Wall-clock ns per body per step that @p stage took in @p run's timed steps.
@@ -85,6 +87,62 @@ void printTable(std::FILE* out, const std::vector<Run>& runs, bool markdown) {
     row("contacts per body", contacts, "%.2f");
 }
 
+constexpr double kBytesPerMegabyte = 1024.0 * 1024.0;
+
+/// The data caches of the processor this runs on, as Linux describes them
+/// (/sys/devices/system/cpu/cpu0/cache): "L1 48K, L2 2048K, L3 266240K (shared by 0-1)";
+/// empty where the system does not say.
+std::string dataCaches() {
+    std::string caches;
+    for (int index = 0;; ++index) {
+        const std::string dir = "/sys/devices/system/cpu/cpu0/cache/index" + std::to_string(index) + "/";
+        std::ifstream level(dir + "level"), type(dir + "type"), size(dir + "size"), shared(dir + "shared_cpu_list");
+        std::string levelText, typeText, sizeText, sharedText;
+        if (!(level >> levelText) || !(type >> typeText) || !(size >> sizeText)) break;
+        if (typeText == "Instruction") continue;
+        shared >> sharedText;
+        caches += (caches.empty() ? "L" : ", L") + levelText + " " + sizeText;
+        if (sharedText.find_first_of(",-") != std::string::npos) caches += " (shared by cores " + sharedText + ")";
+    }
+    return caches;
+}
+
+/// Where the step's data lives: the megabytes the arrays of each size hold, against the caches.
+/// A size whose walks fit in a core's own cache is served from it; a larger one streams the same
+/// walks from the next level, and the cost per body grows by the difference while the work per
+/// body (contacts per body, above) does not.
+void printFootprint(std::FILE* out, const std::vector<Run>& runs, bool markdown) {
+    if (markdown) {
+        std::fprintf(out, "\n| arrays, MB |");
+        for (const Run& r : runs) std::fprintf(out, " %zu |", r.bodies);
+        std::fprintf(out, "\n|---|");
+        for (std::size_t i = 0; i < runs.size(); ++i) std::fprintf(out, "---:|");
+        std::fprintf(out, "\n");
+    } else {
+        std::fprintf(out, "\n%-40s", "arrays, MB");
+        for (const Run& r : runs) std::fprintf(out, " %10zu", r.bodies);
+        std::fprintf(out, "\n");
+    }
+    const auto row = [&](const char* name, auto&& megabytes) {
+        std::fprintf(out, markdown ? "| %s |" : "%-40s", name);
+        for (const Run& r : runs) std::fprintf(out, markdown ? " %.1f |" : " %10.1f", megabytes(r));
+        std::fprintf(out, "\n");
+    };
+    row("the bodies (DynamicObject)", [](const Run& r) {
+        return double(r.world->dynamics().size() * sizeof(DynamicObject)) / kBytesPerMegabyte;
+    });
+    row("the contacts (narrowphase)", [](const Run& r) {
+        return double(r.world->contacts().size() * sizeof(Contact)) / kBytesPerMegabyte;
+    });
+    row("the contact solver's, all", [](const Run& r) { return double(r.footprint.allBytes) / kBytesPerMegabyte; });
+    row("the contact solver's, read by each pass", [](const Run& r) {
+        return double(r.footprint.passBytes) / kBytesPerMegabyte;
+    });
+    const std::string caches = dataCaches();
+    std::fprintf(out, markdown ? "\nThe processor's data caches, per core unless shared: %s.\n" : "caches: %s\n",
+                 caches.empty() ? "not known" : caches.c_str());
+}
+
 }  // namespace
 
 int runStageCosts(const StageCostOptions& options) {
@@ -117,6 +175,7 @@ int runStageCosts(const StageCostOptions& options) {
                 run.contacts += double(run.world->contacts().size());
                 ++run.steps;
             }
+            run.footprint = run.world->solverFootprint();
         }
     }
 
@@ -124,6 +183,7 @@ int runStageCosts(const StageCostOptions& options) {
                 "rounds; each stage's wall-clock time (World::stageRecords()) and the whole step's CPU time, in ns per\n"
                 "body per step; ratio = largest size / smallest\n", settle, rounds);
     printTable(stdout, runs, false);
+    printFootprint(stdout, runs, false);
     if (options.markdownPath) {
         std::FILE* markdown = std::fopen(options.markdownPath->c_str(), "w");
         if (!markdown) {
@@ -136,6 +196,7 @@ int runStageCosts(const StageCostOptions& options) {
                                "stepped in turn for %d rounds: %s steps), ns per body per step:\n",
                      settle, rounds, steps.c_str());
         printTable(markdown, runs, true);
+        printFootprint(markdown, runs, true);
         std::fclose(markdown);
     }
     return 0;

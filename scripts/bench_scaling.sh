@@ -109,6 +109,22 @@ sizes *in turn*, round after round in one process, so that a shared
 machine's slow minutes fall on all of them alike, and splits each step by
 stage (`World::stageRecords()`, wall clock; the whole step's CPU time is
 the last timed row). A ratio near 1 is a stage whose cost per body is flat.
+Under it, *arrays* says where the step's data lives: the megabytes of the
+bodies, of the narrowphase's contacts and of the contact solver's arrays
+(`World::solverFootprint()`; *read by each pass* is the body records and
+the batches that every pass walks: with the defaults, 32 a step, a solve
+and a relax in each of 16 substeps), beside the processor's caches. The
+work per body is the same at every size (contacts per body); what is not
+the same is where it is read from. At 1k the arrays a pass reads are half
+a megabyte, less than a core's own L2 cache on current processors (1 to
+2 MB); from 16k on they are several times more, and every walk fetches
+them from the L3 cache shared by the cores, slower per byte and, on a
+shared machine, shared with its other users too. That is the growth in
+the ratio column, not the algorithm: bench/solver_performance.md measures
+it for the passes (the fourteenth and seventeenth rounds: the 64k pass with
+its records folded into the first 4 096, which then stay in the L2, runs as
+fast as the 1k pass), and the other stages are walks of the same kind,
+a few operations per body or contact over arrays of the sizes below.
 
 EOF
     if [[ -f $stage_costs_data ]]; then cat "$stage_costs_data"; else

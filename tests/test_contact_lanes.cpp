@@ -228,3 +228,29 @@ TEST_CASE("A relax pass leaves a ball contact's friction as the solve pass left 
     if (relaxBallFriction) CHECK(frictionChanged > 50);
     else CHECK(frictionChanged == 0);
 }
+
+TEST_CASE("The solver's footprint counts what a pass reads: the body records and the batches", "[solver][lanes]") {
+    CHECK(solverFootprint(SolverWorkspace{}).allBytes == 0);  // nothing prepared, nothing held
+
+    BallHeap heap;
+    SolverWorkspace workspace;
+    prepareContacts(heap.bodies(), heap.contacts, {}, Real(1) / 60, false, workspace);
+    recordPoses(heap.bodies(), workspace);
+    // Counted from the contacts themselves: a record per dynamic body in a contact, and record 0
+    std::vector<bool> inContact(heap.dynamics.size(), false);
+    for (const Contact& contact : heap.contacts) {
+        inContact[contact.a] = true;
+        if (contact.b.kind == BodyKind::Dynamic) inContact[contact.b.index] = true;
+    }
+    const std::size_t records = 1 + std::size_t(std::count(inContact.begin(), inContact.end(), true));
+    const std::size_t contacts = heap.contacts.size();
+    REQUIRE(workspace.bodies.size() == records);
+    // Every contact is round here: all of them in batches of four, a wave's last batch perhaps not full
+    const std::size_t batches = workspace.roundBatches.size();
+    CHECK(batches * kLanes >= contacts);
+
+    const SolverFootprint footprint = solverFootprint(workspace);
+    CHECK(footprint.passBytes == records * (sizeof(SolverBody) + sizeof(SolverCentre)) + batches * sizeof(RoundBatch));
+    // Everything else is on top: at least each contact's record and start
+    CHECK(footprint.allBytes >= footprint.passBytes + contacts * (sizeof(SolverContact) + sizeof(ContactStart)));
+}

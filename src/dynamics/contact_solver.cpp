@@ -452,6 +452,29 @@ bool applyRestitution(SolverWorkspace& workspace) {
     return bounced;
 }
 
+namespace {
+
+template <class T>
+std::size_t bytesOf(const std::vector<T>& array) {
+    return array.size() * sizeof(T);
+}
+
+}  // namespace
+
+SolverFootprint solverFootprint(const SolverWorkspace& w) {
+    SolverFootprint f;
+    f.passBytes = bytesOf(w.bodies) + bytesOf(w.centres) + bytesOf(w.roundBatches) + bytesOf(w.rows) +
+                  w.otherContacts.size() * sizeof(SolverContact);
+    f.allBytes = bytesOf(w.contacts) + bytesOf(w.starts) + bytesOf(w.rows) + bytesOf(w.turningAnchors) +
+                 bytesOf(w.bodies) + bytesOf(w.inertias) + bytesOf(w.recordBody) + bytesOf(w.ballInertia) +
+                 bytesOf(w.bodyRecord) + bytesOf(w.previousImpulses) + bytesOf(w.currentImpulses) +
+                 bytesOf(w.poses) + bytesOf(w.centres) + bytesOf(w.substepStart) + bytesOf(w.roundBatches) +
+                 bytesOf(w.otherContacts) + bytesOf(w.bouncing) + bytesOf(w.nextWave) + bytesOf(w.waveOf) +
+                 bytesOf(w.waveStart) + bytesOf(w.waveOrder) + bytesOf(w.orientations) + bytesOf(w.turnSums) +
+                 bytesOf(w.freeFlight) + bytesOf(w.startMomentum);
+    return f;
+}
+
 void storeContactImpulses(std::span<const Contact> contacts, SolverWorkspace& workspace,
                           std::span<ImpulseReport> reports) {
     workspace.currentImpulses.clear();

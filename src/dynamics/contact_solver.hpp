@@ -286,6 +286,20 @@ struct SolverWorkspace {
     std::vector<Vec3> startMomentum;
 };
 
+/// @brief How many bytes the solver's arrays hold this step (sizes, not capacities).
+///
+/// Why a benchmark asks: a step costs the same per body at every size only while the arrays
+/// its walks read stay in the processor's caches. A pass reads the body records (`bodies`,
+/// `centres`) and the batches, or for a contact with stored rows its SolverContact and
+/// ContactRows; prepare and the bounce read the rest once a step (`stepwise-bench stage-costs`).
+struct SolverFootprint {
+    std::size_t passBytes = 0;  ///< What every contact pass reads: the records, the batches, the other contacts' rows.
+    std::size_t allBytes = 0;   ///< Every array of the workspace, those included.
+};
+
+/// @brief The footprint of @p workspace as the last prepareContacts() (and the substeps) left it.
+SolverFootprint solverFootprint(const SolverWorkspace& workspace);
+
 /// @brief Builds one SolverContact per contact: anchors, effective masses,
 /// bounce, and (with @p warmStart) last step's impulses; and a SolverBody
 /// record for each dynamic body in a contact or held by a joint (@p links),

@@ -83,6 +83,8 @@ public:
     const std::vector<SolverContact>& solverContacts() const { return solverWorkspace_.contacts; }
     /// @brief Where each of those constraints came from (bodies, lever arms, start gap) and its bounce; same order.
     const std::vector<ContactStart>& solverContactStarts() const { return solverWorkspace_.starts; }
+    /// @brief The bytes of the contact solver's arrays in the last step: what its passes read, and all of them.
+    SolverFootprint solverFootprint() const { return stepwise::solverFootprint(solverWorkspace_); }
     const Broadphase& broadphase() const { return broadphase_; }  ///< Stage 4's state: which kind ran, Auto's reason.
     /// @brief What each step runs and why (src/world/step_plan.hpp), as of the last step
     /// (or construction); `stepwise run --explain` prints it.
