@@ -292,6 +292,7 @@ struct SolverWorkspace {
 /// its walks read stay in the processor's caches. A pass reads the body records (`bodies`,
 /// `centres`) and the batches, or for a contact with stored rows its SolverContact and
 /// ContactRows; prepare and the bounce read the rest once a step (`stepwise-bench stage-costs`).
+/// solverFootprint() names every array of SolverWorkspace: a new one belongs there too.
 struct SolverFootprint {
     std::size_t passBytes = 0;  ///< What every contact pass reads: the records, the batches, the other contacts' rows.
     std::size_t allBytes = 0;   ///< Every array of the workspace, those included.
