@@ -33,7 +33,6 @@ struct Run {
     StageRecords before{};              ///< the stage clocks when the timing began
     std::unique_ptr<StepTimer> timer;   ///< CPU time of each timed step
     double contacts = 0;                ///< summed over the timed steps
-    SolverFootprint footprint;          ///< the contact solver's arrays after the last timed step
 };
 
 /// Wall-clock ns per body per step that @p stage took in @p run's timed steps.
@@ -134,9 +133,12 @@ void printFootprint(std::FILE* out, const std::vector<Run>& runs, bool markdown)
     row("the contacts (narrowphase)", [](const Run& r) {
         return double(r.world->contacts().size() * sizeof(Contact)) / kBytesPerMegabyte;
     });
-    row("the contact solver's, all", [](const Run& r) { return double(r.footprint.allBytes) / kBytesPerMegabyte; });
+    // As the last timed step left them
+    row("the contact solver's, all", [](const Run& r) {
+        return double(r.world->solverFootprint().allBytes) / kBytesPerMegabyte;
+    });
     row("the contact solver's, read by each pass", [](const Run& r) {
-        return double(r.footprint.passBytes) / kBytesPerMegabyte;
+        return double(r.world->solverFootprint().passBytes) / kBytesPerMegabyte;
     });
     const std::string caches = dataCaches();
     std::fprintf(out, markdown ? "\nThe processor's data caches, per core unless shared: %s.\n" : "caches: %s\n",
@@ -175,7 +177,6 @@ int runStageCosts(const StageCostOptions& options) {
                 run.contacts += double(run.world->contacts().size());
                 ++run.steps;
             }
-            run.footprint = run.world->solverFootprint();
         }
     }
 
