@@ -154,6 +154,20 @@ TEST_CASE("run says which broadphase ran, and why when the scene leaves it to Au
     CHECK_THAT(chosen.output, Contains("Broadphase Grid (set by the scene)"));
 }
 
+TEST_CASE("run says why no broadphase ran when the step plan skipped it", "[cli][broadphase]") {
+    // One ball on a spring and nothing to hit: the plan skips the broadphase on every step, so
+    // Auto never chose one, and the summary must not say it did (nor that no step ran).
+    const Result single = runStepwise("run '" + kSourceDir + "/config/stress_spring_past.scene' --duration 1");
+    CHECK(single.exitCode == 0);
+    CHECK_THAT(single.output, Contains("Simulated 1 s in 60 steps") &&
+                                  Contains("Broadphase none ran (skipped: a single body and nothing to hit") &&
+                                  !Contains("no step ran") && !Contains("Auto:"));
+    TempFile scene("lone-grid.scene", "World, Broadphase=Grid, Gravity=(0, 0, 0)\nDynamicObject\n");
+    const Result set = runStepwise("run " + scene.quoted() + " --steps 3");
+    CHECK(set.exitCode == 0);
+    CHECK_THAT(set.output, Contains("Broadphase none ran (skipped:") && !Contains("set by the scene"));
+}
+
 TEST_CASE("raycast prints the first body along the ray", "[cli][raycast]") {
     // A ball of radius 0.5 at x = 3 above a floor: along +x at its height the
     // ray meets it at x = 2.5; straight down from (0, 2, 0) it meets the floor 2 m below.

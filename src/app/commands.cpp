@@ -182,18 +182,26 @@ void printJoints(const World& world) {
     }
 }
 
-/// Which broadphase ran, and, when the scene left the choice to Auto, why.
+/// Which broadphase ran, and, when the scene left the choice to Auto, why; or why none ran.
 void printBroadphase(const World& world) {
+    // Auto chooses when the broadphase first runs, so a run in which it never ran has no choice to show.
+    if (world.stageRecords()[static_cast<std::size_t>(Stage::Broadphase)].runs == 0) {
+        const PlanDecision& planned = world.plan().stage(Stage::Broadphase);
+        if (world.stepCount() == 0) {
+            std::printf("Broadphase none ran (no step ran)\n");
+        } else if (!planned.runs) {
+            std::printf("Broadphase none ran (%s)\n", planned.reason);  // e.g. a single body: no pair to find
+        } else {
+            std::printf("Broadphase none ran (every step was idle: no body awake, no kinematic body moving)\n");
+        }
+        return;
+    }
     if (world.settings().broadphase != BroadphaseKind::Auto) {
         std::printf("Broadphase %s (set by the scene)\n", toString(world.settings().broadphase));
         return;
     }
     const BroadphaseChoice& choice = world.broadphase().autoChoice();
-    if (choice.reason.empty()) {
-        std::printf("Broadphase Auto (chosen at the first step; no step ran)\n");
-    } else {
-        std::printf("Broadphase %s (Auto: %s)\n", toString(choice.kind), choice.reason.c_str());
-    }
+    std::printf("Broadphase %s (Auto: %s)\n", toString(choice.kind), choice.reason.c_str());
 }
 
 void printStageTimes(const World& world, double wallSeconds) {
