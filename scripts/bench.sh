@@ -6,7 +6,7 @@
 #   scripts/bench.sh                 the full sweep, 5 timed repetitions per point
 #   scripts/bench.sh --repeats 11    more repetitions (a noisy machine)
 #   scripts/bench.sh --scaling       also re-measure the Scaling section and its stage-by-stage table
-#                                    (scripts/bench_scaling.sh; tens of minutes)
+#                                    (scripts/bench_scaling.sh; about 3 minutes on the page's 2-core machine)
 #   scripts/bench.sh --bullet        also re-measure the Side by side with Bullet section (installs Bullet):
 #                                    the scenario tables, the rain's run time against overlap, the verdicts
 #
@@ -20,7 +20,8 @@
 # Build: the `release` preset (build/release/), target stepwise-bench only.
 # Takes under a minute once stepwise-bench is built, on the 2-core Xeon of the page
 # (2026-11-26): the precision sweep 17 s (load average 2.5), the stress suite 10.5 s of
-# wall and of CPU time (idle, load average 0.1-0.3). Setup and build messages go to stderr.
+# wall and of CPU time (idle, load average 0.1-0.3). With --scaling --bullet, about 8 minutes
+# there (12:08-12:15 UTC for the page of 2026-11-26). Setup and build messages go to stderr.
 set -euo pipefail
 
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)

@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # The "Scaling" and "Side by side with Bullet" sections of docs/benchmarks.md (issues #6 and #7).
 #
-#   scripts/bench_scaling.sh --run scaling   runs `stepwise-bench scaling` (build/release; tens of minutes of
-#                                            CPU, most of it the 64k-sphere rain) into docs/data/bench-scaling.txt
-#   scripts/bench_scaling.sh --run stage-costs  runs `stepwise-bench stage-costs` (build/release; a few minutes: the
-#                                            64k rain must settle first) into docs/data/bench-stage-costs.txt
+#   scripts/bench_scaling.sh --run scaling   runs `stepwise-bench scaling` (build/release; about 2 minutes on the
+#                                            page's 2-core machine, one thread) into docs/data/bench-scaling.txt
+#   scripts/bench_scaling.sh --run stage-costs  runs `stepwise-bench stage-costs` (build/release; about 1 minute
+#                                            there: the 64k rain must settle first) into docs/data/bench-stage-costs.txt
 #   scripts/bench_scaling.sh --run bullet    runs `stepwise-bench bullet` (installs Bullet with
 #                                            `scripts/setup.sh --with-bullet`, builds build/bullet with
 #                                            -DSTEPWISE_WITH_BULLET=ON) into docs/data/bench-bullet.txt
@@ -192,5 +192,5 @@ case ${1:-} in
             *) echo "bench_scaling.sh: --run needs scaling, stage-costs or bullet" >&2; exit 2 ;;
         esac ;;
     --sections) sections ;;
-    *) sed -n '2,15p' "$0"; exit 2 ;;
+    *) sed -n '2,/^[^#]/{/^#/p}' "$0"; exit 2 ;;  # the header above, up to its first line of code
 esac
