@@ -140,6 +140,19 @@ EOF
         }
     }' "$tables"
     cat <<EOF
+**The pendulum's three lines coincide**, and its period error does not
+shrink steadily with h. Its rod is a \`DistanceJoint\`, so it runs under
+\`Solver=SequentialImpulse\`, where a body that a constraint touches in a
+substep ends it at x_n + h_s·v_{n+1} whatever the integrator
+(src/integrators/velocity_change_drift.cpp says why). What the tables
+measure is the soft joint's error. A soft joint is a spring of
+\`JointHertz\` = 60 Hz, which the bob's tension (up to 2 m·g) holds off
+its 1 m length (the \`length_error_max\` table above), and a rod ΔL off
+has its period off by ΔT/T = ΔL/(2L), a few 10⁻⁵: a floor that smaller
+steps do not lower. The period error crosses zero near h = 1/480 s, hence
+its dip there (lectures/09-accuracy-and-stability.md, *The pendulum: when
+the integrator does not matter*).
+
 ## Energy {#benchmarks-energy}
 
 How far each integrator lets a conserved quantity stray: the spring's
