@@ -46,12 +46,6 @@ struct Row {
     double nsPerStep;
 };
 
-double median(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    const std::size_t n = values.size();
-    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
-
 /// Wall time of @p steps calls of World::step(), per step, ns; the World is built outside the clock.
 double nanosecondsPerStep(const Scene& scene, std::uint64_t steps) {
     World world(scene);
@@ -196,11 +190,11 @@ int runPrecision(const PrecisionOptions& options) {
             continue;
         }
         const std::string path = options.configDir + "/" + problem.sceneFile;
-        ProblemRunner runner;
+        JudgeMaker judgeAt;
         Scene scene;
         try {
             scene = loadSceneFile(path);
-            runner = problem.prepare(scene);
+            judgeAt = problem.prepare(scene);
         } catch (const std::exception& error) {
             std::fprintf(stderr, "stepwise-bench: %s: %s\n", problem.name.c_str(), error.what());
             exitCode = 1;
@@ -210,7 +204,7 @@ int runPrecision(const PrecisionOptions& options) {
         std::vector<Row> rows;
         for (IntegratorKind integrator : kIntegrators) {
             for (double h : timeSteps) {
-                Row row{problem.name, integrator, h, runner(integrator, h), 0};
+                Row row{problem.name, integrator, h, runInStepwise(scene, judgeAt, integrator, h), 0};
                 std::vector<double> times;
                 const Scene stepped = withStep(scene, integrator, h);
                 for (int r = 0; r < repeats; ++r) times.push_back(nanosecondsPerStep(stepped, row.measurement.steps));

@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <stdexcept>
 
 #include "core/errors.hpp"
@@ -43,30 +44,18 @@ void require(bool condition, const std::string& scene, const std::string& what) 
 /// Steps from t = 0 to the whole number of steps nearest @p duration.
 std::uint64_t stepsFor(double duration, double h) { return static_cast<std::uint64_t>(std::llround(duration / h)); }
 
-/// Runs @p steps steps, calling observe(world) after each; stops at a SimulationError and says where.
-template <class Observer>
-Measurement run(World& world, std::uint64_t steps, Observer&& observe) {
-    Measurement m;
-    try {
-        for (std::uint64_t i = 0; i < steps; ++i) {
-            world.step();
-            observe(world);
-        }
-    } catch (const SimulationError& error) {
-        m.note = "blew up at step " + std::to_string(world.stepCount()) + " (" + error.what() + ")";
-    }
-    m.steps = world.stepCount();
-    return m;
-}
-
 /// True when the run did not reach its planned end: its end-of-run errors are then NaN.
 bool cutShort(const Measurement& m, std::uint64_t planned) { return m.steps < planned; }
+
+/// A judge's observe() and finish() share what it has seen of one run: made anew for each run.
+template <class Seen>
+std::shared_ptr<Seen> freshRecord(Seen initial = {}) { return std::make_shared<Seen>(std::move(initial)); }
 
 double wrapAngle(double a) { return std::remainder(a, 2 * kPi); }  // into [−π, π]
 
 // ------------------------------------------------------------------ projectile
 
-ProblemRunner prepareProjectile(const Scene& scene) {
+JudgeMaker prepareProjectile(const Scene& scene) {
     const std::string& file = scene.sourcePath;
     require(scene.dynamics.size() == 1 && scene.planes.empty() && scene.kinematics.empty() &&
                 scene.springs.empty() && scene.attractors.empty(),
@@ -75,16 +64,15 @@ ProblemRunner prepareProjectile(const Scene& scene) {
     const PointState start{d(body.position), d(body.velocity)};
     const DVec3 g = d(scene.settings.gravity + body.constantAcceleration);
     const double duration = double(scene.settings.duration);
-    return [=](IntegratorKind integrator, double h) {
-        World world(withStep(scene, integrator, h));
+    return [=](double h) {
         const std::uint64_t steps = stepsFor(duration, h);
-        Measurement m = run(world, steps, [](const World&) {});
-        const PointState exact = projectileAt(start, g, double(m.steps) * h);
-        const DynamicObject& b = world.dynamics()[0];
-        const bool whole = !cutShort(m, steps);
-        m.metrics = {{"position_error", "m", whole ? glm::length(d(b.position) - exact.position) : kNaN},
-                     {"velocity_error", "m/s", whole ? glm::length(d(b.velocity) - exact.velocity) : kNaN}};
-        return m;
+        const auto finish = [=](const BodyState& b, Measurement& m) {
+            const PointState exact = projectileAt(start, g, double(m.steps) * h);
+            const bool whole = !cutShort(m, steps);
+            m.metrics = {{"position_error", "m", whole ? glm::length(d(b.position) - exact.position) : kNaN},
+                         {"velocity_error", "m/s", whole ? glm::length(d(b.velocity) - exact.velocity) : kNaN}};
+        };
+        return Judge{steps, [](const BodyState&, double) {}, finish};
     };
 }
 
@@ -92,7 +80,7 @@ ProblemRunner prepareProjectile(const Scene& scene) {
 
 /// A body on a spring to a fixed point, moving along the spring's line: u¨ = −(k/m)·u with
 /// u = l − L₀ the stretch. The exact solution is the cosine of oscillatorAt().
-ProblemRunner prepareSpring(const Scene& scene) {
+JudgeMaker prepareSpring(const Scene& scene) {
     const std::string& file = scene.sourcePath;
     require(scene.dynamics.size() == 1 && scene.springs.size() == 1 && scene.attractors.empty() &&
                 scene.planes.empty() && scene.kinematics.empty(),
@@ -117,38 +105,40 @@ ProblemRunner prepareSpring(const Scene& scene) {
     const double restLength = double(spring.restLength);
     const double duration = kPeriodsMeasured * 2 * kPi / omega;
 
-    return [=](IntegratorKind integrator, double h) {
-        World world(withStep(scene, integrator, h));
+    const auto stretch = [=](const BodyState& b) {
+        const DVec3 r = d(b.position) - anchor;
+        return std::pair{glm::length(r) - restLength, glm::dot(glm::normalize(r), d(b.velocity))};
+    };
+
+    return [=](double h) {
         const std::uint64_t steps = stepsFor(duration, h);
-        double worstEnergy = 0;
-        const auto stretch = [&](const DynamicObject& b) {
-            const DVec3 r = d(b.position) - anchor;
-            return std::pair{glm::length(r) - restLength, glm::dot(glm::normalize(r), d(b.velocity))};
+        const auto worstEnergy = freshRecord<double>();
+        const auto observe = [=](const BodyState& b, double) {
+            const auto [u, rate] = stretch(b);
+            *worstEnergy = std::max(*worstEnergy, std::abs(energy(u, rate) - e0) / e0);
         };
-        Measurement m = run(world, steps, [&](const World& w) {
-            const auto [u, rate] = stretch(w.dynamics()[0]);
-            worstEnergy = std::max(worstEnergy, std::abs(energy(u, rate) - e0) / e0);
-        });
-        if (cutShort(m, steps)) {
-            m.metrics = {{"phase_error", "rad", kNaN}, {"amplitude_error", "1", kNaN}, {"energy_error_max", "1", kNaN}};
-            return m;
-        }
-        const auto [u, rate] = stretch(world.dynamics()[0]);
-        const auto [uExact, rateExact] = oscillatorAt(u0, rate0, omega, double(m.steps) * h);
-        // u = A·cos θ, u̇ = −A·ω·sin θ: the phase θ and the amplitude A of the swing.
-        const double phase = std::atan2(-rate / omega, u), phaseExact = std::atan2(-rateExact / omega, uExact);
-        const double amplitude = std::hypot(u, rate / omega), amplitudeExact = std::hypot(uExact, rateExact / omega);
-        m.metrics = {{"phase_error", "rad", std::abs(wrapAngle(phase - phaseExact))},
-                     {"amplitude_error", "1", amplitude / amplitudeExact - 1},
-                     {"energy_error_max", "1", worstEnergy}};
-        return m;
+        const auto finish = [=](const BodyState& b, Measurement& m) {
+            if (cutShort(m, steps)) {
+                m.metrics = {{"phase_error", "rad", kNaN}, {"amplitude_error", "1", kNaN}, {"energy_error_max", "1", kNaN}};
+                return;
+            }
+            const auto [u, rate] = stretch(b);
+            const auto [uExact, rateExact] = oscillatorAt(u0, rate0, omega, double(m.steps) * h);
+            // u = A·cos θ, u̇ = −A·ω·sin θ: the phase θ and the amplitude A of the swing.
+            const double phase = std::atan2(-rate / omega, u), phaseExact = std::atan2(-rateExact / omega, uExact);
+            const double amplitude = std::hypot(u, rate / omega), amplitudeExact = std::hypot(uExact, rateExact / omega);
+            m.metrics = {{"phase_error", "rad", std::abs(wrapAngle(phase - phaseExact))},
+                         {"amplitude_error", "1", amplitude / amplitudeExact - 1},
+                         {"energy_error_max", "1", *worstEnergy}};
+        };
+        return Judge{steps, observe, finish};
     };
 }
 
 // ------------------------------------------------------------------ Kepler orbits
 
 /// One body about one Attractor, no gravity: Kepler's problem, solved exactly by KeplerOrbit.
-ProblemRunner prepareKepler(const Scene& scene) {
+JudgeMaker prepareKepler(const Scene& scene) {
     const std::string& file = scene.sourcePath;
     require(scene.dynamics.size() == 1 && scene.attractors.size() == 1 && scene.springs.empty() &&
                 scene.planes.empty() && scene.kinematics.empty(),
@@ -163,27 +153,27 @@ ProblemRunner prepareKepler(const Scene& scene) {
     const KeplerOrbit orbit(start, mu);  // throws if the orbit is not bound
     const double e0 = orbit.specificEnergy();
     const double duration = kPeriodsMeasured * orbit.period();
-    const auto energy = [=](const DynamicObject& b) {
+    const auto energy = [=](const BodyState& b) {
         return 0.5 * glm::dot(d(b.velocity), d(b.velocity)) - mu / glm::length(d(b.position) - origin);
     };
 
-    return [=](IntegratorKind integrator, double h) {
-        World world(withStep(scene, integrator, h));
+    return [=](double h) {
         const std::uint64_t steps = stepsFor(duration, h);
-        double worstEnergy = 0;
-        Measurement m = run(world, steps, [&](const World& w) {
-            worstEnergy = std::max(worstEnergy, std::abs(energy(w.dynamics()[0]) - e0) / std::abs(e0));
-        });
-        if (cutShort(m, steps)) {
-            m.metrics = {{"position_error", "m", kNaN}, {"energy_drift", "1", kNaN}, {"energy_error_max", "1", kNaN}};
-            return m;
-        }
-        const DynamicObject& b = world.dynamics()[0];
-        const PointState exact = orbit.at(double(m.steps) * h);
-        m.metrics = {{"position_error", "m", glm::length(d(b.position) - origin - exact.position)},
-                     {"energy_drift", "1", (energy(b) - e0) / std::abs(e0)},
-                     {"energy_error_max", "1", worstEnergy}};
-        return m;
+        const auto worstEnergy = freshRecord<double>();
+        const auto observe = [=](const BodyState& b, double) {
+            *worstEnergy = std::max(*worstEnergy, std::abs(energy(b) - e0) / std::abs(e0));
+        };
+        const auto finish = [=](const BodyState& b, Measurement& m) {
+            if (cutShort(m, steps)) {
+                m.metrics = {{"position_error", "m", kNaN}, {"energy_drift", "1", kNaN}, {"energy_error_max", "1", kNaN}};
+                return;
+            }
+            const PointState exact = orbit.at(double(m.steps) * h);
+            m.metrics = {{"position_error", "m", glm::length(d(b.position) - origin - exact.position)},
+                         {"energy_drift", "1", (energy(b) - e0) / std::abs(e0)},
+                         {"energy_error_max", "1", *worstEnergy}};
+        };
+        return Judge{steps, observe, finish};
     };
 }
 
@@ -192,7 +182,7 @@ ProblemRunner prepareKepler(const Scene& scene) {
 /// A box spun near its intermediate axis with no force and no torque: the
 /// Dzhanibekov flip. Its flip times come from Euler's equations by RK4
 /// (exact_solutions.hpp); |L| and the kinetic energy are conserved exactly.
-ProblemRunner prepareFreeBox(const Scene& scene) {
+JudgeMaker prepareFreeBox(const Scene& scene) {
     const std::string& file = scene.sourcePath;
     require(scene.dynamics.size() == 1 && scene.springs.empty() && scene.attractors.empty() && scene.planes.empty() &&
                 scene.kinematics.empty(),
@@ -216,37 +206,42 @@ ProblemRunner prepareFreeBox(const Scene& scene) {
     const double l0 = glm::length(d(body.angularMomentum));
     const double e0 = 0.5 * glm::dot(d(body.angularVelocity), d(body.angularMomentum));
 
-    return [=](IntegratorKind integrator, double h) {
-        World world(withStep(scene, integrator, h));
+    // Which side of zero the body-frame L has along the intermediate axis: a flip is a change of sign.
+    const auto side = [axis](const Quat& orientation, const Vec3& angularMomentum) {
+        return (glm::conjugate(glm::dquat(orientation)) * d(angularMomentum))[axis];
+    };
+    const double startSide = side(body.orientation, body.angularMomentum);
+
+    return [=](double h) {
         const std::uint64_t steps = stepsFor(duration, h);
-        const auto side = [axis](const DynamicObject& b) {
-            return (glm::conjugate(glm::dquat(b.orientation)) * d(b.angularMomentum))[axis];
+        struct Seen {
+            std::vector<double> flips;
+            double previous = 0, worstMomentum = 0, worstEnergy = 0;
         };
-        std::vector<double> flips;
-        double previous = side(world.dynamics()[0]);
-        double worstMomentum = 0, worstEnergy = 0;
-        Measurement m = run(world, steps, [&](const World& w) {
-            const DynamicObject& b = w.dynamics()[0];
-            const double now = side(b);
-            const double t = double(w.time());
-            if ((now < 0) != (previous < 0)) flips.push_back(t - h + h * previous / (previous - now));
-            previous = now;
-            worstMomentum = std::max(worstMomentum, std::abs(glm::length(d(b.angularMomentum)) - l0) / l0);
+        const auto seen = freshRecord<Seen>({{}, startSide, 0, 0});
+        const auto observe = [=](const BodyState& b, double t) {
+            const double now = side(b.orientation, b.angularMomentum);
+            if ((now < 0) != (seen->previous < 0)) seen->flips.push_back(t - h + h * seen->previous / (seen->previous - now));
+            seen->previous = now;
+            seen->worstMomentum = std::max(seen->worstMomentum, std::abs(glm::length(d(b.angularMomentum)) - l0) / l0);
             const double e = 0.5 * glm::dot(d(b.angularVelocity), d(b.angularMomentum));
-            worstEnergy = std::max(worstEnergy, std::abs(e - e0) / e0);
-        });
-        double worstFlip = 0;
-        for (std::size_t i = 0; i < reference.size(); ++i) {
-            worstFlip = i < flips.size() ? std::max(worstFlip, std::abs(flips[i] - reference[i])) : kNaN;
-        }
-        if (flips.size() != reference.size()) {
-            m.note = std::to_string(flips.size()) + " flips instead of " + std::to_string(reference.size());
-        }
-        const bool whole = !cutShort(m, steps);
-        m.metrics = {{"flip_time_error", "s", whole ? worstFlip : kNaN},
-                     {"energy_error_max", "1", whole ? worstEnergy : kNaN},
-                     {"momentum_error_max", "1", whole ? worstMomentum : kNaN}};
-        return m;
+            seen->worstEnergy = std::max(seen->worstEnergy, std::abs(e - e0) / e0);
+        };
+        const auto finish = [=](const BodyState&, Measurement& m) {
+            const std::vector<double>& flips = seen->flips;
+            double worstFlip = 0;
+            for (std::size_t i = 0; i < reference.size(); ++i) {
+                worstFlip = i < flips.size() ? std::max(worstFlip, std::abs(flips[i] - reference[i])) : kNaN;
+            }
+            if (flips.size() != reference.size()) {
+                m.note = std::to_string(flips.size()) + " flips instead of " + std::to_string(reference.size());
+            }
+            const bool whole = !cutShort(m, steps);
+            m.metrics = {{"flip_time_error", "s", whole ? worstFlip : kNaN},
+                         {"energy_error_max", "1", whole ? seen->worstEnergy : kNaN},
+                         {"momentum_error_max", "1", whole ? seen->worstMomentum : kNaN}};
+        };
+        return Judge{steps, observe, finish};
     };
 }
 
@@ -254,7 +249,7 @@ ProblemRunner prepareFreeBox(const Scene& scene) {
 
 /// A ball dropped on a plane: with restitution e (ball's times plane's) each
 /// bounce keeps e² of the energy, so apex n is at e^(2n)·h₀ above the floor.
-ProblemRunner prepareBounce(const Scene& scene) {
+JudgeMaker prepareBounce(const Scene& scene) {
     const std::string& file = scene.sourcePath;
     require(scene.dynamics.size() == 1 && scene.planes.size() == 1 && scene.springs.empty() &&
                 scene.attractors.empty() && scene.kinematics.empty() && scene.dynamics[0].shape == Shape::Sphere,
@@ -271,38 +266,43 @@ ProblemRunner prepareBounce(const Scene& scene) {
     const double dropHeight = glm::dot(d(ball.position) - d(floor.position), normal) - radius;
     const double restitution = double(ball.elasticity) * double(floor.elasticity);
     const double duration = double(scene.settings.duration);
+    const DVec3 floorPoint = d(floor.position);
 
-    return [=](IntegratorKind integrator, double h) {
-        World world(withStep(scene, integrator, h));
+    return [=](double h) {
         const std::uint64_t steps = stepsFor(duration, h);
-        std::vector<double> apexes;
-        double previousRate = 0;
-        Measurement m = run(world, steps, [&](const World& w) {
-            if (static_cast<int>(apexes.size()) >= kApexesMeasured) return;
-            const DynamicObject& b = w.dynamics()[0];
+        struct Seen {
+            std::vector<double> apexes;
+            double previousRate = 0;
+        };
+        const auto seen = freshRecord<Seen>();
+        const auto observe = [=](const BodyState& b, double) {
+            if (static_cast<int>(seen->apexes.size()) >= kApexesMeasured) return;
             const double rate = glm::dot(d(b.velocity), normal);
-            if (previousRate > 0 && rate <= 0) {
+            if (seen->previousRate > 0 && rate <= 0) {
                 // Past the top: the ballistic apex of this state, height + v²/(2g), is where it turned.
-                const double height = glm::dot(d(b.position) - d(floor.position), normal) - radius;
-                apexes.push_back(height + rate * rate / (2 * gravity));
+                const double height = glm::dot(d(b.position) - floorPoint, normal) - radius;
+                seen->apexes.push_back(height + rate * rate / (2 * gravity));
             }
-            previousRate = rate;
-        });
-        double worst = 0;
-        double first = kNaN;
-        double expected = dropHeight;
-        for (int n = 0; n < kApexesMeasured; ++n) {
-            expected *= restitution * restitution;
-            const double error = n < static_cast<int>(apexes.size()) ? std::abs(apexes[n] / expected - 1) : kNaN;
-            worst = std::max(worst, error);  // NaN propagates: a missing apex is no measurement
-            if (n == 0) first = error;
-            if (std::isnan(error)) worst = kNaN;
-        }
-        if (static_cast<int>(apexes.size()) < kApexesMeasured) {
-            m.note = std::to_string(apexes.size()) + " apexes instead of " + std::to_string(kApexesMeasured);
-        }
-        m.metrics = {{"apex_error_max", "1", worst}, {"first_apex_error", "1", first}};
-        return m;
+            seen->previousRate = rate;
+        };
+        const auto finish = [=](const BodyState&, Measurement& m) {
+            const std::vector<double>& apexes = seen->apexes;
+            double worst = 0;
+            double first = kNaN;
+            double expected = dropHeight;
+            for (int n = 0; n < kApexesMeasured; ++n) {
+                expected *= restitution * restitution;
+                const double error = n < static_cast<int>(apexes.size()) ? std::abs(apexes[n] / expected - 1) : kNaN;
+                worst = std::max(worst, error);  // NaN propagates: a missing apex is no measurement
+                if (n == 0) first = error;
+                if (std::isnan(error)) worst = kNaN;
+            }
+            if (static_cast<int>(apexes.size()) < kApexesMeasured) {
+                m.note = std::to_string(apexes.size()) + " apexes instead of " + std::to_string(kApexesMeasured);
+            }
+            m.metrics = {{"apex_error_max", "1", worst}, {"first_apex_error", "1", first}};
+        };
+        return Judge{steps, observe, finish};
     };
 }
 
@@ -311,7 +311,9 @@ ProblemRunner prepareBounce(const Scene& scene) {
 /// A bob on a DistanceJoint to a fixed point, released from rest: a simple
 /// pendulum (the rod holds the bob's centre, so nothing turns it). Its exact
 /// period at amplitude θ₀ is 4·√(L/g)·K(sin(θ₀/2)) (pendulumPeriod()).
-ProblemRunner preparePendulum(const Scene& scene) {
+/// With @p bobTurnsWithRod, the judges of an engine whose rod pins the bob at
+/// the pivot instead (preparePendulumTurningBob(), in the header).
+JudgeMaker preparePendulum(const Scene& scene, bool bobTurnsWithRod) {
     const std::string& file = scene.sourcePath;
     require(scene.dynamics.size() == 1 && scene.joints.size() == 1 && scene.springs.empty() &&
                 scene.attractors.empty() && scene.planes.empty() && scene.kinematics.empty(),
@@ -342,44 +344,59 @@ ProblemRunner preparePendulum(const Scene& scene) {
     require(theta0 > 0 && theta0 < kPi && glm::length(sideways) > 0, file,
             "release the bob away from the vertical (0 < theta0 < 180 degrees)");
     const DVec3 across = glm::normalize(sideways);
-    const double period = pendulumPeriod(length, gravity, theta0);
     const double mass = double(body.mass);
-    // Energy above the lowest point, m·g·L·(1 − cos θ₀) at the start.
-    const auto energy = [=](const DynamicObject& b) {
-        return 0.5 * mass * glm::dot(d(b.velocity), d(b.velocity)) -
+    // A bob that turns with its rod swings like a simple pendulum of length L + I/(m·L),
+    // I its moment about the swing's axis (the header says why).
+    double equivalentLength = length;
+    if (bobTurnsWithRod) {
+        const World built(scene);  // fills in the bob's principal moments
+        const DynamicObject& bob = built.dynamics()[0];
+        const DVec3 swingAxis = glm::conjugate(glm::dquat(bob.orientation)) * glm::normalize(glm::cross(down, across));
+        const double moment = glm::dot(d(bob.inertiaBody), swingAxis * swingAxis);
+        equivalentLength += moment / (mass * length);
+    }
+    const double period = pendulumPeriod(equivalentLength, gravity, theta0);
+    // Energy above the lowest point, m·g·L·(1 − cos θ₀) at the start; ½·ω·L_bob is the bob's
+    // turning (zero when the rod holds its centre).
+    const auto energy = [=](const BodyState& b) {
+        return 0.5 * mass * glm::dot(d(b.velocity), d(b.velocity)) +
+               0.5 * glm::dot(d(b.angularVelocity), d(b.angularMomentum)) -
                mass * gravity * glm::dot(d(b.position) - pivot - length * down, down);
     };
     const double e0 = mass * gravity * length * (1 - std::cos(theta0));
     // The first upward crossing of the vertical comes ¾ of a period after the release; then one per period.
     const double duration = (kPeriodsMeasured + 1) * period * kPendulumRunMargin;
 
-    return [=](IntegratorKind integrator, double h) {
-        World world(withStep(scene, integrator, h));
+    return [=](double h) {
         const std::uint64_t steps = stepsFor(duration, h);
-        std::vector<double> crossings;
-        double previous = glm::dot(start - pivot, across);
-        double worstLength = 0, worstEnergy = 0;
-        Measurement m = run(world, steps, [&](const World& w) {
-            const DynamicObject& b = w.dynamics()[0];
+        struct Seen {
+            std::vector<double> crossings;
+            double previous = 0, worstLength = 0, worstEnergy = 0;
+        };
+        const auto seen = freshRecord<Seen>({{}, glm::dot(start - pivot, across), 0, 0});
+        const auto observe = [=](const BodyState& b, double t) {
             const double now = glm::dot(d(b.position) - pivot, across);
-            if (previous < 0 && now >= 0 && crossings.size() < std::size_t(kPeriodsMeasured) + 1) {
+            if (seen->previous < 0 && now >= 0 && seen->crossings.size() < std::size_t(kPeriodsMeasured) + 1) {
                 // Linear interpolation inside the step for the moment the bob passes under the pivot.
-                crossings.push_back(double(w.time()) - h * now / (now - previous));
+                seen->crossings.push_back(t - h * now / (now - seen->previous));
             }
-            previous = now;
-            worstLength = std::max(worstLength, std::abs(glm::length(d(b.position) - pivot) - length));
-            worstEnergy = std::max(worstEnergy, std::abs(energy(b) - e0) / e0);
-        });
-        const bool whole = !cutShort(m, steps) && crossings.size() == std::size_t(kPeriodsMeasured) + 1;
-        if (!cutShort(m, steps) && !whole) {
-            m.note = std::to_string(crossings.size()) + " crossings of the vertical instead of " +
-                     std::to_string(int(kPeriodsMeasured) + 1);
-        }
-        const double measured = whole ? (crossings.back() - crossings.front()) / kPeriodsMeasured : kNaN;
-        m.metrics = {{"period_error", "1", whole ? std::abs(measured / period - 1) : kNaN},
-                     {"length_error_max", "m", !cutShort(m, steps) ? worstLength : kNaN},
-                     {"energy_error_max", "1", !cutShort(m, steps) ? worstEnergy : kNaN}};
-        return m;
+            seen->previous = now;
+            seen->worstLength = std::max(seen->worstLength, std::abs(glm::length(d(b.position) - pivot) - length));
+            seen->worstEnergy = std::max(seen->worstEnergy, std::abs(energy(b) - e0) / e0);
+        };
+        const auto finish = [=](const BodyState&, Measurement& m) {
+            const std::vector<double>& crossings = seen->crossings;
+            const bool whole = !cutShort(m, steps) && crossings.size() == std::size_t(kPeriodsMeasured) + 1;
+            if (!cutShort(m, steps) && !whole) {
+                m.note = std::to_string(crossings.size()) + " crossings of the vertical instead of " +
+                         std::to_string(int(kPeriodsMeasured) + 1);
+            }
+            const double measured = whole ? (crossings.back() - crossings.front()) / kPeriodsMeasured : kNaN;
+            m.metrics = {{"period_error", "1", whole ? std::abs(measured / period - 1) : kNaN},
+                         {"length_error_max", "m", !cutShort(m, steps) ? seen->worstLength : kNaN},
+                         {"energy_error_max", "1", !cutShort(m, steps) ? seen->worstEnergy : kNaN}};
+        };
+        return Judge{steps, observe, finish};
     };
 }
 
@@ -400,7 +417,8 @@ const std::vector<ReferenceProblem>& problems() {
         {"bounce", "reference_bounce.scene", "A ball dropped 1 m with e = 0.8, apexes against e^(2n) * 1 m",
          prepareBounce, ""},
         {"pendulum", "reference_pendulum.scene",
-         "A 1 m pendulum released at 60 degrees, period against 4 sqrt(L/g) K(sin(theta0/2))", preparePendulum, ""},
+         "A 1 m pendulum released at 60 degrees, period against 4 sqrt(L/g) K(sin(theta0/2))",
+         [](const Scene& scene) { return preparePendulum(scene, false); }, ""},
     };
     return list;
 }
@@ -408,6 +426,13 @@ const std::vector<ReferenceProblem>& problems() {
 }  // namespace
 
 std::span<const ReferenceProblem> referenceProblems() { return problems(); }
+
+JudgeMaker preparePendulumTurningBob(const Scene& scene) { return preparePendulum(scene, true); }
+
+Measurement runInStepwise(const Scene& scene, const JudgeMaker& judgeAt, IntegratorKind integrator, double h) {
+    StepwiseEngine engine{World(withStep(scene, integrator, h))};
+    return runJudged(engine, judgeAt(h), h);
+}
 
 Scene withStep(const Scene& scene, IntegratorKind integrator, double h) {
     Scene copy = scene;

@@ -22,6 +22,8 @@
 #include <string>
 #include <vector>
 
+#include "core/errors.hpp"
+#include "scenario_metrics.hpp"
 #include "world/scene.hpp"
 
 namespace stepwise::bench {
@@ -40,8 +42,23 @@ struct Measurement {
     std::string note;             ///< Anything a reader must know: "blew up at step 812", "2 of 3 flips".
 };
 
-/// @brief Runs the prepared problem with @p integrator at step @p h (s) and measures its errors.
-using ProblemRunner = std::function<Measurement(IntegratorKind integrator, double h)>;
+/// @brief How a run of one problem at one time step is judged, whichever engine runs it.
+///
+/// A judge sees only the body's state after each step (BodyState, which
+/// Stepwise and Bullet both give), so `stepwise-bench precision` and the
+/// side-by-side with Bullet measure the same errors with the same code.
+struct Judge {
+    std::uint64_t steps = 0;  ///< Steps to run: the problem's duration ÷ h, rounded.
+    /// Called after step n = 1, 2, … with the body's state and t = n·h, s.
+    std::function<void(const BodyState& body, double time)> observe;
+    /// Writes the errors into @p m once the run has ended (m.steps and m.note
+    /// are set): @p last is the body's last state. Errors that need the run's
+    /// planned end are NaN when it was cut short.
+    std::function<void(const BodyState& last, Measurement& m)> finish;
+};
+
+/// @brief Makes the judge of a run at time step @p h (s).
+using JudgeMaker = std::function<Judge(double h)>;
 
 /// @brief A reference problem: its scene file and how to judge a run of it.
 struct ReferenceProblem {
@@ -49,13 +66,51 @@ struct ReferenceProblem {
     std::string sceneFile;  ///< File name in config/; empty while the problem cannot be built yet.
     std::string what;       ///< One line for the report.
     /// @brief Checks the loaded scene is the problem it should be, computes the
-    /// exact reference once, and returns the runner. @throws std::runtime_error naming what is wrong.
-    std::function<ProblemRunner(const Scene& scene)> prepare;
+    /// exact reference once, and returns the judges. @throws std::runtime_error naming what is wrong.
+    std::function<JudgeMaker(const Scene& scene)> prepare;
     std::string unavailable;  ///< Non-empty: why the problem is skipped (prepare is then empty).
 };
 
 /// @brief Every reference problem, in the order the report lists them.
 std::span<const ReferenceProblem> referenceProblems();
+
+/// @brief The pendulum's judges for an engine whose rod is a pin at the pivot
+/// (Bullet's btPoint2PointConstraint), so that the bob turns with the rod.
+///
+/// That bob is a *compound* pendulum: about the pivot its moment of inertia is
+/// I_p = I + m·L² (I the bob's own, about its centre, across the swing), so
+/// its equation of motion I_p·θ¨ = −m·g·L·sin θ is the simple pendulum's with
+/// the length I_p/(m·L) = L + I/(m·L): 1 mm longer for the reference scene's
+/// ball of 1 kg and 5 cm on its 1 m rod, a period 0.05 % longer. Its energy
+/// counts the bob's turning, ½·ω·L_bob.
+/// Stepwise's DistanceJoint holds the bob's centre and never turns it, so its
+/// judges (referenceProblems()) use L itself.
+JudgeMaker preparePendulumTurningBob(const Scene& scene);
+
+/// @brief Runs @p judge over @p engine (anything with step() and states(out)):
+/// judge.steps steps, observing each; a SimulationError ends the run early
+/// and is noted. The first body of the engine's states is the one judged.
+template <class Engine>
+Measurement runJudged(Engine& engine, const Judge& judge, double h) {
+    Measurement m;
+    std::vector<BodyState> states;
+    engine.states(states);
+    try {
+        for (std::uint64_t n = 1; n <= judge.steps; ++n) {
+            engine.step();
+            m.steps = n;
+            engine.states(states);
+            judge.observe(states.front(), double(n) * h);
+        }
+    } catch (const SimulationError& error) {
+        m.note = "blew up at step " + std::to_string(m.steps) + " (" + error.what() + ")";
+    }
+    judge.finish(states.front(), m);
+    return m;
+}
+
+/// @brief Runs a problem in Stepwise's World with @p integrator at step @p h (s), judged by @p judgeAt.
+Measurement runInStepwise(const Scene& scene, const JudgeMaker& judgeAt, IntegratorKind integrator, double h);
 
 /// @brief A copy of @p scene with the World's time step and integrator replaced.
 Scene withStep(const Scene& scene, IntegratorKind integrator, double h);

@@ -25,7 +25,8 @@ const char* const kScalingUsage =
     "       stepwise-bench stage-costs [--quick] [--sizes 1000,16000,64000] [--settle 300] [--rounds 20] [--seed 1]\n"
     "                                  [--markdown PATH]\n"
     "       stepwise-bench bullet [--quick] [--sizes 1000,4000,16000] [--steps 600] [--markdown PATH] [--config DIR]\n"
-    "                             [--scenarios rain,rain-sweep,stacks,free-box,bounce,incline] [--sweep-csv PATH]\n"
+    "                             [--scenarios rain,rain-sweep,stacks,free-box,bounce,incline,reference]\n"
+    "                             [--sweep-csv PATH]\n"
     "       stepwise-bench rain-scene --count N [--seed S] --out FILE\n"
     "\n"
     "  scaling: Stepwise's ms/step and us per body per step on sphere rain (r = 0.5 m into an open\n"
@@ -33,7 +34,8 @@ const char* const kScalingUsage =
     "  stage-costs: the settled sphere rain at each size, the sizes stepped in turn in one process (so that a\n"
     "  shared machine's slow minutes fall on all of them), each stage's cost in ns per body per step.\n"
     "  bullet: the same scene files in Stepwise and in Bullet 3, one table per scenario (sphere rain,\n"
-    "  the 1k rain's work-precision sweep, pyramid, tower, free box, bounce at 1/60 and 1/240 s, incline),\n"
+    "  the 1k rain's work-precision sweep, pyramid, tower, free box, bounce at 1/60 and 1/240 s, incline,\n"
+    "  and the precision benchmark's reference problems at 1/60, 1/240 and 1/960 s),\n"
     "  then the verdicts on the targets of issue #7; needs -DSTEPWISE_WITH_BULLET=ON.\n"
     "  rain-scene: writes the sphere-rain scene of N spheres (config/bench_sphere_rain_1k.scene is N = 1000).\n";
 

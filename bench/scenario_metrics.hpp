@@ -33,6 +33,13 @@ struct BodyState {
 /// @brief Copies the states of @p world's dynamic bodies into @p out (resized, no allocation once grown).
 void statesOf(const World& world, std::vector<BodyState>& out);
 
+/// @brief Stepwise behind the same two calls as bench/bullet/BulletWorld, so one driver runs either engine.
+struct StepwiseEngine {
+    World world;
+    void step() { world.step(); }
+    void states(std::vector<BodyState>& out) const { statesOf(world, out); }
+};
+
 /// @brief @p scene with `Threads=1`. The timed benchmarks measure what one
 /// core does, as Bullet's default world does; without this the narrowphase
 /// would take the scene's default, a thread per core, and a second thread's

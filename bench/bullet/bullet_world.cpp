@@ -4,6 +4,7 @@
 
 #include <btBulletDynamicsCommon.h>
 
+#include <algorithm>
 #include <map>
 #include <stdexcept>
 #include <utility>
@@ -19,11 +20,10 @@ Vec3 toVec3(const btVector3& v) { return {Real(v.x()), Real(v.y()), Real(v.z())}
 
 }  // namespace
 
-BulletWorld::BulletWorld(const Scene& scene) : timeStep_(double(scene.settings.timeStep)) {
-    if (!scene.kinematics.empty() || !scene.springs.empty() || !scene.joints.empty() || !scene.attractors.empty()) {
-        throw std::invalid_argument(scene.sourcePath +
-                                    ": the Bullet side translates dynamic bodies and planes only (no kinematic "
-                                    "bodies, springs, joints or attractors)");
+BulletWorld::BulletWorld(const Scene& scene)
+    : timeStep_(double(scene.settings.timeStep)), springs_(scene.springs), attractors_(scene.attractors) {
+    if (!scene.kinematics.empty()) {
+        throw std::invalid_argument(scene.sourcePath + ": the Bullet side does not translate kinematic bodies");
     }
     configuration_ = std::make_unique<btDefaultCollisionConfiguration>();
     dispatcher_ = std::make_unique<btCollisionDispatcher>(configuration_.get());
@@ -72,6 +72,23 @@ BulletWorld::BulletWorld(const Scene& scene) : timeStep_(double(scene.settings.t
         if (!scene.settings.sleeping) rigid.setActivationState(DISABLE_DEACTIVATION);
         world_->addRigidBody(&rigid);
     }
+    for (const JointDef& joint : scene.joints) {
+        const auto body = std::find_if(scene.dynamics.begin(), scene.dynamics.end(),
+                                       [&](const DynamicObject& b) { return b.name == joint.bodyA; });
+        const bool pendulumRod = joint.kind == JointKind::Distance && joint.bodyB.empty() &&
+                                 body != scene.dynamics.end() && glm::length(joint.anchorA - body->position) == 0;
+        if (!pendulumRod) {
+            throw std::invalid_argument(scene.sourcePath + ": " + joint.name +
+                                        ": the Bullet side translates only a DistanceJoint from a body's centre to a "
+                                        "fixed point");
+        }
+        // The pin: the fixed point, in the body's own frame, stays where it is in the world.
+        btRigidBody& rigid = *dynamics_[std::size_t(body - scene.dynamics.begin())];
+        const btVector3 pivotInBody = rigid.getWorldTransform().inverse() * bt(joint.anchorB);
+        joints_.push_back(std::make_unique<btPoint2PointConstraint>(rigid, pivotInBody));
+        world_->addConstraint(joints_.back().get());
+    }
+    if (!springs_.empty() || !attractors_.empty()) world_->setInternalTickCallback(&BulletWorld::applyForces, this, true);
     for (const CollisionPlane& plane : scene.planes) {
         const Vec3 n = glm::normalize(plane.normal);
         shapes_.push_back(std::make_unique<btStaticPlaneShape>(bt(n), btScalar(glm::dot(n, plane.position))));
@@ -85,9 +102,38 @@ BulletWorld::BulletWorld(const Scene& scene) : timeStep_(double(scene.settings.t
 }
 
 BulletWorld::~BulletWorld() {
-    // Bodies leave the world before it (and their shapes) are destroyed.
+    // Joints and bodies leave the world before it (and their shapes) are destroyed.
+    for (auto& joint : joints_) world_->removeConstraint(joint.get());
     for (auto& body : dynamics_) world_->removeRigidBody(body.get());
     for (auto& body : statics_) world_->removeRigidBody(body.get());
+}
+
+void BulletWorld::applyForces(btDynamicsWorld* world, btScalar) {
+    const BulletWorld& self = *static_cast<const BulletWorld*>(world->getWorldUserInfo());
+    for (const Spring& spring : self.springs_) {
+        // Spring's force law (src/forces/spring.hpp), on Bullet's bodies: anchors in the body frames.
+        btRigidBody& a = *self.dynamics_[spring.bodyA];
+        btRigidBody* b = spring.bodyB == kFixedInWorld ? nullptr : self.dynamics_[spring.bodyB].get();
+        const btVector3 anchorA = a.getWorldTransform() * bt(spring.anchorA);
+        const btVector3 anchorB = b ? b->getWorldTransform() * bt(spring.anchorB) : bt(spring.anchorB);
+        const btVector3 armA = anchorA - a.getCenterOfMassPosition();
+        const btVector3 armB = b ? anchorB - b->getCenterOfMassPosition() : btVector3(0, 0, 0);
+        const btVector3 between = anchorB - anchorA;
+        const btScalar length = between.length();
+        if (length < btScalar(kMinSpringLength)) continue;
+        const btVector3 n = between / length;
+        const btVector3 rate = (b ? b->getVelocityInLocalPoint(armB) : btVector3(0, 0, 0)) - a.getVelocityInLocalPoint(armA);
+        const btVector3 force =
+            (btScalar(spring.stiffness) * (length - btScalar(spring.restLength)) + btScalar(spring.damping) * rate.dot(n)) * n;
+        a.applyForce(force, armA);
+        if (b) b->applyForce(-force, armB);
+    }
+    for (const Attractor& attractor : self.attractors_) {
+        for (const auto& body : self.dynamics_) {
+            const Vec3 acceleration = attractorAcceleration(attractor, toVec3(body->getCenterOfMassPosition()));
+            body->applyCentralForce(bt(acceleration) / body->getInvMass());
+        }
+    }
 }
 
 void BulletWorld::step() {

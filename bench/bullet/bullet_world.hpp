@@ -15,17 +15,31 @@
 /// | Elasticity, Friction      | setRestitution, setFriction: Bullet combines both by product, as Stepwise |
 /// | World TimeStep, Gravity   | stepSimulation(h, 1, h): exactly one fixed step per call; setGravity    |
 /// | World Sleep=false         | DISABLE_DEACTIVATION on every body; Sleep=true keeps Bullet's default sleeping |
+/// | Spring                    | its force, F = (k·(l − L₀) + c·(v_B − v_A)·n)·n, applied at the anchors before each step |
+/// | Attractor                 | its pull, m·a with a = −μ·r/\|r\|³ (attractorAcceleration()), at the centre before each step |
+/// | DistanceJoint from a body's centre to a fixed point | btPoint2PointConstraint at the fixed point: the body turns with the rod |
+///
+/// Bullet has no force generators: its manual's way to add a force is a
+/// callback before each internal step (setInternalTickCallback(…, true)) that
+/// calls applyForce, which is what springs and attractors get here. Bullet
+/// then integrates every force as Stepwise's SymplecticEuler does: v += h·F/m,
+/// then x += h·v. Bullet has no distance joint either; a pin at the pivot is
+/// the pendulum its users build, and it makes the bob turn with the rod (a
+/// compound pendulum: preparePendulumTurningBob() in bench/reference_problems.hpp
+/// judges it against its own exact period).
 ///
 /// Everything else is Bullet's default: btDbvtBroadphase, btSequentialImpulseConstraintSolver
 /// with 10 iterations, split impulse on, ERP 0.2, no continuous collision detection,
-/// implicit gyroscopic term on. Kinematic bodies, springs, joints, attractors and
-/// per-body accelerations are not translated (the constructor throws).
+/// implicit gyroscopic term on. Kinematic bodies, other joints and per-body
+/// accelerations are not translated (the constructor throws).
 #pragma once
 
 #include <memory>
 #include <vector>
 
 #include "../scenario_metrics.hpp"
+#include <LinearMath/btScalar.h>
+
 #include "world/scene.hpp"
 
 class btCollisionShape;
@@ -36,6 +50,8 @@ class btSequentialImpulseConstraintSolver;
 class btDiscreteDynamicsWorld;
 class btRigidBody;
 class btDefaultMotionState;
+class btDynamicsWorld;
+class btTypedConstraint;
 
 namespace stepwise::bench {
 
@@ -63,6 +79,9 @@ public:
     void setSolverIterations(int iterations);
 
 private:
+    /// Bullet's pre-step callback: adds the springs' and attractors' forces for the step about to run.
+    static void applyForces(btDynamicsWorld* world, btScalar timeStep);
+
     double timeStep_;
     std::unique_ptr<btDefaultCollisionConfiguration> configuration_;
     std::unique_ptr<btCollisionDispatcher> dispatcher_;
@@ -74,6 +93,9 @@ private:
     std::vector<std::unique_ptr<btRigidBody>> dynamics_;  ///< In the scene's order.
     std::vector<std::unique_ptr<btRigidBody>> statics_;   ///< The planes.
     std::vector<Vec3> inertiaBody_;                       ///< Principal moments, for L = I_world·ω.
+    std::vector<Spring> springs_;                         ///< The scene's, as it gives them.
+    std::vector<Attractor> attractors_;                   ///< The scene's, as it gives them.
+    std::vector<std::unique_ptr<btTypedConstraint>> joints_;
 };
 
 }  // namespace stepwise::bench

@@ -17,7 +17,7 @@ struct SideBySideOptions {
     std::optional<std::string> markdownPath; ///< --markdown PATH: the tables as Markdown.
     std::optional<std::string> sweepCsvPath; ///< --sweep-csv PATH: the rain sweep's runs as CSV (for the plot).
     int rainSteps = 600;                     ///< --steps N: steps of each sphere rain (issue #7: 600).
-    /// --scenarios: which of rain, rain-sweep, stacks, free-box, bounce, incline to run (default all).
+    /// --scenarios: which of rain, rain-sweep, stacks, free-box, bounce, incline, reference to run (default all).
     std::vector<std::string> scenarios;
 };
 
