@@ -22,7 +22,17 @@ constexpr int kExitOk = 0;
 constexpr int kExitUsage = 2;
 
 const char* const kUsage =
-    "usage: stepwise-bench precision [options]\n"
+    "stepwise-bench: the benchmarks behind docs/benchmarks.md (scripts/bench.sh runs them)\n"
+    "\n"
+    "  precision     each integrator's error and cost on the reference problems\n"
+    "  stress        the stress cases, each judged pass or fail\n"
+    "  scaling       the cost per body from 1k to 64k bodies\n"
+    "  stage-costs   the settled rain's cost per body, stage by stage\n"
+    "  bullet        the same scene files in Stepwise and in Bullet 3\n"
+    "  rain-scene    writes a sphere-rain scene file\n"
+    "\n"
+    "usage: stepwise-bench precision [--quick] [--repeats N] [--csv PATH] [--markdown PATH] [--config DIR]\n"
+    "                                [--problems a,b,...]\n"
     "\n"
     "  Runs every reference problem (config/reference_*.scene) with every integrator\n"
     "  at time steps 1/30 ... 1/1920 s and prints each run's errors against the exact\n"
@@ -35,8 +45,6 @@ const char* const kUsage =
     "  --config DIR      where the scene files are (default: the source tree's config/)\n"
     "  --problems LIST   comma-separated problem names, e.g. spring,bounce\n"
     "\n"
-    "  scripts/bench.sh runs it and draws the plots into docs/images/.\n"
-    "\n"
     "usage: stepwise-bench stress [--quick] [--markdown PATH] [--config DIR] [--cases a,b,...]\n"
     "\n"
     "  Runs the stress cases (deep stacks, a 1000-body elastic gas, a bullet at a thin\n"
@@ -46,7 +54,9 @@ const char* const kUsage =
     "\n"
     "  --quick           shorter runs, fewer bodies (the CTest test bench_stress_quick)\n"
     "  --markdown PATH   write the table as Markdown (for docs/benchmarks.md)\n"
-    "  --cases LIST      comma-separated case names, e.g. tower,random\n";
+    "  --config DIR      where the scene files are (default: the source tree's config/)\n"
+    "  --cases LIST      comma-separated case names, e.g. tower,random\n"
+    "\n";
 
 int usageError(const std::string& message) {
     std::fprintf(stderr, "stepwise-bench: error: %s\n\n%s", message.c_str(), kUsage);

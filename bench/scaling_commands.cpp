@@ -19,32 +19,42 @@
 namespace stepwise::bench {
 
 const char* const kScalingUsage =
-    "       stepwise-bench scaling [--quick] [--sizes 1000,4000,16000,64000] [--pile-sizes 1000,4000,16000]\n"
-    "                              [--steps 240] [--large-steps 240] [--pile-steps 120] [--seed 1] [--markdown PATH]\n"
-    "                              [--scenes sphere-rain,box-pile,pyramids]\n"
-    "       stepwise-bench stage-costs [--quick] [--sizes 1000,16000,64000] [--settle 300] [--rounds 20] [--seed 1]\n"
-    "                                  [--markdown PATH]\n"
-    "       stepwise-bench bullet [--quick] [--sizes 1000,4000,16000] [--steps 600] [--markdown PATH] [--config DIR]\n"
-    "                             [--scenarios rain,rain-sweep,stacks,free-box,bounce,incline,reference]\n"
-    "                             [--sweep-csv PATH]\n"
-    "       stepwise-bench rain-scene --count N [--seed S] --out FILE\n"
+    "usage: stepwise-bench scaling [--quick] [--sizes 1000,4000,16000,64000] [--pile-sizes 1000,4000,16000]\n"
+    "                              [--steps 240] [--large-steps 240] [--pile-steps 120] [--seed 1]\n"
+    "                              [--scenes sphere-rain,box-pile,pyramids] [--markdown PATH]\n"
     "\n"
-    "  scaling: Stepwise's ms/step and us per body per step on sphere rain (r = 0.5 m into an open\n"
-    "  box), box piles and pyramids of growing size, and the broadphase tracker's table of each run.\n"
-    "  stage-costs: the settled sphere rain at each size, the sizes stepped in turn in one process (so that a\n"
-    "  shared machine's slow minutes fall on all of them), each stage's cost in ns per body per step.\n"
-    "  bullet: the same scene files in Stepwise and in Bullet 3, one table per scenario (sphere rain,\n"
-    "  the 1k rain's work-precision sweep, pyramid, tower, free box, bounce at 1/60 and 1/240 s, incline,\n"
-    "  and the precision benchmark's reference problems at 1/60, 1/240 and 1/960 s),\n"
-    "  then the verdicts on the targets of issue #7; needs -DSTEPWISE_WITH_BULLET=ON.\n"
-    "  rain-scene: writes the sphere-rain scene of N spheres (config/bench_sphere_rain_1k.scene is N = 1000).\n";
+    "  Stepwise's ms per step and µs per body per step on sphere rain (r = 0.5 m into an open box),\n"
+    "  box piles and pyramids of growing size, and the broadphase tracker's table of each run.\n"
+    "  --steps is the steps of a rain, --large-steps of a rain of 32 000 spheres or more,\n"
+    "  --pile-steps of a pile or pyramids; --quick one small run of each (bench_scaling_quick).\n"
+    "\n"
+    "usage: stepwise-bench stage-costs [--quick] [--sizes 1000,16000,64000] [--settle 300] [--rounds 20]\n"
+    "                                  [--seed 1] [--markdown PATH]\n"
+    "\n"
+    "  The sphere rain at each size, settled for --settle untimed steps, then the sizes stepped in\n"
+    "  turn for --rounds rounds in one process (so a shared machine's slow minutes fall on all of\n"
+    "  them): each stage's cost in ns per body per step, and the megabytes of each size's arrays.\n"
+    "\n"
+    "usage: stepwise-bench bullet [--quick] [--sizes 1000,4000,16000] [--steps 600] [--config DIR]\n"
+    "                             [--scenarios rain,rain-sweep,stacks,free-box,bounce,incline,reference]\n"
+    "                             [--markdown PATH] [--sweep-csv PATH]\n"
+    "\n"
+    "  The same scene files in Stepwise and in Bullet 3, one table per scenario: sphere rain\n"
+    "  (--sizes, --steps), the 1k rain's run time against overlap (its runs as CSV: --sweep-csv),\n"
+    "  pyramid and tower, free box, bounce at 1/60 and 1/240 s, incline, and the precision\n"
+    "  benchmark's reference problems at 1/60, 1/240 and 1/960 s; then the verdicts on the\n"
+    "  targets of issue #7. Needs a build with -DSTEPWISE_WITH_BULLET=ON.\n"
+    "\n"
+    "usage: stepwise-bench rain-scene --count N [--seed S] --out FILE\n"
+    "\n"
+    "  Writes the sphere-rain scene of N spheres (config/bench_sphere_rain_1k.scene is N = 1000).\n";
 
 namespace {
 
 constexpr int kExitUsage = 2;
 
 int usage(const std::string& message) {
-    std::fprintf(stderr, "stepwise-bench: error: %s\n\nusage:\n%s", message.c_str(), kScalingUsage);
+    std::fprintf(stderr, "stepwise-bench: error: %s\n\n%s", message.c_str(), kScalingUsage);
     return kExitUsage;
 }
 
