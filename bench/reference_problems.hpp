@@ -4,7 +4,10 @@
 /// Each problem is a scene file in config/ (so a student can open, run and
 /// change it) plus the exact solution it is judged against. The benchmark
 /// loads the file once, overrides only the World's TimeStep and Integrator,
-/// runs the engine's own World::step() and compares.
+/// runs the engine's own World::step() and compares. The comparing is a
+/// Judge, which sees only the body's state after each step, so the Bullet
+/// side by side (bench/bullet/side_by_side.cpp) judges Bullet's run of the
+/// same scene with the same code.
 ///
 /// | problem            | scene file                          | primary error (first metric)                      | also measured |
 /// |--------------------|-------------------------------------|---------------------------------------------------|---------------|
