@@ -80,13 +80,14 @@ struct Table {
 
     /// A figure where smaller is better: the ratio column is bullet/stepwise, unless
     /// Stepwise's figure prints as 0 (rounding error only: the ratio would be noise).
+    /// A figure a run could not measure (NaN: a flip or a crossing that never came) shows as "—".
     void add(const std::string& figure, const char* fmt, double stepwise, double bullet) {
         std::string ratio = "—";
-        const std::string shown = format(fmt, stepwise);
+        const std::string shown = std::isnan(stepwise) ? "—" : format(fmt, stepwise);
         if (std::strtod(shown.c_str(), nullptr) > 0 && bullet >= 0 && std::isfinite(stepwise) && std::isfinite(bullet)) {
             ratio = format("%.2f", bullet / stepwise);
         }
-        rows.push_back({figure, shown, format(fmt, bullet), ratio});
+        rows.push_back({figure, shown, std::isnan(bullet) ? "—" : format(fmt, bullet), ratio});
     }
     /// A figure without a meaningful ratio.
     void addText(const std::string& figure, std::string stepwise, std::string bullet) {
@@ -516,8 +517,9 @@ Table referenceProblem(const ReferenceProblem& problem, const std::string& dir, 
             table.add(step + metric.name + " (" + metric.unit + ")", "%.3e", metric.value, theirs.metrics[k].value);
         }
         const Measurement verlet = runInStepwise(scene, ourJudges, IntegratorKind::Verlet, h);
-        table.addText(step + verlet.metrics[0].name + ", Stepwise with Verlet", format("%.3e", verlet.metrics[0].value),
-                      "");
+        const double verletError = verlet.metrics[0].value;
+        table.addText(step + verlet.metrics[0].name + ", Stepwise with Verlet",
+                      std::isnan(verletError) ? "—" : format("%.3e", verletError), "");
         if (!ours.note.empty() || !theirs.note.empty()) table.addText(step + "note", ours.note, theirs.note);
         if (!verlet.note.empty()) table.addText(step + "note, Stepwise with Verlet", verlet.note, "");
         if (quick) break;
