@@ -34,12 +34,12 @@
 /// accelerations are not translated (the constructor throws).
 #pragma once
 
+#include <LinearMath/btScalar.h>
+
 #include <memory>
 #include <vector>
 
 #include "../scenario_metrics.hpp"
-#include <LinearMath/btScalar.h>
-
 #include "world/scene.hpp"
 
 class btCollisionShape;
