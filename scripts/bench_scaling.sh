@@ -170,7 +170,7 @@ Both engines run single-threaded here, and the times are the process's CPU time.
 engines at whatever accuracy their defaults buy. The *rain sweep* runs the
 1000-sphere rain again with each engine's accuracy knob turned: Stepwise's
 `Substeps` (1 to 16; the default 16 is what the tower and the 100:1 stack
-need, src/world/world_settings.hpp) and Bullet's solver iterations (5 to 40;
+need, src/core/world_settings.hpp) and Bullet's solver iterations (5 to 40;
 its default is 10). The error is the worst overlap at any step. Read the
 figure along a vertical line for accuracy at equal cost, along a horizontal
 one for cost at equal accuracy. More iterations do not make Bullet's

@@ -15,7 +15,7 @@
 #include "collision/broadphase.hpp"
 #include "collision/narrowphase.hpp"
 #include "dynamics/contact_solver.hpp"
-#include "dynamics/inertia.hpp"
+#include "objects/inertia.hpp"
 #include "dynamics/round_contact_lanes.hpp"
 #include "dynamics/softness.hpp"
 #include "test_support.hpp"

@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "config/scene_loader.hpp"
-#include "dynamics/inertia.hpp"
+#include "objects/inertia.hpp"
 #include "forces/apply_forces.hpp"
 #include "test_support.hpp"
 #include "world/measurements.hpp"

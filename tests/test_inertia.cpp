@@ -13,7 +13,7 @@
 #include <string>
 
 #include "config/scene_loader.hpp"
-#include "dynamics/inertia.hpp"
+#include "objects/inertia.hpp"
 #include "test_support.hpp"
 #include "world/world.hpp"
 

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <vector>
 
-#include "dynamics/inertia.hpp"
+#include "objects/inertia.hpp"
 #include "integrators/integrators.hpp"
 #include "test_support.hpp"
 

@@ -27,7 +27,7 @@
 #include <vector>
 
 #include "config/scene_loader.hpp"
-#include "dynamics/inertia.hpp"
+#include "objects/inertia.hpp"
 #include "integrators/integrators.hpp"
 #include "integrators/rotation_lanes.hpp"
 #include "test_support.hpp"

@@ -12,7 +12,7 @@
 #include "config/scene_loader.hpp"
 #include "dynamics/contact_solver.hpp"
 #include "dynamics/impulse_resolver.hpp"
-#include "dynamics/inertia.hpp"
+#include "objects/inertia.hpp"
 #include "dynamics/softness.hpp"
 #include "dynamics/solver_body.hpp"
 #include "test_support.hpp"

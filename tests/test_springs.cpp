@@ -21,7 +21,7 @@
 #include <vector>
 
 #include "config/scene_loader.hpp"
-#include "dynamics/inertia.hpp"
+#include "objects/inertia.hpp"
 #include "forces/spring_stability.hpp"
 #include "test_support.hpp"
 #include "world/measurements.hpp"

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "config/scene_loader.hpp"
-#include "dynamics/inertia.hpp"
+#include "objects/inertia.hpp"
 #include "integrators/integrators.hpp"
 #include "command_runner.hpp"
 #include "test_support.hpp"

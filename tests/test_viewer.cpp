@@ -28,7 +28,7 @@
 #include "command_runner.hpp"
 #include "config/scene_loader.hpp"
 #include "viewer/camera.hpp"
-#include "dynamics/inertia.hpp"
+#include "objects/inertia.hpp"
 #include "test_support.hpp"
 #include "viewer/fixed_step_clock.hpp"
 #include "viewer/mouse_controls.hpp"

@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <utility>
 
-#include "dynamics/inertia.hpp"
+#include "objects/inertia.hpp"
 
 namespace stepwise::bench {
 

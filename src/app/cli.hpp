@@ -9,17 +9,13 @@
 #include <string>
 #include <vector>
 
+#include "core/exit_codes.hpp"
+#include "viewer/view_options.hpp"
 #include "world/expectations.hpp"
 #include "world/scene.hpp"
 
 /// @brief The `stepwise` command-line program (src/app/).
 namespace stepwise::cli {
-
-/// Exit codes, as documented in the README.
-inline constexpr int kExitOk = 0;              ///< Success.
-inline constexpr int kExitSimulationError = 1; ///< The simulation reached an impossible state.
-inline constexpr int kExitUsageError = 2;      ///< Bad command line or bad scene file.
-inline constexpr int kExitExpectationFailed = 3; ///< An Expect record failed (run), or a graded scene did (grade).
 
 /// @brief Thrown for a malformed command line; the message says what and how to fix it.
 class UsageError : public std::runtime_error {
@@ -48,21 +44,8 @@ int runCommand(const RunOptions& options);
 /// "nothing was loaded" to stderr; nullptr when it did not load (`run`, `check`, `bench`, `raycast`).
 std::unique_ptr<Scene> loadOrReport(const std::string& path);
 
-/// @brief Options of `stepwise view` (the viewer in src/viewer/, built when STEPWISE_VIEWER is ON).
-struct ViewOptions {
-    std::string scenePath;                     ///< Scene file; the default scene when not given.
-    std::optional<std::string> screenshotPath; ///< --screenshot PATH: draw one frame into this PNG and exit.
-    double at = 0;                             ///< --at T: simulated time of the screenshot, s (≥ 0).
-    int width = 960;                           ///< --size WxH: window width, pixels.
-    int height = 600;                          ///< --size WxH: window height, pixels.
-    std::optional<std::string> dumpStatePath;  ///< --dump-state PATH: the state drawn, as `run --csv` writes it.
-    std::string keys;                          ///< --keys KEYS: keys pressed before the screenshot (e.g. "CV").
-    std::optional<std::string> logEventsPath;  ///< --log-events PATH: one line per pick, push and release (window only).
-    std::optional<std::size_t> stage;          ///< --stage K: show the state after the K-th stage run of the next step (S).
-};
-
-/// @brief Parses the arguments after `view`. @throws UsageError.
-ViewOptions parseViewOptions(const std::vector<std::string>& args, const std::string& defaultScene);
+/// @brief Parses the arguments after `view` (the options are the viewer's). @throws UsageError.
+viewer::ViewOptions parseViewOptions(const std::vector<std::string>& args, const std::string& defaultScene);
 
 /// @brief Options of `stepwise grade`.
 struct GradeOptions {

@@ -39,7 +39,7 @@ int viewCommand(const std::vector<std::string>& args) {
                  "  or freeglut/OpenGL were not found when it was configured). To build it, install the\n"
                  "  packages (scripts/setup.sh does: freeglut3-dev) and configure again with\n"
                  "    cmake --preset release -DSTEPWISE_VIEWER=ON && cmake --build --preset release\n");
-    return kExitUsageError;
+    return stepwise::kExitUsageError;
 #endif
 }
 
@@ -54,7 +54,7 @@ int main(int argc, char** argv) {
     const std::vector<std::string> args(argv + 1, argv + argc);
     if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
         std::fputs(usageText(), stdout);
-        return kExitOk;
+        return stepwise::kExitOk;
     }
     const std::string& command = args[0];
     const std::vector<std::string> rest(args.begin() + 1, args.end());
@@ -75,6 +75,6 @@ int main(int argc, char** argv) {
                          "' (commands: run, check, view, grade, raycast, generate, bench, trace)");
     } catch (const UsageError& error) {
         std::fprintf(stderr, "stepwise: error: %s\nRun 'stepwise --help' for usage.\n", error.what());
-        return kExitUsageError;
+        return stepwise::kExitUsageError;
     }
 }

@@ -128,8 +128,8 @@ void parseSize(const std::string& text, int& width, int& height) {
 
 }  // namespace
 
-ViewOptions parseViewOptions(const std::vector<std::string>& args, const std::string& defaultScene) {
-    ViewOptions options;
+viewer::ViewOptions parseViewOptions(const std::vector<std::string>& args, const std::string& defaultScene) {
+    viewer::ViewOptions options;
     bool sceneGiven = false;
     bool atGiven = false;
     for (std::size_t i = 0; i < args.size(); ++i) {

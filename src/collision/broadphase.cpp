@@ -23,17 +23,6 @@
 
 namespace stepwise {
 
-const char* toString(BroadphaseKind kind) {
-    switch (kind) {
-        case BroadphaseKind::Auto: return "Auto";
-        case BroadphaseKind::BruteForce: return "BruteForce";
-        case BroadphaseKind::SweepAndPrune: return "SweepAndPrune";
-        case BroadphaseKind::AabbTree: return "AabbTree";
-        case BroadphaseKind::Grid: return "Grid";
-    }
-    return "?";
-}
-
 BroadphaseChoice chooseBroadphase(const BodySet& bodies) {
     char text[256];
     const std::size_t dynamicCount = bodies.dynamics.size();

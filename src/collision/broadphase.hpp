@@ -21,8 +21,8 @@
 #include "collision/broadphase_proxies.hpp"
 #include "collision/broadphase_sweep_and_prune.hpp"
 #include "collision/contact.hpp"
-#include "world/body_set.hpp"
-#include "world/world_settings.hpp"
+#include "objects/body_set.hpp"
+#include "core/world_settings.hpp"
 
 namespace stepwise {
 

@@ -70,7 +70,7 @@
 
 #include "collision/continuous_candidates.hpp"
 #include "collision/narrowphase.hpp"
-#include "world/body_set.hpp"
+#include "objects/body_set.hpp"
 
 namespace stepwise {
 

@@ -60,7 +60,7 @@
 
 #include "collision/aabb.hpp"
 #include "collision/narrowphase.hpp"
-#include "world/body_set.hpp"
+#include "objects/body_set.hpp"
 
 namespace stepwise {
 

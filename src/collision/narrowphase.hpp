@@ -6,7 +6,7 @@
 
 #include "collision/contact.hpp"
 #include "core/thread_pool.hpp"
-#include "world/body_set.hpp"
+#include "objects/body_set.hpp"
 
 namespace stepwise {
 

@@ -12,7 +12,7 @@
 #include <string>
 #include <string_view>
 
-#include "world/world_settings.hpp"
+#include "core/world_settings.hpp"
 
 namespace stepwise {
 

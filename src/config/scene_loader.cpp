@@ -31,7 +31,7 @@
 #include "config/scene_records.hpp"
 #include "config/scene_tokenizer.hpp"
 #include "config/spelling.hpp"
-#include "dynamics/inertia.hpp"
+#include "objects/inertia.hpp"
 #include "forces/spring_stability.hpp"
 
 namespace stepwise {

@@ -18,7 +18,7 @@
 #include "config/field_values.hpp"
 #include "objects/game_object.hpp"
 #include "world/expectations.hpp"
-#include "world/world_settings.hpp"
+#include "core/world_settings.hpp"
 
 namespace stepwise::config {
 

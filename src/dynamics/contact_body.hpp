@@ -3,7 +3,7 @@
 #pragma once
 
 #include "collision/contact.hpp"
-#include "world/body_set.hpp"
+#include "objects/body_set.hpp"
 
 namespace stepwise {
 

@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "dynamics/contact_body.hpp"
-#include "dynamics/inertia.hpp"
+#include "objects/inertia.hpp"
 
 namespace stepwise {
 

@@ -78,8 +78,8 @@
 #include "dynamics/round_contact_lanes.hpp"
 #include "dynamics/softness.hpp"
 #include "dynamics/solver_body.hpp"
-#include "world/body_set.hpp"
-#include "world/world_settings.hpp"
+#include "objects/body_set.hpp"
+#include "core/world_settings.hpp"
 
 namespace stepwise {
 

@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "dynamics/contact_body.hpp"
-#include "dynamics/inertia.hpp"
+#include "objects/inertia.hpp"
 #include "dynamics/point_impulse.hpp"
 #include "integrators/integrators.hpp"
 

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "collision/contact.hpp"
-#include "world/body_set.hpp"
+#include "objects/body_set.hpp"
 
 namespace stepwise {
 

@@ -29,8 +29,8 @@
 #include <vector>
 
 #include "collision/contact.hpp"
-#include "world/body_set.hpp"
-#include "world/world_settings.hpp"
+#include "objects/body_set.hpp"
+#include "core/world_settings.hpp"
 
 namespace stepwise {
 

@@ -29,17 +29,13 @@ namespace stepwise {
 /// f = 0 means no position feedback at all (b = 0, s_m = 1, s_i = 0).
 ///
 /// Rule of thumb: keep f at most a quarter of the solver rate 1/h, or the
-/// implicit spring is stiffer than the step can show.
+/// implicit spring is stiffer than the step can show (kMaxHertzPerSubstepRate,
+/// core/world_settings.hpp, is that cap).
 struct Softness {
     Real biasRate = 0;      ///< b: error fed back as velocity, 1/s.
     Real massScale = 1;     ///< s_m: scales the effective mass (dimensionless, ≤ 1).
     Real impulseScale = 0;  ///< s_i: fraction of the accumulated impulse leaked each iteration.
 };
-
-/// @brief A soft constraint's frequency is capped at this fraction of the
-/// solver's rate 1/h_s: stiffer than that, the implicit spring's response is
-/// faster than a substep can resolve (Catto caps contacts at a quarter).
-inline constexpr Real kMaxHertzPerSubstepRate = Real(0.25);
 
 /// @brief The soft-constraint coefficients for frequency @p hertz (Hz), damping ratio @p dampingRatio and step @p h (s).
 inline Softness makeSoftness(Real hertz, Real dampingRatio, Real h) {

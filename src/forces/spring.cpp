@@ -23,7 +23,7 @@
 
 #include <cmath>
 
-#include "dynamics/inertia.hpp"
+#include "objects/inertia.hpp"
 
 namespace stepwise {
 

@@ -30,7 +30,7 @@
 #include <span>
 
 #include "forces/spring.hpp"
-#include "world/world_settings.hpp"
+#include "core/world_settings.hpp"
 
 namespace stepwise {
 

@@ -39,7 +39,7 @@
 ///
 /// References: Hairer, Lubich & Wanner, *Geometric Numerical Integration*, §I.1
 /// and §IV.8 (Lie-group methods).
-#include "dynamics/inertia.hpp"
+#include "objects/inertia.hpp"
 #include "integrators/integrators.hpp"
 
 namespace stepwise {

@@ -15,7 +15,7 @@
 /// Rotation is integrated alongside, from the torque τ the apply-forces stage
 /// wrote into DynamicObject::torque. The rotational state is the world-frame
 /// angular momentum L (τ = dL/dt, the rotational twin of m·v), not ω: the
-/// orientation turns, and ω = I_world⁻¹·L follows (src/dynamics/inertia.hpp):
+/// orientation turns, and ω = I_world⁻¹·L follows (src/objects/inertia.hpp):
 ///
 /// | integrator        | angular momentum                   | orientation                               | ‖L‖ (τ = 0) | rotational energy (τ = 0) |
 /// |-------------------|------------------------------------|-------------------------------------------|-------------|---------------------------|
@@ -60,7 +60,7 @@
 
 #include "forces/apply_forces.hpp"
 #include "objects/game_object.hpp"
-#include "world/world_settings.hpp"
+#include "core/world_settings.hpp"
 
 namespace stepwise {
 

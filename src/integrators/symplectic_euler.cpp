@@ -43,7 +43,7 @@
 
 #include "core/lanes.hpp"
 #include "dynamics/contact_solver.hpp"
-#include "dynamics/inertia.hpp"
+#include "objects/inertia.hpp"
 #include "integrators/integrators.hpp"
 
 // This file's lane helpers pass Lanes by value too, always inlined (see core/lanes.hpp).

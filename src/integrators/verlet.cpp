@@ -31,7 +31,7 @@
 /// Reference: Swope, Andersen, Berens & Wilson, J. Chem. Phys. 76 (1982) 637;
 /// Hairer, Lubich & Wanner, *Geometric Numerical Integration*, §I.1.4 and §VII.5;
 /// Dullweber, Leimkuhler & McLachlan, J. Chem. Phys. 107 (1997) 5840.
-#include "dynamics/inertia.hpp"
+#include "objects/inertia.hpp"
 #include "integrators/integrators.hpp"
 
 namespace stepwise {

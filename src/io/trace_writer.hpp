@@ -24,7 +24,7 @@
 
 #include "core/types.hpp"
 #include "world/scene.hpp"
-#include "world/stages.hpp"
+#include "core/stages.hpp"
 #include "world/step_observer.hpp"
 
 namespace stepwise {

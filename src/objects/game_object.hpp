@@ -57,7 +57,7 @@ public:
 ///
 /// The body's state is (position, orientation, velocity, angular momentum);
 /// the angular velocity ω = I_world⁻¹·L is kept alongside, derived from it
-/// (src/dynamics/inertia.hpp). Storing L rather than ω is what makes a
+/// (src/objects/inertia.hpp). Storing L rather than ω is what makes a
 /// torque-free body keep its angular momentum exactly while it tumbles.
 /// Its per-object `constantAcceleration` (m/s², from the scene's
 /// Acceleration fields) is added to the World's gravity every step;

@@ -17,7 +17,7 @@
 
 #include <cstdint>
 
-#include "dynamics/inertia.hpp"
+#include "objects/inertia.hpp"
 #include "objects/game_object.hpp"
 
 namespace stepwise::viewer {

@@ -20,6 +20,7 @@
 
 #include "config/scene_loader.hpp"
 #include "core/errors.hpp"
+#include "core/exit_codes.hpp"
 #include "viewer/camera.hpp"
 #include "viewer/display_check.hpp"
 #include "viewer/event_log.hpp"
@@ -68,7 +69,7 @@ struct App {
     bool screenshot = false;
     std::string screenshotPath;
     std::string dumpStatePath;
-    int exitCode = cli::kExitOk;
+    int exitCode = kExitOk;
 
     EventLog log;  // --log-events; writes nothing without it
     std::string highlighted = "none";  // last body named in a "highlight" line
@@ -345,7 +346,7 @@ void onScreenshotDisplay() {
                      "stepwise view: the window is %dx%d, not the %dx%d asked for (a smaller screen?); "
                      "try a smaller --size or a bigger virtual screen: xvfb-run -a -s '-screen 0 1920x1080x24'\n",
                      width, height, app->width, app->height);
-        app->exitCode = cli::kExitUsageError;
+        app->exitCode = kExitUsageError;
     } else {
         try {
             writeFrame(app->screenshotPath, 0);
@@ -359,7 +360,7 @@ void onScreenshotDisplay() {
             }
         } catch (const std::runtime_error& e) {
             std::fprintf(stderr, "stepwise view: %s\n", e.what());
-            app->exitCode = cli::kExitUsageError;
+            app->exitCode = kExitUsageError;
         }
     }
     app->screenshotPath.clear();
@@ -372,7 +373,7 @@ void onScreenshotDisplay() {
     std::fprintf(stderr, "stepwise view: freeglut: ");
     std::vfprintf(stderr, format, args);
     std::fprintf(stderr, "\n");
-    std::exit(cli::kExitUsageError);
+    std::exit(kExitUsageError);
 }
 
 void onGlutWarning(const char* format, va_list args) {
@@ -422,7 +423,7 @@ void keepDriversLoadedForLeakReports() {
 
 }  // namespace
 
-int runViewer(const cli::ViewOptions& options) {
+int runViewer(const ViewOptions& options) {
     App state;
     state.width = options.width;
     state.height = options.height;
@@ -432,10 +433,10 @@ int runViewer(const cli::ViewOptions& options) {
         for (const ConfigDiagnostic& d : error.diagnostics()) std::fprintf(stderr, "%s\n", d.message().c_str());
         std::fprintf(stderr, "stepwise: %zu error(s) in %s; nothing was loaded.\n", error.diagnostics().size(),
                      options.scenePath.c_str());
-        return cli::kExitUsageError;
+        return kExitUsageError;
     } catch (const std::invalid_argument& error) {
         std::fprintf(stderr, "stepwise: %s: %s\n", options.scenePath.c_str(), error.what());
-        return cli::kExitUsageError;
+        return kExitUsageError;
     }
     state.camera = cameraForScene(state.simulation->world());
 
@@ -448,7 +449,7 @@ int runViewer(const cli::ViewOptions& options) {
                      "installs):\n"
                      "    xvfb-run -a stepwise view %s --screenshot out.png --at 2\n",
                      problem->c_str(), options.scenePath.c_str());
-        return cli::kExitUsageError;
+        return kExitUsageError;
     }
 
     app = &state;
@@ -461,14 +462,14 @@ int runViewer(const cli::ViewOptions& options) {
         } catch (const SimulationError& error) {
             std::fprintf(stderr, "stepwise: simulation failed: %s\n", error.what());
             app = nullptr;
-            return cli::kExitSimulationError;
+            return kExitSimulationError;
         }
         for (char key : options.keys) pressKey(static_cast<unsigned char>(key));
         if (options.stage && !state.simulation->showStageRun(*options.stage - 1)) {
             std::fprintf(stderr, "stepwise view: --stage %zu: the step has %zu stage runs\n", *options.stage,
                          state.simulation->walkthrough().size());
             app = nullptr;
-            return cli::kExitUsageError;
+            return kExitUsageError;
         }
         openWindow("stepwise view (screenshot)");
         check.reset();  // freeglut has its own connection now
@@ -480,7 +481,7 @@ int runViewer(const cli::ViewOptions& options) {
             } catch (const std::runtime_error& e) {
                 std::fprintf(stderr, "stepwise view: %s\n", e.what());
                 app = nullptr;
-                return cli::kExitUsageError;
+                return kExitUsageError;
             }
             state.simulation->setEventLog(&state.log);
         }

@@ -2,7 +2,7 @@
 /// @brief `stepwise view`: the freeglut window onto a scene, and its headless screenshot mode.
 #pragma once
 
-#include "app/cli.hpp"
+#include "viewer/view_options.hpp"
 
 namespace stepwise::viewer {
 
@@ -17,6 +17,6 @@ namespace stepwise::viewer {
 /// Exit codes: 0 success; 1 the simulation failed (non-finite state) before T;
 /// 2 bad scene file, or no window can be opened (the message says why and how
 /// to run under `xvfb-run`), or the screenshot could not be written.
-int runViewer(const cli::ViewOptions& options);
+int runViewer(const ViewOptions& options);
 
 }  // namespace stepwise::viewer

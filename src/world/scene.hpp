@@ -10,7 +10,7 @@
 #include "dynamics/joints/joint_def.hpp"
 #include "objects/game_object.hpp"
 #include "world/expectations.hpp"
-#include "world/world_settings.hpp"
+#include "core/world_settings.hpp"
 
 namespace stepwise {
 

@@ -17,7 +17,7 @@
 #include <cstdint>
 
 #include "core/types.hpp"
-#include "world/stages.hpp"
+#include "core/stages.hpp"
 
 namespace stepwise {
 

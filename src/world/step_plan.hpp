@@ -27,8 +27,8 @@
 #include "forces/attractor.hpp"
 #include "forces/spring.hpp"
 #include "objects/game_object.hpp"
-#include "world/stages.hpp"
-#include "world/world_settings.hpp"
+#include "core/stages.hpp"
+#include "core/world_settings.hpp"
 
 namespace stepwise {
 

@@ -10,7 +10,7 @@
 
 #include "collision/narrowphase.hpp"
 #include "core/errors.hpp"
-#include "dynamics/inertia.hpp"
+#include "objects/inertia.hpp"
 #include "dynamics/islands.hpp"
 #include "forces/apply_forces.hpp"
 #include "integrators/integrators.hpp"
@@ -614,26 +614,6 @@ void World::checkFinite(Stage stage) const {
         if (!stepwise::isFinite(body.position)) fail(body.name, "position");
         if (!stepwise::isFinite(body.orientation)) fail(body.name, "orientation");
     }
-}
-
-const char* stageName(Stage stage) {
-    switch (stage) {
-        case Stage::ApplyForces: return "apply-forces";
-        case Stage::Integrate: return "integrate";
-        case Stage::MoveKinematics: return "move-kinematics";
-        case Stage::Broadphase: return "broadphase";
-        case Stage::Narrowphase: return "narrowphase";
-        case Stage::ResolveImpulses: return "resolve-impulses";
-        case Stage::CorrectPositions: return "correct-positions";
-        case Stage::PrepareConstraints: return "prepare-constraints";
-        case Stage::SolveConstraints: return "solve-constraints";
-        case Stage::RelaxConstraints: return "relax-constraints";
-        case Stage::Restitution: return "restitution";
-        case Stage::Sleep: return "sleep";
-        case Stage::Continuous: return "continuous";
-        case Stage::Count: break;
-    }
-    return "?";
 }
 
 }  // namespace stepwise

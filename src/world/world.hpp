@@ -19,12 +19,12 @@
 #include "dynamics/islands.hpp"
 #include "dynamics/joints/joint.hpp"
 #include "forces/apply_forces.hpp"
-#include "world/body_set.hpp"
+#include "objects/body_set.hpp"
 #include "world/scene.hpp"
-#include "world/stages.hpp"
+#include "core/stages.hpp"
 #include "world/step_observer.hpp"
 #include "world/step_plan.hpp"
-#include "world/world_settings.hpp"
+#include "core/world_settings.hpp"
 
 namespace stepwise {
 

@@ -18,7 +18,7 @@
 /// The rotational half is given (lecture 4 derives it). Until you write the
 /// two lines, no body moves, and `ctest --preset student -L symplectic-euler`
 /// says which physics each test expected.
-#include "dynamics/inertia.hpp"
+#include "objects/inertia.hpp"
 #include "integrators/integrators.hpp"
 
 namespace stepwise {

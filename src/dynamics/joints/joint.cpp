@@ -7,7 +7,7 @@
 #include <stdexcept>
 
 #include "dynamics/impulse_resolver.hpp"
-#include "dynamics/inertia.hpp"
+#include "objects/inertia.hpp"
 #include "dynamics/joints/joint_parts.hpp"
 
 namespace stepwise {

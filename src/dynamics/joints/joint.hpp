@@ -67,8 +67,8 @@
 #include "dynamics/islands.hpp"
 #include "dynamics/joints/joint_def.hpp"
 #include "dynamics/softness.hpp"
-#include "world/body_set.hpp"
-#include "world/world_settings.hpp"
+#include "objects/body_set.hpp"
+#include "core/world_settings.hpp"
 
 namespace stepwise {
 

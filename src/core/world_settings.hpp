@@ -5,7 +5,6 @@
 #include <numbers>
 
 #include "core/types.hpp"
-#include "dynamics/softness.hpp"
 
 namespace stepwise {
 
@@ -129,6 +128,11 @@ inline Real integrationStep(const WorldSettings& settings) {
     return settings.solver == SolverKind::SequentialImpulse ? settings.timeStep / Real(settings.substeps)
                                                             : settings.timeStep;
 }
+
+/// @brief A soft constraint's frequency is capped at this fraction of the
+/// solver's rate 1/h_s: stiffer than that, the implicit spring's response is
+/// faster than a substep can resolve (Catto caps contacts at a quarter).
+inline constexpr Real kMaxHertzPerSubstepRate = Real(0.25);
 
 /// @brief The contact frequency the sequential-impulse solver really uses, Hz:
 /// ContactHertz, capped at a quarter of the substep rate substeps/h.

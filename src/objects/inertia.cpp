@@ -1,6 +1,6 @@
 /// @file inertia.cpp
 /// @brief Inertia tensors of the shapes, the parallel-axis theorem, and world-frame conversions.
-#include "dynamics/inertia.hpp"
+#include "objects/inertia.hpp"
 
 namespace stepwise {
 

@@ -1,0 +1,35 @@
+/// @file world_settings.cpp
+/// @brief The scene-file spellings of the World record's choices.
+#include "core/world_settings.hpp"
+
+namespace stepwise {
+
+const char* toString(IntegratorKind kind) {
+    switch (kind) {
+        case IntegratorKind::ExplicitEuler: return "Euler";
+        case IntegratorKind::SymplecticEuler: return "SymplecticEuler";
+        case IntegratorKind::Verlet: return "Verlet";
+    }
+    return "?";
+}
+
+const char* toString(SolverKind kind) {
+    switch (kind) {
+        case SolverKind::Impulse: return "Impulse";
+        case SolverKind::SequentialImpulse: return "SequentialImpulse";
+    }
+    return "?";
+}
+
+const char* toString(BroadphaseKind kind) {
+    switch (kind) {
+        case BroadphaseKind::Auto: return "Auto";
+        case BroadphaseKind::BruteForce: return "BruteForce";
+        case BroadphaseKind::SweepAndPrune: return "SweepAndPrune";
+        case BroadphaseKind::AabbTree: return "AabbTree";
+        case BroadphaseKind::Grid: return "Grid";
+    }
+    return "?";
+}
+
+}  // namespace stepwise
