@@ -29,7 +29,7 @@
 #include "config/scene_loader.hpp"
 #include "objects/inertia.hpp"
 #include "integrators/integrators.hpp"
-#include "integrators/rotation_lanes.hpp"
+#include "fast/rotation_lanes.hpp"
 #include "test_support.hpp"
 #include "world/measurements.hpp"
 #include "world/world.hpp"

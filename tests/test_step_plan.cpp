@@ -206,10 +206,11 @@ TEST_CASE("Trajectories are bit-identical with and without the plan on the confi
     }
 }
 
-TEST_CASE("Balls on the packed substeps end bit for bit where the object path leaves them", "[plan]") {
-    // World::substepOnRecords() does the object path's operations on the solver's records; StepPlan=Off
-    // takes the object path. Compared after every step, with and without friction (rotation planned or
-    // skipped), and with a box that makes some steps take the object path (its contacts have stored rows).
+TEST_CASE("Balls on the packed substeps end bit for bit where the plain path leaves them", "[plan][fast]") {
+    // The fast path's packed substeps do the plain path's operations on the solver's records
+    // (src/fast/packed_substeps.hpp); StepPlan=Off takes the plain path. Compared after every step,
+    // with and without friction (rotation planned or skipped), and with a box that makes some steps
+    // take the fast path's road on the objects (its contacts have stored rows).
     Scene scene = frictionlessSpheres(SolverKind::SequentialImpulse, IntegratorKind::SymplecticEuler);
     SECTION("frictionless: the plan skips rotation") { REQUIRE_FALSE(planOf(scene).rotation.runs); }
     SECTION("rough and spinning: every ball turns") {
@@ -222,29 +223,31 @@ TEST_CASE("Balls on the packed substeps end bit for bit where the object path le
         for (DynamicObject& body : scene.dynamics) body.friction = Real(0.4);
         scene.dynamics.push_back(test::dynamicBox("crate", Vec3(1, 4, 0.2), Vec3(0.6), 2, Real(0.5)));
     }
+    scene.settings.fastPath = true;  // whatever this build's default (STEPWISE_FAST_PATH)
     REQUIRE(planOf(scene).packedSubsteps.runs);
     Scene off = scene;
     off.settings.stepPlan = false;
     World packed(scene);
     World objects(off);
-    int stepsOnRecords = 0;
-    int stepsOnObjects = 0;
     for (int i = 0; i < 240; ++i) {
         packed.step();
         objects.step();
         requireSameState(packed, objects);
-        REQUIRE_FALSE(objects.substepsRanOnRecords());
-        (packed.substepsRanOnRecords() ? stepsOnRecords : stepsOnObjects) += 1;
     }
+    REQUIRE(objects.fastPathCounts().steps == 0);
+    const auto stepsOnRecords = packed.fastPathCounts().packedSteps;
+    const auto stepsOnObjects = packed.fastPathCounts().steps - stepsOnRecords;
     INFO(stepsOnRecords << " steps on the records, " << stepsOnObjects << " on the objects");
     CHECK(stepsOnRecords > 30);  // the comparison above is not empty
     if (packed.findDynamic("crate") != nullptr) CHECK(stepsOnObjects > 30);
 }
 
-TEST_CASE("The packed substeps are planned only where they carry the scene", "[plan]") {
+TEST_CASE("The fast path and its packed substeps are planned only where they carry the scene", "[plan][fast]") {
     Scene scene = test::emptyScene();
     scene.dynamics = {test::sphere("a", Vec3(0, 0.5, 0)), test::sphere("b", Vec3(0, 1.5, 0))};
     scene.planes = {test::ground()};
+    scene.settings.fastPath = true;  // whatever this build's default (STEPWISE_FAST_PATH)
+    CHECK(planOf(scene).fastPath.runs);
     CHECK(planOf(scene).packedSubsteps.runs);
     SECTION("another integrator") {
         scene.settings.integrator = IntegratorKind::Verlet;
@@ -258,12 +261,18 @@ TEST_CASE("The packed substeps are planned only where they carry the scene", "[p
         scene.attractors = {Attractor{"sun", Vec3(2, 1, 0), 40}};
         CHECK_FALSE(planOf(scene).packedSubsteps.runs);
     }
-    SECTION("no ball") {
+    SECTION("no ball: the fast path has nothing faster for boxes") {
         scene.dynamics = {test::dynamicBox("crate", Vec3(0, 0.5, 0), Vec3(1), 1, Real(0.5))};
+        CHECK_FALSE(planOf(scene).fastPath.runs);
         CHECK_FALSE(planOf(scene).packedSubsteps.runs);
     }
     SECTION("StepPlan=Off") {
         scene.settings.stepPlan = false;
+        CHECK_FALSE(planOf(scene).packedSubsteps.runs);
+    }
+    SECTION("FastPath=false: the plain path, which has no packed substeps") {
+        scene.settings.fastPath = false;
+        CHECK_FALSE(planOf(scene).fastPath.runs);
         CHECK_FALSE(planOf(scene).packedSubsteps.runs);
     }
     SECTION("the Impulse solver") {

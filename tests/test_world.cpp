@@ -81,8 +81,9 @@ struct NaNAfterIntegrate : StepObserver {
 }  // namespace
 
 TEST_CASE("Sequential impulse: a non-finite velocity is named by the first stage that moves the body", "[world]") {
-    // After the solve and relax stages the check reads the solver's packed records, the only bodies those
-    // stages move (World::checkFinite): a body in a contact is named there, a free one at the next integrate.
+    // After the solve and relax stages the check reads the bodies with a solver record, the only bodies
+    // those stages move (World::checkFinite): a body in a contact is named there, a free one at the next
+    // integrate. (A saboteur watches the step, so it takes the plain path.)
     Scene scene = test::emptyScene();
     scene.dynamics.push_back(test::sphere("resting", Vec3(0, 0.5, 0)));
     scene.dynamics.push_back(test::sphere("flying", Vec3(5, 20, 0)));
@@ -113,14 +114,15 @@ TEST_CASE("Sequential impulse: a non-finite velocity is named by the first stage
 
 TEST_CASE("On the packed substeps a non-finite number is named by the ball whose record holds it", "[world]") {
     // A ball resting on the ground spins at 1e200 rad/s: finite, but its turn in one substep, |ω|·h,
-    // squares to infinity, and the rotation is NaN. On the object path the integrator turns it; on the
-    // packed substeps the drift after the solve does (src/integrators/velocity_change_drift.cpp), where the
+    // squares to infinity, and the rotation is NaN. On the plain path the integrator turns it; on the
+    // fast path's packed substeps the drift after the solve does (src/fast/packed_drift.cpp), where the
     // orientation is in the solver's records and not yet in the object: the record must name it.
     Scene scene = test::emptyScene();
     scene.dynamics.push_back(test::sphere("calm", Vec3(3, 0.5, 0)));
     scene.dynamics.push_back(test::sphere("spinner", Vec3(0, 0.5, 0)));
     scene.dynamics[1].angularVelocity = Vec3(0, 0, 1e200);
     scene.planes.push_back(test::ground());
+    scene.settings.fastPath = true;  // whatever this build's default (STEPWISE_FAST_PATH)
     const auto errorOf = [](const Scene& s) -> SimulationError {
         World world(s);
         try {
@@ -136,7 +138,7 @@ TEST_CASE("On the packed substeps a non-finite number is named by the ball whose
     CHECK(packed.stageName() == "solve-constraints");
     CHECK_THAT(packed.what(), Contains("orientation") && Contains("step 0"));  // the first step (counted from 0)
     Scene objects = scene;
-    objects.settings.stepPlan = false;  // the object path
+    objects.settings.fastPath = false;  // the plain path
     const SimulationError unpacked = errorOf(objects);
     CHECK(unpacked.objectName() == "spinner");
     CHECK(unpacked.stageName() == "integrate");

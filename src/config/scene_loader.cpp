@@ -323,6 +323,7 @@ private:
         settings.sleepAngularSpeed = values.number("SleepAngularSpeed", defaults.sleepAngularSpeed);
         settings.timeToSleep = values.number("TimeToSleep", defaults.timeToSleep);
         settings.stepPlan = values.choice<bool>("StepPlan", kBooleanChoices, defaults.stepPlan);
+        settings.fastPath = values.choice<bool>("FastPath", kBooleanChoices, defaults.fastPath);
         settings.continuousCollision =
             values.choice<bool>("ContinuousCollision", kBooleanChoices, defaults.continuousCollision);
         settings.threads = count("Threads", defaults.threads);

@@ -118,6 +118,7 @@ constexpr FieldSpec kWorldFields[] = {
     {"TimeToSleep",         FieldKind::Number,  kNamedOnly, Range::Positive, kTimeHint}, // s
     {"Broadphase",          FieldKind::Broadphase, kNamedOnly, Range::Any},       // docs/broadphase.md
     {"StepPlan",            FieldKind::Boolean, kNamedOnly, Range::Any},          // src/world/step_plan.hpp
+    {"FastPath",            FieldKind::Boolean, kNamedOnly, Range::Any},          // src/fast/fast_path.hpp
     {"ContinuousCollision", FieldKind::Boolean, kNamedOnly, Range::Any},              // src/collision/continuous.hpp
     {"Threads",             FieldKind::Number,  kNamedOnly, Range::WholeNumber},      // 0: one per hardware thread
 };

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
 
@@ -42,5 +43,25 @@ struct StageRecord {
 
 /// @brief One record per stage, indexed by Stage.
 using StageRecords = std::array<StageRecord, kStageCount>;
+
+/// @brief Whether a timed piece of work is a run of its stage of its own, or more of the last one.
+enum class StageRun : std::uint8_t {
+    New,        ///< A run of the stage: counted in StageRecord::runs.
+    Continued,  ///< More work of the stage's last run (its time is added, no run is counted).
+};
+
+/// @brief Runs @p body and adds its wall-clock time to @p records[@p stage], marking the stage as run.
+template <class Body>
+void timeStage(StageRecords& records, Stage stage, Body&& body, StageRun run = StageRun::New) {
+    using Clock = std::chrono::steady_clock;
+    const auto start = Clock::now();
+    body();
+    const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    StageRecord& record = records[static_cast<std::size_t>(stage)];
+    record.ranLastStep = true;
+    if (run == StageRun::New) record.runs += 1;
+    record.lastSeconds += seconds;
+    record.totalSeconds += seconds;
+}
 
 }  // namespace stepwise

@@ -90,6 +90,19 @@ inline constexpr Real kDefaultTimeToSleep = Real(0.5);
 /// the number, so only the time a step takes depends on it.
 inline constexpr int kAutoThreads = 0;
 
+/// @brief Whether a World takes the fast path when nothing says otherwise (`World, FastPath=…`).
+///
+/// On in the release and ci builds. The debug and student builds are for
+/// stepping through the engine in a debugger, so they are configured with
+/// STEPWISE_FAST_PATH=OFF (CMakePresets.json), and there every step takes the
+/// plain path a student reads; `FastPath=true` in a scene still turns it on.
+/// Either way the numbers are the same, bit for bit (src/fast/fast_path.hpp).
+#if defined(STEPWISE_FAST_PATH_BY_DEFAULT) && !STEPWISE_FAST_PATH_BY_DEFAULT
+inline constexpr bool kFastPathByDefault = false;
+#else
+inline constexpr bool kFastPathByDefault = true;
+#endif
+
 /// @brief Global simulation settings: one per World.
 struct WorldSettings {
     Vec3 gravity{0, -kStandardGravity, 0};             ///< Uniform gravitational acceleration, m/s².
@@ -116,7 +129,8 @@ struct WorldSettings {
     Real sleepAngularSpeed = kDefaultSleepAngularSpeed; ///< Still below this angular speed, rad/s.
     Real timeToSleep = kDefaultTimeToSleep;            ///< Still for this long → asleep, s.
     BroadphaseKind broadphase = BroadphaseKind::Auto;  ///< Which broadphase finds the candidate pairs.
-    bool stepPlan = true;                              ///< Skip the stages the scene cannot need, pack ball-only substeps (src/world/step_plan.hpp).
+    bool stepPlan = true;                              ///< Skip the stages the scene cannot need (src/world/step_plan.hpp).
+    bool fastPath = kFastPathByDefault;                ///< Let the step plan send the substeps to the fast path (src/fast/).
     bool continuousCollision = true;                   ///< Fast bodies stop where their path first touches (src/collision/continuous.hpp).
     int threads = kAutoThreads;                        ///< Threads for the narrowphase, ≥ 0 (kAutoThreads: one per hardware thread).
 };

@@ -220,10 +220,9 @@ inline void solveFriction(SolverContact& c, const Rows& rows, SolverBody& a, Sol
     for (int k = 0; k < 2; ++k) total[k] = c.tangentImpulse[k] - c.tangentMass[k] * vt[k];
     // Back onto Coulomb's circle: scale = min(1, μλ_n/|λ_t|), which is exactly 1
     // for a point that sticks and 0 for one that does not push (λ_n = 0, a
-    // speculative gap). Only a slipping point pays for the division: written
-    // as std::min(1, μλ_n/|λ_t|), which divides for every point, the 1k rain
-    // ran 2 % slower. (The squares would overflow only for impulses near
-    // 1e154 N·s.)
+    // speculative gap). Written as a comparison, only a slipping point pays
+    // for the division; std::min(1, μλ_n/|λ_t|) would divide for every point.
+    // (The squares would overflow only for impulses near 1e154 N·s.)
     const Real magnitude = std::sqrt(total[0] * total[0] + total[1] * total[1]);
     const Real scale = magnitude > limit ? limit / magnitude : Real(1);
     total[0] *= scale;
@@ -246,6 +245,17 @@ Real currentSeparation(const SolverContact& c, const SolverWorkspace& w) {
     return separation;
 }
 
+ContactSolverSettings makeContactSolverSettings(const WorldSettings& settings, Real substep) {
+    ContactSolverSettings s;
+    s.substep = substep;
+    s.inverseSubstep = Real(1) / substep;
+    s.accumulate = settings.accumulateImpulses;
+    s.positionCorrection = settings.positionCorrection;
+    s.relaxBallFriction = settings.relaxBallFriction;
+    s.softness = makeSoftness(contactHertzInUse(settings), settings.contactDampingRatio, substep);
+    return s;
+}
+
 void prepareContacts(const BodySet& bodies, std::span<const Contact> contacts, std::span<const BodyLink> links, Real h,
                      bool warmStart, SolverWorkspace& workspace) {
     workspace.dynamics = bodies.dynamics;
@@ -254,15 +264,15 @@ void prepareContacts(const BodySet& bodies, std::span<const Contact> contacts, s
     workspace.starts.resize(contacts.size());
     workspace.rows.clear();
     workspace.turningAnchors.clear();
-    startWaves(workspace);
+    workspace.roundContacts.clear();
+    workspace.otherContacts.clear();
     workspace.bouncing.clear();
-    workspace.bouncing.reserve(contacts.size());  // no allocation while the contacts do not outgrow the last steps'
     std::size_t nextCached = 0;  // the contacts come in key order, mostly: each lookup starts where the last ended
-    for (std::size_t i = 0; i < contacts.size(); ++i) {
+    for (std::uint32_t i = 0; i < contacts.size(); ++i) {
         SolverContact& c = workspace.contacts[i];
         c = prepareOne(bodies, contacts[i], h, workspace, workspace.starts[i]);
-        placeInWave(workspace, static_cast<std::uint32_t>(i));  // batchRoundContacts()'s first walk, while c is in the cache
-        if (workspace.starts[i].restitution != Real(0)) workspace.bouncing.push_back(static_cast<std::uint32_t>(i));
+        (c.rows == kRoundContact ? workspace.roundContacts : workspace.otherContacts).push_back(i);
+        if (workspace.starts[i].restitution != Real(0)) workspace.bouncing.push_back(i);
         if (!warmStart) continue;
         if (const CachedImpulse* cached = findCachedImpulse(workspace.previousImpulses, keyOf(contacts[i]), nextCached)) {
             c.normalImpulse = cached->normalImpulse;
@@ -270,7 +280,6 @@ void prepareContacts(const BodySet& bodies, std::span<const Contact> contacts, s
             for (int k = 0; k < 2; ++k) c.tangentImpulse[k] = glm::dot(cached->frictionImpulse, c.tangent[k]);
         }
     }
-    packWaves(workspace);
 }
 
 void recordPoses(const BodySet& bodies, SolverWorkspace& workspace) {
@@ -281,11 +290,6 @@ void recordPoses(const BodySet& bodies, SolverWorkspace& workspace) {
     }
     recordKinematicPoses(bodies, workspace);
     workspace.poses.back() = Pose{};  // the planes' fixed pose at the origin
-    workspace.centres.resize(workspace.bodies.size());
-    workspace.centres[0] = SolverCentre{};  // the static record: a plane's "centre" is the origin
-    for (std::size_t i = 1; i < workspace.bodies.size(); ++i) {
-        workspace.centres[i].position = workspace.poses[workspace.recordBody[i]].position;
-    }
 }
 
 void recordKinematicPoses(const BodySet& bodies, SolverWorkspace& workspace) {
@@ -307,40 +311,6 @@ void copyVelocitiesOut(SolverWorkspace& workspace) {
     for (std::size_t i = 1; i < workspace.bodies.size(); ++i) copyVelocitiesOut(workspace, i);
 }
 
-bool packRecords(SolverWorkspace& workspace) {
-    if (!workspace.otherContacts.empty()) return false;  // rows of a box or a kinematic body: the object path
-    const std::size_t count = workspace.bodies.size();
-    workspace.centres.resize(count);
-    workspace.orientations.resize(count);
-    workspace.freeFlight.resize(count);
-    workspace.startMomentum.resize(count);
-    workspace.substepStart.resize(count);
-    workspace.centres[0] = SolverCentre{};  // the static record: a plane's "centre" is the origin
-    for (std::size_t i = 1; i < count; ++i) {
-        const DynamicObject& body = workspace.dynamics[workspace.recordBody[i]];
-        // A ball turns by ω = L/I about any axis (rotateTorqueFree()); a sleeper never has a contact
-        // (dropSleepingPairs()) and is never moved, which the kick would not know.
-        if (workspace.ballInertia[i] == Real(0) || !equalMoments(body.inverseInertiaBody) || body.asleep) return false;
-        workspace.centres[i].position = body.position;
-        workspace.orientations[i] = body.orientation;
-        workspace.freeFlight[i] = {body.acceleration, body.torque};
-        workspace.startMomentum[i] = body.angularMomentum;
-    }
-    return true;
-}
-
-void unpackRecords(SolverWorkspace& workspace) {
-    for (std::size_t i = 1; i < workspace.bodies.size(); ++i) {
-        DynamicObject& body = workspace.dynamics[workspace.recordBody[i]];
-        const SolverBody& record = workspace.bodies[i];
-        body.velocity = record.velocity;
-        body.angularVelocity = record.angularVelocity;
-        body.angularMomentum = workspace.ballInertia[i] * record.angularVelocity;  // as copyVelocitiesOut()
-        body.position = workspace.centres[i].position;
-        body.orientation = workspace.orientations[i];
-    }
-}
-
 void recordSubstepStart(SolverWorkspace& workspace) {
     workspace.substepStart.resize(workspace.bodies.size());
     for (std::size_t i = 1; i < workspace.bodies.size(); ++i) {
@@ -358,22 +328,22 @@ void warmStartContacts(SolverWorkspace& workspace, bool accumulate) {
             c.normalImpulse = 0;
             c.tangentImpulse[0] = c.tangentImpulse[1] = 0;
         }
-        clearRoundContactImpulses(workspace);
         return;
     }
-    std::vector<SolverBody>& bodies = workspace.bodies;
-    warmStartRoundContacts(workspace);
-    for (const std::uint32_t index : workspace.otherContacts) {
-        const SolverContact& c = workspace.contacts[index];
-        SolverBody a = bodies[c.bodyA];  // copies: kept in registers, stored once (solver_body.hpp)
-        SolverBody b = bodies[c.bodyB];
-        withRows(c, workspace, [&](const auto& rows) {
-            rows.applyNormal(a, b, c.normalImpulse);
-            rows.applyTangents(a, b, c.tangentImpulse[0], c.tangentImpulse[1]);
-        });
-        bodies[c.bodyA] = a;
-        bodies[c.bodyB] = b;
-    }
+    for (const std::uint32_t index : workspace.roundContacts) warmStartContact(workspace, index);
+    for (const std::uint32_t index : workspace.otherContacts) warmStartContact(workspace, index);
+}
+
+void warmStartContact(SolverWorkspace& workspace, std::uint32_t index) {
+    const SolverContact& c = workspace.contacts[index];
+    SolverBody a = workspace.bodies[c.bodyA];  // copies: kept in registers, stored once (solver_body.hpp)
+    SolverBody b = workspace.bodies[c.bodyB];
+    withRows(c, workspace, [&](const auto& rows) {
+        rows.applyNormal(a, b, c.normalImpulse);
+        rows.applyTangents(a, b, c.tangentImpulse[0], c.tangentImpulse[1]);
+    });
+    workspace.bodies[c.bodyA] = a;
+    workspace.bodies[c.bodyB] = b;
 }
 
 void warmStartFromLastSubstep(SolverWorkspace& workspace) {
@@ -391,48 +361,47 @@ void warmStartFromLastSubstep(SolverWorkspace& workspace) {
 }
 
 void solveContacts(SolverWorkspace& workspace, const ContactSolverSettings& settings, bool useBias) {
-    const Real inverseSubstep = Real(1) / settings.substep;
-    std::vector<SolverBody>& bodies = workspace.bodies;
-    solveRoundContacts(workspace, settings, useBias);  // four at a time (round_contact_lanes.hpp)
-    for (const std::uint32_t index : workspace.otherContacts) {
-        SolverContact& c = workspace.contacts[index];
-        // Normal: λ = −K⁻¹·s_m·(v_n + bias) − s_i·λ_acc (softness.hpp).
-        const Real separation = currentSeparation(c, workspace);
-        Real bias = 0;
-        Real massScale = 1;
-        Real impulseScale = 0;
-        if (separation > 0) {
-            bias = separation * inverseSubstep;  // speculative: close the gap in this substep, no further
-        } else if (useBias && settings.positionCorrection) {
-            bias = std::max(settings.softness.biasRate * separation, -kMaxPushOutSpeed);
-            massScale = settings.softness.massScale;
-            impulseScale = settings.softness.impulseScale;
-        }
-        SolverBody a = bodies[c.bodyA];  // copies: kept in registers, stored once (solver_body.hpp)
-        SolverBody b = bodies[c.bodyB];
-        withRows(c, workspace, [&](const auto& rows) {
-            const Real vn = rows.normalVelocity(a, b);
-            const Real impulse = -c.normalMass * massScale * (vn + bias) - impulseScale * c.normalImpulse;
-            Real applied = 0;
-            if (settings.accumulate) {
-                const Real total = std::max(c.normalImpulse + impulse, Real(0));
-                applied = total - c.normalImpulse;
-                c.normalImpulse = total;
-            } else {  // Box2D-Lite's switch: clamp each increment, which cannot undo an earlier overshoot
-                applied = std::max(impulse, Real(0));
-                c.normalImpulse += applied;
-            }
-            c.maxNormalImpulse = std::max(c.maxNormalImpulse, c.normalImpulse);
-            rows.applyNormal(a, b, applied);
-            if (passSolvesFriction(c, settings, useBias)) solveFriction(c, rows, a, b);
-        });
-        bodies[c.bodyA] = a;
-        bodies[c.bodyB] = b;
+    for (const std::uint32_t index : workspace.roundContacts) solveContact(workspace, index, settings, useBias);
+    for (const std::uint32_t index : workspace.otherContacts) solveContact(workspace, index, settings, useBias);
+}
+
+void solveContact(SolverWorkspace& workspace, std::uint32_t index, const ContactSolverSettings& settings, bool useBias) {
+    SolverContact& c = workspace.contacts[index];
+    // Normal: λ = −K⁻¹·s_m·(v_n + bias) − s_i·λ_acc (softness.hpp).
+    const Real separation = currentSeparation(c, workspace);
+    Real bias = 0;
+    Real massScale = 1;
+    Real impulseScale = 0;
+    if (separation > 0) {
+        bias = separation * settings.inverseSubstep;  // speculative: close the gap in this substep, no further
+    } else if (useBias && settings.positionCorrection) {
+        bias = std::max(settings.softness.biasRate * separation, -kMaxPushOutSpeed);
+        massScale = settings.softness.massScale;
+        impulseScale = settings.softness.impulseScale;
     }
+    SolverBody a = workspace.bodies[c.bodyA];  // copies: kept in registers, stored once (solver_body.hpp)
+    SolverBody b = workspace.bodies[c.bodyB];
+    withRows(c, workspace, [&](const auto& rows) {
+        const Real vn = rows.normalVelocity(a, b);
+        const Real impulse = -c.normalMass * massScale * (vn + bias) - impulseScale * c.normalImpulse;
+        Real applied = 0;
+        if (settings.accumulate) {
+            const Real total = std::max(c.normalImpulse + impulse, Real(0));
+            applied = total - c.normalImpulse;
+            c.normalImpulse = total;
+        } else {  // Box2D-Lite's switch: clamp each increment, which cannot undo an earlier overshoot
+            applied = std::max(impulse, Real(0));
+            c.normalImpulse += applied;
+        }
+        c.maxNormalImpulse = std::max(c.maxNormalImpulse, c.normalImpulse);
+        rows.applyNormal(a, b, applied);
+        if (passSolvesFriction(c, settings, useBias)) solveFriction(c, rows, a, b);
+    });
+    workspace.bodies[c.bodyA] = a;
+    workspace.bodies[c.bodyB] = b;
 }
 
 bool applyRestitution(SolverWorkspace& workspace) {
-    syncRoundContacts(workspace);
     bool bounced = false;
     for (const std::uint32_t i : workspace.bouncing) {  // the contacts with e ≠ 0, in order
         SolverContact& c = workspace.contacts[i];
@@ -463,15 +432,11 @@ std::size_t bytesOf(const std::vector<T>& array) {
 
 SolverFootprint solverFootprint(const SolverWorkspace& w) {
     SolverFootprint f;
-    f.passBytes = bytesOf(w.bodies) + bytesOf(w.centres) + bytesOf(w.roundBatches) + bytesOf(w.rows) +
-                  w.otherContacts.size() * sizeof(SolverContact);
-    f.allBytes = bytesOf(w.contacts) + bytesOf(w.starts) + bytesOf(w.rows) + bytesOf(w.turningAnchors) +
-                 bytesOf(w.bodies) + bytesOf(w.inertias) + bytesOf(w.recordBody) + bytesOf(w.ballInertia) +
-                 bytesOf(w.bodyRecord) + bytesOf(w.previousImpulses) + bytesOf(w.currentImpulses) +
-                 bytesOf(w.poses) + bytesOf(w.centres) + bytesOf(w.substepStart) + bytesOf(w.roundBatches) +
-                 bytesOf(w.otherContacts) + bytesOf(w.bouncing) + bytesOf(w.nextWave) + bytesOf(w.waveOf) +
-                 bytesOf(w.waveStart) + bytesOf(w.waveOrder) + bytesOf(w.orientations) + bytesOf(w.turnSums) +
-                 bytesOf(w.freeFlight) + bytesOf(w.startMomentum);
+    f.passBytes = bytesOf(w.bodies) + bytesOf(w.contacts) + bytesOf(w.rows) + bytesOf(w.turningAnchors) + bytesOf(w.poses) +
+                  bytesOf(w.roundContacts) + bytesOf(w.otherContacts);
+    f.allBytes = f.passBytes + bytesOf(w.starts) + bytesOf(w.bouncing) + bytesOf(w.inertias) + bytesOf(w.recordBody) +
+                 bytesOf(w.ballInertia) + bytesOf(w.bodyRecord) + bytesOf(w.previousImpulses) +
+                 bytesOf(w.currentImpulses) + bytesOf(w.substepStart) + bytesOf(w.turnSums);
     return f;
 }
 

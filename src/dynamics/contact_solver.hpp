@@ -36,7 +36,7 @@
 /// K_nt = J_n·M⁻¹·J_tᵀ. At a box's corner it is not zero (r × n and r × t
 /// are not at right angles in general): the relax's normal impulse turns the
 /// box and sets the corner sliding, and without friction in the relax a 100:1
-/// stack creeps 37 mm in 10 s instead of 1.5 mm. At a ball's contact the
+/// stack creeps sideways ("A 100 kg box stands on a 1 kg box", tests/test_solver.cpp). At a ball's contact the
 /// normal row has no angular part (the impulse passes through the centres)
 /// and n ⊥ t, so K_nt = 0: the relax's normal impulse leaves that contact's
 /// sliding exactly as it was, and its friction rows are solved once a
@@ -45,12 +45,10 @@
 /// only, unless ContactSolverSettings::relaxBallFriction (`RelaxBallFriction=true`)
 /// asks for both. Other contacts' relax impulses still change a ball's sliding
 /// (it is a Gauss–Seidel pass), and the next solve pass takes that up. What
-/// that costs is measurable and small: three balls stacked as a triangle,
-/// which stand exactly from μ = 2 − √3 = 0.2679 between them, stand in the
-/// engine from 0.2704 and fall at 0.2702 (with the relax's friction: from
-/// 0.2700, falling at 0.2695; 4 s without sleep): both within 1 % of
-/// Coulomb's line (tests/test_friction.cpp checks 0.25 and 0.29). The 1k sphere rain
-/// steps 13 % faster (bench/solver_performance.md, sixteenth round).
+/// that costs is small and measured: three balls stacked as a triangle, which
+/// stand exactly from μ = 2 − √3 = 0.2679 between them, stand in the engine
+/// within about 1 % of Coulomb's line with or without the relax's friction
+/// (tests/test_friction.cpp: they fall at μ = 0.25 and stand at 0.29).
 /// Engines commonly solve friction in fewer passes than the normal rows:
 /// PhysX's PGS solver, by default, skips it in all but the last three of its
 /// biased (position) iterations (`PxSceneFlag::eENABLE_FRICTION_EVERY_ITERATION`
@@ -75,7 +73,6 @@
 #include "collision/contact.hpp"
 #include "dynamics/impulse_resolver.hpp"
 #include "dynamics/islands.hpp"
-#include "dynamics/round_contact_lanes.hpp"
 #include "dynamics/softness.hpp"
 #include "dynamics/solver_body.hpp"
 #include "objects/body_set.hpp"
@@ -102,9 +99,8 @@ inline constexpr std::uint32_t kRoundContact = 0xffffffffu;
 
 /// @brief One contact point held by the sequential-impulse solver through a step: what every pass reads.
 ///
-/// A pass streams this array, 33 times a step at the default 16 substeps (a
-/// solve and a relax pass in each, and the first substep's warm start), so it
-/// holds only what a pass reads; where the contact came
+/// A pass reads this array once per solve or relax pass, 32 times a step at the
+/// default 16 substeps, so it holds only what a pass reads; where the contact came
 /// from (its bodies, lever arms, point and start gap) and its bounce are in
 /// the parallel ContactStart array. The bodies are named by their
 /// solver-body records (solver_body.hpp), not by pointers into the World's
@@ -119,17 +115,14 @@ inline constexpr std::uint32_t kRoundContact = 0xffffffffu;
 /// (a box, a kinematic body) keeps them in the side array
 /// SolverWorkspace::rows, which a pass reads at index `rows`.
 ///
-/// **Four at a time.** Round contacts are also the ones a pass can solve four
-/// at a time in SIMD lanes: once a step they are put in *waves*, each contact
-/// one wave after the last earlier contact on either of its bodies, so that
-/// no two of a wave share a dynamic body and every body meets its contacts in
-/// their order; they are packed four of a wave to a RoundBatch
-/// (round_contact_lanes.hpp). A pass solves the batches wave by wave, which
-/// gives exactly the numbers of solving the round contacts one at a time in
-/// their order, then the other contacts one at a time (otherContacts).
-/// Through the substeps a round contact's impulses live in its batch; they
-/// are copied back here before the bounce and whenever a StepObserver looks
-/// (syncRoundContacts()).
+/// **The order of a pass.** A Gauss–Seidel pass solves the contacts one
+/// after the other, each reading the velocities the earlier ones left, so
+/// the order is part of the result. A pass here takes the round contacts
+/// first, then the others, each group in the order the narrowphase found them
+/// (SolverWorkspace::roundContacts, SolverWorkspace::otherContacts). Any fixed
+/// order is as good a sweep as another; this one is the order in which the
+/// fast path (src/fast/) can also solve four round contacts at a time, so the
+/// two roads compute the same numbers.
 ///
 /// **The separation without the contact point.** An anchor either turns with
 /// its body (a box's material point: p = c + R·l, with l fixed in the body)
@@ -198,26 +191,24 @@ struct BodyVelocity {
     Vec3 angularVelocity{0, 0, 0};  ///< ω, world frame, rad/s.
 };
 
-/// @brief What free flight needs of a ball on the packed substeps, for the whole step (World::substepOnRecords()).
-struct FreeFlight {
-    Vec3 acceleration{0, 0, 0};   ///< a from the apply-forces stage, m/s² (the same in every substep).
-    Vec3 torque{0, 0, 0};         ///< τ from the apply-forces stage, N·m.
-};
-
 /// @brief A sum of angular velocities, padded to four Reals so that it is one aligned load (SolverWorkspace::turnSums).
 struct alignas(4 * sizeof(Real)) SpinSum {
     Vec3 sum{0, 0, 0};  ///< Σ ω, rad/s.
     Real unused = 0;    ///< Padding to four Reals.
 };
 
-/// @brief What the contact solver needs of the World's settings for one substep.
+/// @brief What the contact solver needs of the World's settings for one substep (makeContactSolverSettings()).
 struct ContactSolverSettings {
     Real substep = 0;                ///< h_s = h / substeps, s.
+    Real inverseSubstep = 0;         ///< 1/h_s, 1/s: a speculative gap C may close at C/h_s.
     Softness softness;               ///< From ContactHertz and ContactDampingRatio at h_s.
     bool accumulate = true;          ///< Clamp the accumulated impulse (true) or each increment (false).
     bool positionCorrection = true;  ///< Use the soft bias on overlaps (false: overlaps are never pushed out).
     bool relaxBallFriction = false;  ///< The relax passes solve a round contact's friction too ("Friction in the relax", above).
 };
+
+/// @brief The contact solver's settings for substeps of @p substep seconds, from the World record @p settings.
+ContactSolverSettings makeContactSolverSettings(const WorldSettings& settings, Real substep);
 
 /// @brief Whether a pass solves the friction rows of the round contacts: every solve pass does,
 /// a relax pass (@p useBias false) only with ContactSolverSettings::relaxBallFriction
@@ -232,14 +223,20 @@ inline bool passSolvesFriction(const SolverContact& c, const ContactSolverSettin
     return c.rows != kRoundContact || passSolvesRoundFriction(settings, useBias);
 }
 
-/// @brief Scratch arrays of the sequential-impulse contact solver, reused every step.
+/// @brief The contact solver's arrays, rebuilt by prepareContacts() every step and reused, so a
+/// step allocates nothing once the scene has settled.
 struct SolverWorkspace {
     std::vector<SolverContact> contacts;         ///< One per contact point, this step: what the passes read.
-    std::vector<ContactStart> starts;            ///< The same contacts' origin and bounce (cold: prepare, bounce, trace).
+    std::vector<ContactStart> starts;            ///< The same contacts' origin and bounce (read by prepare, the bounce, the trace).
     std::vector<ContactRows> rows;               ///< Rows of the contacts that are not round (boxes, kinematic bodies).
     std::vector<TurningAnchors> turningAnchors;  ///< Anchors of the contacts with a turning anchor (boxes).
+    std::vector<std::uint32_t> roundContacts;    ///< The round contacts, in order: a pass solves these first.
+    std::vector<std::uint32_t> otherContacts;    ///< The contacts with stored rows, in order: a pass solves these next.
+    /// The contacts that may bounce (ContactStart::restitution ≠ 0), in order: all that
+    /// applyRestitution() visits (in a pile at rest they are few).
+    std::vector<std::uint32_t> bouncing;
     std::vector<SolverBody> bodies;              ///< Record 0 static, then one per dynamic body in a contact or a joint (solver_body.hpp).
-    std::vector<SolverBodyInertia> inertias;     ///< The same records' inertia (cold: prepare, and a box's write-back).
+    std::vector<SolverBodyInertia> inertias;     ///< The same records' inertia (read by prepare and a box's write-back).
     std::vector<std::uint32_t> recordBody;       ///< Per record: its body's index in the World's dynamic array (the copies in and out).
     std::vector<Real> ballInertia;               ///< Per record: a ball's I, kg·m², for L = I·ω at the write-back (zero: a box).
     std::vector<std::uint32_t> bodyRecord;       ///< Per dynamic body: its record in `bodies`, or kStaticSolverBody if none.
@@ -249,30 +246,11 @@ struct SolverWorkspace {
     /// The poses separations are measured at: the dynamic bodies (by index, as the joints read them), then the
     /// kinematic bodies, then one fixed pose at the origin that every plane contact's B uses.
     std::vector<Pose> poses;
-    std::vector<SolverCentre> centres;           ///< Per record: its body's centre at the same poses (the batched pass reads these).
     /// Per record: v and ω as free flight left them, before this substep's warm start (of joints or
     /// contacts): what the drift measures Δv from, and what warmStartFromLastSubstep() subtracts.
     std::vector<BodyVelocity> substepStart;
-    /// The round contacts, four of one wave per batch (round_contact_lanes.hpp). Through the
-    /// substeps their impulses live here; syncRoundContacts() copies them into `contacts`.
-    std::vector<RoundBatch> roundBatches;
-    std::vector<std::uint32_t> otherContacts;    ///< The contacts solved one at a time, in order, after the batches: those with stored rows.
-    /// The contacts that may bounce (ContactStart::restitution ≠ 0), in order: all that
-    /// applyRestitution() visits. In a pile at rest they are few, and walking every contact's
-    /// two records once more (the 64k rain's 58 MB) was most of the restitution stage's time.
-    std::vector<std::uint32_t> bouncing;
-    std::vector<std::uint32_t> nextWave;         ///< Per record: the first wave its next contact may take (scratch of placeInWave()).
-    std::vector<std::uint32_t> waveOf;           ///< Per contact: its wave (scratch).
-    std::vector<std::uint32_t> waveStart;        ///< Per wave: where its contacts start in waveOrder (scratch).
-    std::vector<std::uint32_t> waveOrder;        ///< The round contacts, wave by wave (scratch).
-    std::uint32_t waves = 0;                     ///< How many waves placeInWave() has opened (scratch).
-    bool roundBatchesAhead = false;              ///< The batches hold newer impulses than `contacts` (syncRoundContacts()).
-    /// Per record, on the packed substeps only (packRecords()): its ball's orientation at the step's
-    /// start, turned there by the last substep's drift (`turnSums`). (Its centre is in `centres`,
-    /// its v and ω in `bodies`.)
-    std::vector<Quat> orientations;
     /// Per record: the ω its ball has turned by in each substep so far, summed, rad/s; the last
-    /// substep's drift turns the ball once by h_s times the sum (velocity_change_drift.cpp, "A ball
+    /// substep's drift turns the ball once by h_s times the sum (velocity_change_drift.hpp, "A ball
     /// turns once a step"). Zeroed by prepareContacts().
     std::vector<SpinSum> turnSums;
     /// No joint holds a body and no spring pulls one: then nothing reads a ball's orientation inside
@@ -280,25 +258,20 @@ struct SolverWorkspace {
     /// spring's anchor turns with its ball, so with either every ball turns in every substep. Set by
     /// the World before the substeps.
     bool ballsTurnOnce = true;
-    std::vector<FreeFlight> freeFlight;          ///< Per record, on the packed substeps only: its a and τ.
-    /// Per record, on the packed substeps only: its L at the start of the step, kg·m²/s, which the first
-    /// substep's kick starts from (later ones take L = I·ω, as copyVelocitiesOut() writes it).
-    std::vector<Vec3> startMomentum;
 };
 
 /// @brief How many bytes the solver's arrays hold this step (sizes, not capacities).
 ///
 /// Why a benchmark asks: a step costs the same per body at every size only while the arrays
-/// its walks read stay in the processor's caches. A pass reads the body records (`bodies`,
-/// `centres`) and the batches, or for a contact with stored rows its SolverContact and
-/// ContactRows; prepare and the bounce read the rest once a step (`stepwise-bench stage-costs`).
+/// its passes read stay in the processor's caches (`stepwise-bench stage-costs`).
 /// solverFootprint() names every array of SolverWorkspace: a new one belongs there too.
 struct SolverFootprint {
-    std::size_t passBytes = 0;  ///< What every contact pass reads: the records, the batches, the other contacts' rows.
+    std::size_t passBytes = 0;  ///< What every contact pass reads.
     std::size_t allBytes = 0;   ///< Every array of the workspace, those included.
 };
 
-/// @brief The footprint of @p workspace as the last prepareContacts() (and the substeps) left it.
+/// @brief The footprint of @p workspace as the last prepareContacts() (and the substeps) left it,
+/// for the plain passes: the body records, the contacts, their stored rows and turning anchors, the poses.
 SolverFootprint solverFootprint(const SolverWorkspace& workspace);
 
 /// @brief Builds one SolverContact per contact: anchors, effective masses,
@@ -306,7 +279,7 @@ SolverFootprint solverFootprint(const SolverWorkspace& workspace);
 /// record for each dynamic body in a contact or held by a joint (@p links),
 /// with its world I⁻¹ for the step. Every body a constraint can move has a
 /// record, so the passes over the records (the copies, the drift) reach
-/// all of them and no other.
+/// all of them and no other. Lists the round and the other contacts, in order.
 ///
 /// The bounce: the relative normal velocity v_n (< 0 approaching) is taken
 /// before any impulse, at the start of the step, when the surfaces are a gap
@@ -322,8 +295,7 @@ SolverFootprint solverFootprint(const SolverWorkspace& workspace);
 void prepareContacts(const BodySet& bodies, std::span<const Contact> contacts, std::span<const BodyLink> links, Real h,
                      bool warmStart, SolverWorkspace& workspace);
 
-/// @brief Records every body's pose, and each solver record's centre (SolverWorkspace::centres): the
-/// separations of the next solveContacts() are measured there.
+/// @brief Records every body's pose: the separations of the next solveContacts() are measured there.
 ///
 /// The solve measures C where the bodies were at the start of the substep,
 /// before free flight moved them: its bias then means what Box2D's does,
@@ -365,8 +337,7 @@ inline DynamicObject& copyVelocitiesOut(SolverWorkspace& workspace, std::size_t 
     body.velocity = s.velocity;
     // The passes changed ω by I⁻¹·ΔL with the step's world I⁻¹, so L changed by ΔL = I·Δω.
     // A ball's I is one number, the same in every orientation, so its L is simply I·ω: written
-    // from ω alone, it is the same whether the record is written back once or many times, which
-    // lets the packed substeps carry a ball without its L (World::substepOnRecords()).
+    // from ω alone, it is the same whether the record is written back once or many times.
     const Real ballInertia = workspace.ballInertia[record];
     if (ballInertia != Real(0)) {
         body.angularMomentum = ballInertia * s.angularVelocity;
@@ -377,43 +348,17 @@ inline DynamicObject& copyVelocitiesOut(SolverWorkspace& workspace, std::size_t 
     return body;
 }
 
-/// @name Packed substeps: the balls' state in the records for the whole step (World::substepOnRecords())
-///
-/// Between the contact passes of a substep the object path hands every
-/// record's body back and forth: the integrator moves the object, its
-/// velocities are copied into the record, the passes change them, the drift
-/// and the relax copy them out again (four passes over objects of some 400
-/// bytes, at 64k balls a quarter of the step). A ball needs little more
-/// than its record holds already: its centre (`centres`), its orientation,
-/// and a, τ for free flight, the same all step when no spring or attractor
-/// follows it. So in a step where every contact holds balls only, those
-/// are gathered once into arrays indexed like the records, the substeps
-/// work there (integrateSymplecticEulerOnRecords(), driftRecordsByVelocityChange()),
-/// and the objects are written once at the end. It is Box2D v3's layout
-/// (b2BodyState, b2BodySim), taken only as far as balls, whose inertia is a
-/// number.
-///@{
-
-/// @brief Gathers what the packed substeps need (`centres`, `orientations`, `freeFlight`, `startMomentum`) from the objects
-/// of the records; false when this step cannot take them: a contact with stored rows (a box or a
-/// kinematic body), or a record whose body is not an awake ball with three equal moments of inertia.
-/// (What it wrote before finding that out is scratch: the object road records its own centres.)
-bool packRecords(SolverWorkspace& workspace);
-
-/// @brief Writes the packed substeps' results to the objects: v, ω, L = I·ω, centre and orientation.
-///
-/// The same numbers the object path's copies and drift would have left there (copyVelocitiesOut()
-/// writes a ball's L as I·ω for this reason), and idempotent: writing twice changes nothing.
-void unpackRecords(SolverWorkspace& workspace);
-///@}
-
 /// @brief Notes each record's v and ω as free flight left them (SolverWorkspace::substepStart), before
 /// anything acts on them this substep: the drift moves a body by what the constraints changed since.
 void recordSubstepStart(SolverWorkspace& workspace);
 
-/// @brief Applies every contact's accumulated impulses (the warm start), at the start of a substep.
-/// With @p accumulate off, instead starts each contact's impulses from zero.
+/// @brief Applies every contact's accumulated impulses (the warm start), at the start of a substep,
+/// in the order of a pass (the round contacts, then the others). With @p accumulate off, instead
+/// starts each contact's impulses from zero.
 void warmStartContacts(SolverWorkspace& workspace, bool accumulate);
+
+/// @brief The warm start of contact @p index alone: its accumulated impulses applied to its two solver bodies.
+void warmStartContact(SolverWorkspace& workspace, std::uint32_t index);
 
 /// @brief The same warm start in a later substep of the step, per body instead of per contact;
 /// copies the velocities in from the objects as copyVelocitiesIn() does, and notes them as
@@ -426,18 +371,21 @@ void warmStartContacts(SolverWorkspace& workspace, bool accumulate);
 /// velocity change the contact passes made to the body in the last substep:
 /// Δv = v_end − v_start, Δω = ω_end − ω_start. Adding it per body gives the
 /// same velocities, to rounding, without reading the contacts: a pass over the
-/// bodies instead of over the (several times more, and ten times larger)
-/// contacts. It holds only when nothing but the contact passes changed the
+/// bodies instead of over the (several times more, and larger) contacts.
+/// It holds only when nothing but the contact passes changed the
 /// records during the last substep: not in the first substep (the λ_c come
 /// from the last step, with other rows), not with joints (a joint pass changes
 /// the velocities too), and not without accumulated impulses.
 void warmStartFromLastSubstep(SolverWorkspace& workspace);
 
-/// @brief One Gauss–Seidel pass over all contacts: the round ones four at a time, wave by
-/// wave (round_contact_lanes.hpp), then the others one at a time in their order.
+/// @brief One Gauss–Seidel pass over all contacts: the round ones in their order, then the
+/// others in theirs ("The order of a pass", SolverContact).
 /// @param useBias true for the solve (soft push-out), false for the relax pass (which solves a
 ///        round contact's friction only with ContactSolverSettings::relaxBallFriction: passSolvesFriction()).
 void solveContacts(SolverWorkspace& workspace, const ContactSolverSettings& settings, bool useBias);
+
+/// @brief Contact @p index solved once: its normal row, then its friction rows if this pass solves them.
+void solveContact(SolverWorkspace& workspace, std::uint32_t index, const ContactSolverSettings& settings, bool useBias);
 
 /// @brief After the substeps: the bounce, e·v_c along n, for contacts that pushed and are not resting.
 /// @return true if any contact bounced (only then did a solver body's velocity change).

@@ -11,8 +11,7 @@
 /// contact_solver.hpp), the contacts refer to those records by a 32-bit
 /// index, and the velocities are written back after it (scatter:
 /// copyVelocitiesOut()), once per solve and once per relax stage when the
-/// scene has no joints; in a step whose contacts all hold balls, not between
-/// the substeps at all (the packed substeps, World::substepOnRecords()). The world inverse inertia I⁻¹ = R·I_body⁻¹·Rᵀ is computed
+/// scene has no joints. The world inverse inertia I⁻¹ = R·I_body⁻¹·Rᵀ is computed
 /// once per body per step (the solver holds it fixed through the step, see
 /// point_impulse.hpp) and goes into the contacts' rows (ContactRow below),
 /// not into the record a pass reads.
@@ -55,11 +54,8 @@ inline constexpr std::size_t kSolverBodyAlignment = 8 * sizeof(Real);
 /// instead of storing and reloading a body after every row.
 ///
 /// Aligned to its size, so that a record is one cache line and not two halves of
-/// two: the array's storage came 48 bytes past a line, so every record straddled
-/// two lines, and with 64k balls (6 MB of records, more than the 2 MB of L2) each
-/// body a pass touched cost two fetches from L3 instead of one (the settled 64k
-/// rain's batched pass 43.6 → 41.6 ns a ball, bench/solver_performance.md,
-/// fourteenth round).
+/// two: a record that straddles two lines costs two fetches from memory
+/// whenever a pass touches its body, once the records outgrow the caches.
 struct alignas(kSolverBodyAlignment) SolverBody {
     Vec3 velocity{0, 0, 0};         ///< Linear velocity of the centre of mass, m/s.
     Vec3 angularVelocity{0, 0, 0};  ///< Angular velocity, world frame, rad/s.
@@ -68,18 +64,6 @@ struct alignas(kSolverBodyAlignment) SolverBody {
     /// contact's friction turns it by (applyRoundFrictionImpulse() below). Zero for a box,
     /// whose contacts keep their turn per unit impulse in stored rows.
     Real inverseInertia = 0;
-};
-
-/// @brief A record's centre, padded to four Reals: where a round contact's separation is measured.
-///
-/// The separation of a ball contact needs only the two centres (contact_solver.hpp,
-/// currentSeparation()). The batched pass reads them by the same record
-/// indices as the velocities, four at a time, one aligned load each, instead
-/// of the bodies' full poses (a position and a quaternion, 56 bytes) by
-/// another pair of indices.
-struct alignas(4 * sizeof(Real)) SolverCentre {
-    Vec3 position{0, 0, 0};  ///< The body's centre at the poses last recorded, m (record 0: the origin).
-    Real unused = 0;         ///< Padding to four Reals.
 };
 
 /// @brief What only prepare and a box's write-back read of a body: its inertia for the step.
@@ -164,9 +148,8 @@ inline void applyRowImpulse(SolverBody& a, SolverBody& b, const Vec3& d, const C
 /// ball; along a tangent t, with u = n × t,
 /// \f[ r_A\times t = \ell_A\,u,\qquad I_A^{-1}(r_A\times t) = I_A^{-1}\ell_A\,u . \f]
 /// The pass computes them on the fly instead of reading 288 bytes of rows per
-/// contact: the rain's contact array is 2.6 times smaller, and what does not
-/// have to come from memory is what a pass over tens of thousands of contacts
-/// waits for (bench/solver_performance.md, fourth round).
+/// contact: what does not have to come from memory is what a pass over tens
+/// of thousands of contacts would otherwise wait for.
 ///@{
 
 /// @brief J·v along the normal of a round contact: (v_B − v_A)·n, m/s.
@@ -204,7 +187,7 @@ inline void roundFrictionVelocities(const SolverBody& a, const SolverBody& b, co
 /// \f[ \Delta v_A = -m_A^{-1} P,\quad \Delta\omega_A = -I_A^{-1}\ell_A\,(n\times P),\qquad
 ///     \Delta v_B = m_B^{-1} P,\quad \Delta\omega_B = I_B^{-1}\ell_B\,(n\times P) . \f]
 /// One push and one twist serve both bodies: fewer operations than the two
-/// rows applied one after the other (bench/solver_performance.md, eighth round).
+/// rows applied one after the other.
 inline void applyRoundFrictionImpulse(SolverBody& a, SolverBody& b, const Vec3 (&t)[2], Real leverA, Real leverB,
                                       Real lambda1, Real lambda2) {
     const Vec3 push = lambda1 * t[0] + lambda2 * t[1];

@@ -64,8 +64,6 @@
 
 namespace stepwise {
 
-struct SolverWorkspace;  // src/dynamics/contact_solver.hpp
-
 /// @brief Does @p body skip its angular update this step? Only when the step
 /// plan says nothing can turn it (DynamicObject::canTurn is false, src/world/step_plan.hpp),
 /// and it is a sphere whose L, ω and τ are exactly zero.
@@ -90,22 +88,16 @@ void integrateExplicitEuler(std::span<DynamicObject> bodies, Real h);
 /// L ← L + h·τ, then the orientation by rotateTorqueFree() with the new L.
 void integrateSymplecticEuler(std::span<DynamicObject> bodies, Real h);
 
-/// @brief Symplectic Euler's kick on the contact solver's records, for the packed substeps
-/// (World::substepOnRecords()): v ← v + h·a, L ← L + h·τ, ω = L/I for every ball with a record.
-///
-/// The move x ← x + h·v and the turn follow after the solve, in driftRecordsByVelocityChange().
-/// In a later substep (@p firstSubstep false) the warm start rides along: what the contacts did to
-/// the ball in the last substep is added to the kicked velocities, as warmStartFromLastSubstep()
-/// adds it on the object path. @p canTurn: the step plan's rotation decision (skipsRotation()).
-/// @return The finite probe (zeroIfFinite(), core/types.hpp) of every velocity it wrote: zero
-/// exactly when all are finite, summed as they are written instead of read again afterwards.
-Real integrateSymplecticEulerOnRecords(SolverWorkspace& workspace, Real h, bool canTurn, bool firstSubstep);
-
 /// @brief Velocity Verlet: x ← x + h·v + ½h²·a, a_new = a(x_new), v ← v + ½h·(a + a_new);
 /// for rotation L ← L + ½h·τ, rotateTorqueFree() for h, τ_new = τ(q_new), L ← L + ½h·τ_new.
 /// @param accelerations recomputes DynamicObject::acceleration and DynamicObject::torque
 ///        at the new positions and orientations.
 void integrateVerlet(std::span<DynamicObject> bodies, Real h, const AccelerationFunction& accelerations);
+
+/// @brief Advances @p bodies by @p h with @p integrator, the scene's `Integrator`: one of the three above.
+/// @param forces recomputes the accelerations at new positions (used by Verlet only).
+void integrateBodies(IntegratorKind integrator, std::span<DynamicObject> bodies, Real h,
+                     const AccelerationFunction& forces);
 
 /// @brief Rotates @p orientation by a constant angular velocity @p omega (world frame, rad/s) for @p h seconds.
 ///
@@ -123,7 +115,7 @@ Quat rotateByAngularVelocity(const Quat& orientation, const Vec3& omega, Real h)
 /// rotateByAngularVelocity() by (|ω|·h)³/12 rad, 10⁻¹⁰ rad for a turn of
 /// 10⁻³ rad. Cheaper (a quaternion product, no series), so used where the
 /// angle is a correction of that size: the drift of a box by the solver's Δω
-/// (velocity_change_drift.cpp). Not for free flight, whose whole rotation it
+/// (dynamics/velocity_change_drift.hpp). Not for free flight, whose whole rotation it
 /// would make slightly slow, step after step.
 Quat turnBySmallAngle(const Quat& orientation, const Vec3& omega, Real h);
 
@@ -146,29 +138,6 @@ Quat rotateTorqueFree(const Quat& orientation, const Vec3& angularMomentum, cons
 /// move the position within the same step: x_{n+1} = x_n + h·v_n + share·h·Δv.
 /// (0 for explicit Euler, 1 for symplectic Euler, ½ for velocity Verlet.)
 Real positionShareOfVelocityChange(IntegratorKind integrator);
-
-/// @brief Sequential impulse: moves each body the constraints pushed by h·Δv + (1 − s)·h²·a and turns it by h·Δω,
-/// Δv and Δω being what the solve changed since recordSubstepStart() (velocity_change_drift.cpp); then
-/// records its pose for the relax passes (SolverWorkspace::poses, and its centre in SolverWorkspace::centres).
-/// A ball under symplectic Euler turns by h·ω with the solved ω instead; in a scene without joints and springs it is held
-/// at the step's orientation and turns once, in the @p lastSubstep, by h·Σω over the substeps
-/// (SolverWorkspace::turnSums).
-///
-/// Visits only the bodies with a solver record, those in a contact or a
-/// joint: no other body's velocity can have changed. Each one's solved
-/// velocities are first written back to its object (copyVelocitiesOut() for
-/// that record), in the same pass over the bodies.
-void driftByVelocityChange(SolverWorkspace& workspace, Real h, IntegratorKind integrator, bool lastSubstep);
-
-/// @brief The same drift on the packed substeps' records (World::substepOnRecords()), after
-/// symplectic Euler's kick: each ball moves by h·v with its kicked v, as the integrator would
-/// have moved it, then by h·Δv as above, and adds to its SolverWorkspace::turnSums the solved ω
-/// (or the kicked one, if the constraints left it as it was); in the @p lastSubstep it turns once,
-/// from the step's orientation, by h·Σω. Writes SolverWorkspace::centres and `turnSums`, and in the
-/// last substep SolverWorkspace::orientations; the objects are not touched.
-/// @return The finite probe (zeroIfFinite()) of every record's solved velocities and of what
-/// it wrote: zero exactly when all are finite.
-Real driftRecordsByVelocityChange(SolverWorkspace& workspace, Real h, bool lastSubstep);
 
 /// @brief Stage 3: moves kinematic bodies along their prescribed constant velocities.
 void moveKinematics(std::span<KinematicsObject> bodies, Real h);

@@ -3,7 +3,7 @@
 /// series hold and when a quaternion is near enough unit length for one Newton step.
 ///
 /// Shared by the scalar turn (kinematic_motion.cpp) and the four-at-a-time turn
-/// of the packed substeps (rotation_lanes.hpp), which must give the same bits.
+/// of the packed substeps (src/fast/rotation_lanes.hpp), which must give the same bits.
 #pragma once
 
 #include "core/types.hpp"

@@ -89,9 +89,23 @@ PlanDecision jointSolverOf(const PlanInputs& in) {
     return run("runs: the scene has joints");
 }
 
-/// The packed substeps carry one integrator, the contact passes and nothing else (World::substepOnRecords()).
+/// The fast path runs the substeps with the plain path's numbers; it has nothing faster for a scene without balls.
+PlanDecision fastPathOf(const PlanInputs& in, const StepPlan& plan) {
+    if (in.settings.solver == SolverKind::Impulse) return skip("not in the Impulse pipeline (it has no substeps)");
+    if (!in.settings.fastPath) {
+        return skip("off: FastPath=false (the default of the debug and student builds), so every step takes the plain path");
+    }
+    if (!plan.stage(Stage::SolveConstraints).runs) return skip("off: nothing to solve");
+    bool anyBall = false;
+    for (const DynamicObject& body : in.dynamics) anyBall = anyBall || body.shape == Shape::Sphere;
+    if (!anyBall) return skip("off: no dynamic ball, no round contact to take four at a time; the plain path runs");
+    return run("runs (src/fast/): round contacts four at a time in SIMD lanes, the plain path's numbers bit for bit");
+}
+
+/// The packed substeps carry one integrator, the contact passes and nothing else (src/fast/packed_substeps.hpp).
 PlanDecision packedSubstepsOf(const PlanInputs& in, const StepPlan& plan) {
     if (in.settings.solver == SolverKind::Impulse) return skip("not in the Impulse pipeline (it has no substeps)");
+    if (!plan.fastPath.runs) return skip("off: they are part of the fast path, which does not run");
     if (in.settings.integrator != IntegratorKind::SymplecticEuler) {
         return skip("off: they carry symplectic Euler only; this integrator moves the objects");
     }
@@ -100,9 +114,6 @@ PlanDecision packedSubstepsOf(const PlanInputs& in, const StepPlan& plan) {
     }
     if (plan.jointSolver.runs) return skip("off: joint passes work on the objects");
     if (plan.substepForces.runs) return skip("off: forces that follow the bodies are worked out on the objects");
-    bool anyBall = false;
-    for (const DynamicObject& body : in.dynamics) anyBall = anyBall || body.shape == Shape::Sphere;
-    if (!anyBall) return skip("off: no dynamic ball; a box's contacts are solved on the objects");
     return run("in a step whose contacts all hold balls: substeps on the solver's records, objects written once (same bits)");
 }
 
@@ -252,7 +263,8 @@ StepPlan makeStepPlan(const PlanInputs& in) {
         plan.substepForces = in.settings.solver == SolverKind::SequentialImpulse ? kOff : substepForcesOf(in);
         if (in.settings.solver == SolverKind::SequentialImpulse) plan.jointSolver = kOff;
         plan.idleSkip = skip("off: StepPlan=Off solves every step");
-        plan.packedSubsteps = skip("off: StepPlan=Off runs every substep on the objects");
+        plan.fastPath = skip("off: StepPlan=Off takes the plain path");
+        plan.packedSubsteps = skip("off: StepPlan=Off takes the plain path");
     } else {
         plan.collisions = collisionsOf(in);
         plan.boxBoxSat = boxBoxOf(in, false);
@@ -260,10 +272,13 @@ StepPlan makeStepPlan(const PlanInputs& in) {
         plan.rotation = rotationOf(in);
         plan.substepForces = substepForcesOf(in);
         plan.idleSkip = idleSkipOf(in);
-        plan.packedSubsteps = packedSubstepsOf(in, plan);
     }
     for (std::size_t i = 0; i < kStageCount; ++i) plan.stages[i] = run(runReason(static_cast<Stage>(i), plan.enabled));
     planStages(in, plan);
+    if (plan.enabled) {  // the roads of the substeps, once the stages are known
+        plan.fastPath = fastPathOf(in, plan);
+        plan.packedSubsteps = packedSubstepsOf(in, plan);
+    }
     return plan;
 }
 
@@ -313,6 +328,7 @@ std::string describeStepPlan(const StepPlan& plan) {
     line("forces per substep", plan.substepForces);
     line("joint solver", plan.jointSolver);
     line("idle step skip", plan.idleSkip);
+    line("fast path", plan.fastPath);
     line("packed substeps", plan.packedSubsteps);
     text += "  broadphase kind       ";
     text += toString(plan.broadphase);

@@ -76,7 +76,8 @@ struct StepPlan {
     PlanDecision substepForces;    ///< Sequential impulse: are the forces worked out again in every substep after the first?
     PlanDecision jointSolver;      ///< Do the joint calls (prepare, warm start, solve, break) run?
     PlanDecision idleSkip;         ///< Does a step with nothing awake and nothing moving return at once?
-    PlanDecision packedSubsteps;   ///< Sequential impulse: may the substeps run on the solver's packed records (World::substepOnRecords())?
+    PlanDecision fastPath;         ///< Sequential impulse: do the substeps run on the fast path (src/fast/fast_path.hpp)?
+    PlanDecision packedSubsteps;   ///< On the fast path: may a step of balls run its substeps on packed records (src/fast/packed_substeps.hpp)?
     SolverKind solver = SolverKind::SequentialImpulse; ///< The pipeline the scene runs (pipelineOrder()).
     int substeps = 1;              ///< Substeps of a sequential-impulse step.
     BroadphaseKind broadphase = BroadphaseKind::Auto; ///< The broadphase the scene asks for.
@@ -139,18 +140,22 @@ struct PlanInputs {
 ///   kinematic body moves, nothing can wake a sleeper (only an awake body or
 ///   a moving kinematic body does), so the whole step is skipped; the clock
 ///   still advances. Checked every step, since bodies wake and fall asleep.
-/// - **Packed substeps** (sequential impulse): not a skip but a shorter road
-///   to the same numbers. When the scene integrates with symplectic Euler,
-///   accumulates impulses, and has no joints and no forces that follow the
-///   bodies through the substeps, a step whose contacts all hold balls (no
-///   box, no kinematic body) runs its substeps on the contact solver's
-///   packed records and writes the objects once, at the end
-///   (World::substepOnRecords()). The records get the very operations the
-///   objects would, in the same order, so the trajectory is bit for bit the
-///   object path's (the "[plan]" tests compare them, StepPlan=Off taking the
-///   object path). Which road a step takes is decided each step, after the
-///   contacts are found; with a StepObserver attached, the World always takes
-///   the object path, so that the objects are current between the stages.
+/// - **Fast path** (sequential impulse): not a skip but another road to the
+///   same numbers. The substeps run on the fast path (src/fast/fast_path.hpp:
+///   round contacts four at a time in SIMD lanes) when the plan is on,
+///   `FastPath=true` (the default, except in the debug and student builds),
+///   a dynamic ball makes round contacts possible, and there is something to
+///   solve. It computes what the plain loop computes, bit for bit (the tests
+///   "[fast]" and "[plan]" compare them). With a StepObserver attached the
+///   World always takes the plain path, so that the objects are current
+///   between the stages and what a student watches is the textbook step.
+/// - **Packed substeps**, inside the fast path: when the scene integrates
+///   with symplectic Euler, accumulates impulses, and has no joints and no
+///   forces that follow the bodies through the substeps, a step whose
+///   contacts all hold awake balls (no box, no kinematic body) runs its
+///   substeps on the contact solver's packed records and writes the objects
+///   once, at the end (src/fast/packed_substeps.hpp). Which road a step takes
+///   is decided each step, after the contacts are found.
 /// - **Broadphase**: `Auto` takes brute force below kAutoBruteForceBelow
 ///   dynamic bodies (chooseBroadphase()); every broadphase returns the same
 ///   pairs in the same order.

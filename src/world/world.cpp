@@ -10,10 +10,14 @@
 
 #include "collision/narrowphase.hpp"
 #include "core/errors.hpp"
-#include "objects/inertia.hpp"
 #include "dynamics/islands.hpp"
+#include "dynamics/velocity_change_drift.hpp"
+#include "fast/fast_path.hpp"
+#include "fast/fast_workspace.hpp"
 #include "forces/apply_forces.hpp"
 #include "integrators/integrators.hpp"
+#include "objects/finite_state.hpp"
+#include "objects/inertia.hpp"
 
 namespace stepwise {
 
@@ -25,20 +29,10 @@ void require(bool condition, const std::string& object, const std::string& what)
 
 bool isFinite(Real x) { return std::isfinite(x); }
 
-/// The parts of a dynamic body's state a stage may write. checkFinite() reads
-/// only those after the stage: a stage that sets forces, or only velocities,
-/// does not pay for reading the whole body, which at 64k bodies is tens of
-/// megabytes several times a substep. A stage that writes a quantity outside
-/// its set would have a non-finite value named late, never missed: a non-finite
-/// force reaches the velocity at the next integrate, and the stages that run
-/// once a step check everything.
-enum StateParts : unsigned {
-    kPose = 1u << 0,    ///< position, orientation
-    kMotion = 1u << 1,  ///< velocity, angular velocity, angular momentum
-    kForces = 1u << 2,  ///< acceleration, torque
-    kEverything = kPose | kMotion | kForces,
-};
-
+/// The parts of a dynamic body's state each stage may write (objects/finite_state.hpp): checkFinite()
+/// reads only those after the stage. A stage that writes a quantity outside its set would have a
+/// non-finite value named late, never missed: a non-finite force reaches the velocity at the next
+/// integrate, and the stages that run once a step check everything.
 unsigned statePartsWrittenBy(Stage stage, IntegratorKind integrator) {
     switch (stage) {
         case Stage::ApplyForces: return kForces;
@@ -56,49 +50,6 @@ unsigned statePartsWrittenBy(Stage stage, IntegratorKind integrator) {
         case Stage::Sleep: return 0;  // flags, a timer, and exact zeros for the velocities of a body that falls asleep
         default: return kEverything;  // the once-a-step stages
     }
-}
-
-/// Bodies integrated between two finite probes in World::integrate(): 32 objects of
-/// 400 bytes are 12.8 kB, well inside a 32 kB L1 data cache.
-constexpr std::size_t kIntegrateBlock = 32;
-
-/// Zero exactly when the @p parts of the body's state are finite. checkFinite()
-/// runs after every stage, several times per substep, so it first takes this
-/// branch-free sum and searches component by component only when it fails.
-Real finiteProbe(const DynamicObject& body, unsigned parts) {
-    Real probe = 0;
-    if (parts & kPose) probe += zeroIfFinite(body.position) + zeroIfFinite(body.orientation);
-    if (parts & kMotion) {
-        probe += zeroIfFinite(body.velocity) + zeroIfFinite(body.angularVelocity) + zeroIfFinite(body.angularMomentum);
-    }
-    if (parts & kForces) probe += zeroIfFinite(body.acceleration) + zeroIfFinite(body.torque);
-    return probe;
-}
-
-/// The same probe over the contact solver's packed copies: each record's v and
-/// ω, and (with kPose in @p parts) the pose the drift recorded for its body.
-/// After the solve and relax stages these are the numbers just written to the
-/// objects, and the records are the only bodies those stages move
-/// (prepareContacts()), so the check reads two contiguous arrays instead of
-/// every object. (The angular momentum is I·ω for a ball and L + I·Δω for a box, with
-/// a finite ω: the next stage that checks it, integrate or restitution, names it if it
-/// overflowed.)
-/// On the packed substeps (@p packed) the poses are the records' own centres,
-/// orientations and summed turns (World::substepOnRecords()).
-Real finiteProbe(const SolverWorkspace& workspace, unsigned parts, bool packed) {
-    Real probe = 0;
-    for (std::size_t i = 1; i < workspace.bodies.size(); ++i) {
-        const SolverBody& record = workspace.bodies[i];
-        probe += zeroIfFinite(record.velocity) + zeroIfFinite(record.angularVelocity);
-        if ((parts & kPose) && packed) {
-            probe += zeroIfFinite(workspace.centres[i].position) + zeroIfFinite(workspace.turnSums[i].sum) +
-                     zeroIfFinite(workspace.orientations[i]);
-        } else if (parts & kPose) {
-            const Pose& pose = workspace.poses[workspace.recordBody[i]];
-            probe += zeroIfFinite(pose.position) + zeroIfFinite(pose.orientation);
-        }
-    }
-    return probe;
 }
 
 }  // namespace
@@ -150,8 +101,13 @@ World::World(Scene scene)
     }
     joints_ = makeJoints(scene.joints, dynamics_, settings_.solver);  // src/dynamics/joints/joint.cpp
     jointLinks(joints_, links_);
+    fastWorkspace_ = std::make_unique<FastWorkspace>();
     replan();
 }
+
+World::~World() = default;
+World::World(World&&) noexcept = default;
+World& World::operator=(World&&) noexcept = default;
 
 /// The step plan from what the World holds now (src/world/step_plan.cpp); it allocates nothing.
 void World::replan() {
@@ -211,65 +167,6 @@ void World::step() {
     if (observer_) observer_->afterStep(*this);
 }
 
-/// Runs @p move over the runs of dynamic bodies that @p picks, each run at most
-/// kIntegrateBlock long (with every body picked: the objects in blocks), and
-/// probes each run for non-finite numbers straight after, while it is still
-/// in cache; true when all were finite.
-template <class Picks, class Move>
-bool World::inProbedObjectRuns(Picks&& picks, Move&& move) {
-    const std::span<DynamicObject> all(dynamics_);
-    Real probe = 0;
-    for (std::size_t first = 0; first < all.size();) {
-        if (!picks(first)) {
-            ++first;
-            continue;
-        }
-        std::size_t end = first + 1;
-        while (end < all.size() && end - first < kIntegrateBlock && picks(end)) ++end;
-        const std::span<DynamicObject> run = all.subspan(first, end - first);
-        move(run);
-        for (const DynamicObject& body : run) probe += finiteProbe(body, kPose | kMotion);
-        first = end;
-    }
-    return probe == Real(0);
-}
-
-/// Advances the dynamic bodies by h with the scene's integrator.
-///
-/// The Euler integrators move each body by itself, so they run over blocks of
-/// kIntegrateBlock bodies, and each block is probed for non-finite numbers
-/// (finiteProbe()) straight after, while its bodies are still in the L1 cache.
-/// Checking afterwards would read every body again: at 64k bodies of 400 bytes
-/// that is 26 MB from main memory per substep, a tenth of the step's time in
-/// the 64k sphere rain (bench/solver_performance.md, ninth round). Verlet
-/// evaluates the forces of all bodies at once between its two half kicks
-/// (springs join bodies anywhere in the array), so it runs whole and
-/// checkFinite() reads the bodies afterwards as for any other stage.
-void World::integrate(Real h, const AccelerationFunction& forces) {
-    integratedFinite_ = false;
-    if (settings_.integrator == IntegratorKind::Verlet) {
-        integrateVerlet(dynamics_, h, forces);
-        return;
-    }
-    const auto everyBody = [](std::size_t) { return true; };
-    integratedFinite_ = inProbedObjectRuns(everyBody, [&](std::span<DynamicObject> block) {
-        if (settings_.integrator == IntegratorKind::ExplicitEuler) {
-            integrateExplicitEuler(block, h);
-        } else {
-            integrateSymplecticEuler(block, h);
-        }
-    });
-}
-
-/// Symplectic Euler for h over the bodies without a solver record, in runs
-/// probed as they go: on the packed substeps the balls with a record are
-/// kicked on their records instead (substepOnRecords()).
-void World::integrateBodiesWithoutRecord(Real h) {
-    const std::vector<std::uint32_t>& recordOf = solverWorkspace_.bodyRecord;
-    integratedFinite_ = inProbedObjectRuns([&](std::size_t i) { return recordOf[i] == kStaticSolverBody; },
-                                           [&](std::span<DynamicObject> run) { integrateSymplecticEuler(run, h); });
-}
-
 /// `Solver=Impulse`, the foundation's step: move, then find and repair the
 /// collisions the move made. Each line is one stage, in its own file.
 void World::stepWithImpulses() {
@@ -283,7 +180,7 @@ void World::stepWithImpulses() {
     // 2. Advance dynamic bodies by h (src/integrators/*.cpp)
     runStage(Stage::Integrate, [&] {
         if (settings_.continuousCollision) recordStartPositions(bodies(), sweepWorkspace_);  // for stage 3b
-        integrate(h, forces);
+        integrateBodies(settings_.integrator, dynamics_, h, forces);
     });
 
     // 3. Advance kinematic bodies along their prescribed motion (src/integrators/kinematic_motion.cpp)
@@ -345,18 +242,16 @@ void World::measureSweeps(Real h) {
 
 /// `Solver=SequentialImpulse`, Catto's soft step: find the contacts first,
 /// then hold them (and the joints) through `substeps` short substeps.
+///
+/// Each stage is a call into its own file. The substeps (5 to 7) run here, on
+/// the objects, unless the step plan sends them to the fast path
+/// (src/fast/fast_path.hpp), which computes the same numbers, bit for bit.
 void World::stepWithSequentialImpulses() {
     const Real h = settings_.timeStep;
     const Real hs = h / Real(settings_.substeps);
     const SceneForces sceneForces{settings_.gravity, springs_, attractors_};  // gravity, springs, attractors
     const AccelerationFunction forces = std::cref(sceneForces);  // by reference: no allocation per step
-    ContactSolverSettings contactSettings;
-    contactSettings.substep = hs;
-    contactSettings.accumulate = settings_.accumulateImpulses;
-    contactSettings.positionCorrection = settings_.positionCorrection;
-    contactSettings.relaxBallFriction = settings_.relaxBallFriction;
-    contactSettings.softness = makeSoftness(contactHertzInUse(settings_),
-                                            settings_.contactDampingRatio, hs);
+    const ContactSolverSettings contactSettings = makeContactSolverSettings(settings_, hs);
     const JointSolverSettings jointSettings = jointSolverSettings(settings_, hs);
 
     // 1. Forces → accelerations (src/forces/apply_forces.cpp); again at every substep when
@@ -383,72 +278,52 @@ void World::stepWithSequentialImpulses() {
                      narrowphaseWorkspace_);
     });
 
-    // 4. Contacts and joints → constraints; an awake body wakes the islands it touches
-    //    (src/dynamics/contact_solver.cpp, src/dynamics/joints/joint.cpp, src/dynamics/islands.cpp).
-    //    When every contact holds balls, they are packed into the solver's records for the substeps
-    //    (step_plan.hpp, "packed substeps"); an observer looks at the objects, so then they are not.
-    substepsOnRecords_ = false;
+    // 4. Prepare: contacts and joints → constraints; an awake body wakes the islands it touches
+    //    (src/dynamics/contact_solver.cpp, src/dynamics/joints/joint.cpp, src/dynamics/islands.cpp)
     runStage(Stage::PrepareConstraints, [&] {
         if (asleep_ > 0) wakeTouchedIslands(bodies(), contacts_, links_);
         prepareContacts(bodies(), contacts_, links_, h, settings_.warmStarting, solverWorkspace_);
         // A joint's or a spring's anchor on a ball turns with it; nothing else inside a step reads how a ball is turned
         solverWorkspace_.ballsTurnOnce = links_.empty() && springs_.empty();
         if (plan_.jointSolver.runs) prepareJoints(bodies(), joints_, settings_.warmStarting, jointWorkspace_);
-        substepsOnRecords_ = plan_.packedSubsteps.runs && observer_ == nullptr && packRecords(solverWorkspace_);
     });
 
-    // 5–7. The substeps: on the packed records (substepOnRecords(), below: the same operations on
-    //      other arrays), or on the objects, here.
-    if (substepsOnRecords_) substepOnRecords(hs, contactSettings);
-    for (int substep = 0; substep < (substepsOnRecords_ ? 0 : settings_.substeps); ++substep) {
-        substep_ = substep;  // for the observer's StageEvent
-        // 5. Free flight for h_s (src/integrators/*.cpp, kinematic_motion.cpp)
-        if (substep > 0 && plan_.substepForces.runs) runStage(Stage::ApplyForces, [&] { forces(dynamics_); });
-        runStage(Stage::Integrate, [&] {
-            // The solve measures separations from here (nothing to measure when it is skipped). From the
-            // second substep on, the last relax recorded these very poses: nothing has moved since.
-            const bool posesCurrent = substep > 0 && plan_.runs(Stage::RelaxConstraints);
-            if (plan_.runs(Stage::SolveConstraints) && !posesCurrent) recordPoses(bodies(), solverWorkspace_);
-            integrate(hs, forces);
-        });
-        runStage(Stage::MoveKinematics, [&] { moveKinematics(kinematics_, hs); });
+    // 5–7. The substeps: integrate, warm start, solve, move, relax.
+    //      The fast path runs them with the same numbers (src/fast/); with an observer the plain loop does,
+    //      so that what a student watches is the textbook step.
+    if (plan_.fastPath.runs && observer_ == nullptr) {
+        runFastPath(forces, contactSettings, jointSettings);
+    } else {
+        for (int substep = 0; substep < settings_.substeps; ++substep) {
+            substep_ = substep;  // for the observer's StageEvent
+            // 5. Free flight for h_s (src/integrators/*.cpp, kinematic_motion.cpp)
+            if (substep > 0 && plan_.substepForces.runs) runStage(Stage::ApplyForces, [&] { forces(dynamics_); });
+            runStage(Stage::Integrate, [&] {
+                recordPoses(bodies(), solverWorkspace_);  // the solve measures separations from before the flight
+                integrateBodies(settings_.integrator, dynamics_, hs, forces);
+            });
+            runStage(Stage::MoveKinematics, [&] { moveKinematics(kinematics_, hs); });
 
-        // 6. Warm start, soft solve (joints first, then contacts), and move by what the solve changed
-        //    (src/dynamics/joints/*.cpp, src/dynamics/contact_solver.cpp, src/integrators/velocity_change_drift.cpp)
-        //    The contact passes work on packed copies of the velocities (src/dynamics/solver_body.hpp),
-        //    the joints and the drift on the objects: copied in before, out after.
-        runStage(Stage::SolveConstraints, [&] {
-            // From the second substep on, the warm start is what the contacts did in the last one (no joints)
-            if (substep > 0 && settings_.accumulateImpulses && jointWorkspace_.joints.empty()) {
-                warmStartFromLastSubstep(solverWorkspace_);
-            } else {
-                recordSubstepStart(solverWorkspace_);  // what the drift measures Δv from
-                if (plan_.jointSolver.runs) warmStartJoints(jointWorkspace_, solverWorkspace_.poses);
-                copyVelocitiesIn(solverWorkspace_);
-                warmStartContacts(solverWorkspace_, settings_.accumulateImpulses);
-            }
-            for (int pass = 0; pass < settings_.velocityIterations; ++pass) {
-                if (plan_.jointSolver.runs) solveJointsBetweenContactPasses(jointSettings, true);
-                solveContacts(solverWorkspace_, contactSettings, true);
-            }
-            // The velocities back to the objects, each body moved by what they gained, its pose recorded
-            driftByVelocityChange(solverWorkspace_, hs, settings_.integrator, substep + 1 == settings_.substeps);
-        });
+            // 6. Warm start, solve (joints, then contacts, in each pass), and move each body by what the solve
+            //    changed (src/dynamics/contact_solver.cpp, joints/, velocity_change_drift.cpp)
+            runStage(Stage::SolveConstraints, [&] {
+                warmStart(substep);
+                for (int pass = 0; pass < settings_.velocityIterations; ++pass) solvePass(contactSettings, jointSettings, true);
+                driftByVelocityChange(solverWorkspace_, hs, settings_.integrator, substep + 1 == settings_.substeps);
+            });
 
-        // 7. Relax: the same passes without the push-out bias, so the push-out leaves no speed behind
-        //    (a ball's contacts: their normal rows; contact_solver.hpp, "Friction in the relax").
-        //    The drift moved the bodies but left their velocities alone: the copies are still current.
-        runStage(Stage::RelaxConstraints, [&] {
-            recordKinematicPoses(bodies(), solverWorkspace_);  // the drift recorded the dynamic bodies' poses
-            for (int pass = 0; pass < settings_.relaxIterations; ++pass) {
-                if (plan_.jointSolver.runs) solveJointsBetweenContactPasses(jointSettings, false);
-                solveContacts(solverWorkspace_, contactSettings, false);
-            }
-            copyVelocitiesOut(solverWorkspace_);
-        });
+            // 7. Relax: the same passes without the push-out bias, so the push-out leaves no speed behind
+            //    (contact_solver.hpp, "Position error without energy"). The separations are measured where
+            //    the drift left the bodies; the kinematic ones are recorded here.
+            runStage(Stage::RelaxConstraints, [&] {
+                recordKinematicPoses(bodies(), solverWorkspace_);
+                for (int pass = 0; pass < settings_.relaxIterations; ++pass) solvePass(contactSettings, jointSettings, false);
+                copyVelocitiesOut(solverWorkspace_);
+            });
+        }
+        substep_ = -1;
     }
 
-    substep_ = -1;
     // 7b. A body that moved farther than its half-thickness, through a wall no contact of this
     //     step held, goes back to where its path first touched it (src/collision/continuous.cpp)
     if (settings_.continuousCollision) {
@@ -456,10 +331,11 @@ void World::stepWithSequentialImpulses() {
     }
 
     // 8. Bounces, once per step, from the approach speed at touch (src/dynamics/contact_solver.cpp);
-    //    joints that pulled harder than their MaxForce break (src/dynamics/joints/joint.cpp)
+    //    the impulses kept for the next step's warm start; joints that pulled harder than their
+    //    MaxForce break (src/dynamics/joints/joint.cpp)
     runStage(Stage::Restitution, [&] {
-        // The records hold the objects' velocities still: the last relax wrote them out, and the
-        // continuous stage moves positions only. Only a bounce changes them, so only then do they go out.
+        // The last relax left the solver bodies' velocities and the objects' the same (the continuous
+        // stage moves positions only): only a bounce changes them, and then they go out.
         if (applyRestitution(solverWorkspace_)) copyVelocitiesOut(solverWorkspace_);
         impulses_.resize(contacts_.size());
         storeContactImpulses(contacts_, solverWorkspace_, impulses_);
@@ -472,64 +348,69 @@ void World::stepWithSequentialImpulses() {
     }
 }
 
-/// Stages 5–7 of stepWithSequentialImpulses() for a step whose contacts all
-/// hold balls: the same operations, in the same order, on the contact
-/// solver's records instead of the objects (step_plan.hpp, "packed substeps";
-/// contact_solver.hpp, packRecords()).
+/// The warm start of a substep: the impulses the constraints ended the last substep (or step) with,
+/// applied again before the first pass, so the passes start near the answer (Catto, GDC 2005).
 ///
-/// A ball's v and ω stay in its record all step, its centre and orientation
-/// in the arrays beside it, so nothing is copied in or out between the
-/// passes. Symplectic Euler's two lines are split around the solve: the kick
-/// before it (with the warm start from the last substep, which also only adds
-/// to v), the move by h·v after it, with the solver's change in the same pass,
-/// and the turn in the last substep's (src/integrators/symplectic_euler.cpp,
-/// velocity_change_drift.cpp: "A ball turns once a step"). The
-/// bodies without a record fly free on their objects. After the last relax
-/// the objects get their balls back, and from the bounce on the step goes on
-/// as before.
-void World::substepOnRecords(Real hs, const ContactSolverSettings& contactSettings) {
-    SolverWorkspace& records = solverWorkspace_;
-    for (int substep = 0; substep < settings_.substeps; ++substep) {
-        substep_ = substep;  // for the observer's StageEvent
-        // 5. Free flight: the kick on the records, whole flight for the bodies without one
-        runStage(Stage::Integrate, [&] {
-            recordsFinite_ = integrateSymplecticEulerOnRecords(records, hs, plan_.rotation.runs, substep == 0) == Real(0);
-            integrateBodiesWithoutRecord(hs);
-        });
-        runStage(Stage::MoveKinematics, [&] { moveKinematics(kinematics_, hs); });
-
-        // 6. Warm start (the first substep: from the contacts; later ones rode along with the kick), soft solve,
-        //    and the move by the solved velocities
-        runStage(Stage::SolveConstraints, [&] {
-            if (substep == 0) warmStartContacts(records, settings_.accumulateImpulses);
-            for (int pass = 0; pass < settings_.velocityIterations; ++pass) solveContacts(records, contactSettings, true);
-            // The probe after the drift sees the passes' velocities too: the drift does not change them
-            recordsFinite_ = driftRecordsByVelocityChange(records, hs, substep + 1 == settings_.substeps) == Real(0);
-        });
-
-        // 7. Relax; after the last one the objects get their balls' state back
-        runStage(Stage::RelaxConstraints, [&] {
-            for (int pass = 0; pass < settings_.relaxIterations; ++pass) solveContacts(records, contactSettings, false);
-            if (substep + 1 == settings_.substeps) unpackRecords(records);
-        });
+/// From the second substep on, when only the contacts acted (no joints) and the impulses are
+/// accumulated, the warm start is the velocity change the contact passes made in the last substep,
+/// added per body (warmStartFromLastSubstep(), contact_solver.hpp says why it is the same sum).
+/// Otherwise each constraint applies its impulses: the joints on the objects, the contacts on
+/// the solver bodies' copies of the velocities, copied in first.
+void World::warmStart(int substep) {
+    if (substep > 0 && settings_.accumulateImpulses && jointWorkspace_.joints.empty()) {
+        warmStartFromLastSubstep(solverWorkspace_);
+        return;
     }
+    recordSubstepStart(solverWorkspace_);  // what the drift measures Δv from
+    if (plan_.jointSolver.runs) warmStartJoints(jointWorkspace_, solverWorkspace_.poses);
+    copyVelocitiesIn(solverWorkspace_);
+    warmStartContacts(solverWorkspace_, settings_.accumulateImpulses);
 }
 
-/// A joint pass works on the objects' velocities, a contact pass on the solver
-/// bodies' copies: hand the velocities across around the joints. With no joint
-/// acting there is nothing to hand across (and the copies stay as they are,
-/// bit for bit, whether or not the step plan skips the joint solver).
-void World::solveJointsBetweenContactPasses(const JointSolverSettings& jointSettings, bool useBias) {
-    if (jointWorkspace_.joints.empty()) return;
-    copyVelocitiesOut(solverWorkspace_);
-    solveJoints(jointWorkspace_, solverWorkspace_.poses, jointSettings, useBias);
-    copyVelocitiesIn(solverWorkspace_);
+/// One Gauss–Seidel pass over every constraint: the joints (on the objects), then the contacts
+/// (on the solver bodies); @p useBias true for the solve, false for the relax.
+void World::solvePass(const ContactSolverSettings& contactSettings, const JointSolverSettings& jointSettings,
+                      bool useBias) {
+    if (plan_.jointSolver.runs) solveJointsBetweenContactPasses(jointWorkspace_, solverWorkspace_, jointSettings, useBias);
+    solveContacts(solverWorkspace_, contactSettings, useBias);
+}
+
+/// Stages 5–7 on the fast path (src/fast/fast_path.hpp): the one call into it, with what it needs.
+void World::runFastPath(const AccelerationFunction& forces, const ContactSolverSettings& contactSettings,
+                        const JointSolverSettings& jointSettings) {
+    const FastSubsteps step{.dynamics = dynamics_,
+                            .kinematics = kinematics_,
+                            .planes = planes_,
+                            .contacts = solverWorkspace_,
+                            .joints = jointWorkspace_,
+                            .forces = forces,
+                            .integrator = settings_.integrator,
+                            .substeps = settings_.substeps,
+                            .velocityIterations = settings_.velocityIterations,
+                            .relaxIterations = settings_.relaxIterations,
+                            .accumulateImpulses = settings_.accumulateImpulses,
+                            .contactSettings = contactSettings,
+                            .jointSettings = jointSettings,
+                            .forcesEverySubstep = plan_.substepForces.runs,
+                            .moveKinematics = plan_.runs(Stage::MoveKinematics),
+                            .jointSolver = plan_.jointSolver.runs,
+                            .canTurn = plan_.rotation.runs,
+                            .packedSubsteps = plan_.packedSubsteps.runs,
+                            .records = stageRecords_,
+                            .step = stepCount_,
+                            .time = static_cast<double>(time_)};
+    runFastSubsteps(step, *fastWorkspace_);
+}
+
+FastPathCounts World::fastPathCounts() const { return fastWorkspace_->counts; }
+
+SolverFootprint World::solverFootprint() const {
+    return plan_.fastPath.runs ? fastFootprint(solverWorkspace_, *fastWorkspace_) : stepwise::solverFootprint(solverWorkspace_);
 }
 
 template <class StageBody>
 void World::runStage(Stage stage, StageBody&& body) {
     if (!plan_.runs(stage)) return;  // the step plan skips what this scene cannot need (step_plan.hpp)
-    using Clock = std::chrono::steady_clock;
     StageEvent event;
     if (observer_) {
         event.stage = stage;
@@ -540,80 +421,34 @@ void World::runStage(Stage stage, StageBody&& body) {
         event.timeStep = settings_.timeStep;
         observer_->beforeStage(event, *this);
     }
-    const auto start = Clock::now();
-    body();
-    const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
-
-    StageRecord& record = stageRecords_[static_cast<std::size_t>(stage)];
-    record.ranLastStep = true;
-    record.runs += 1;
-    record.lastSeconds += seconds;
-    record.totalSeconds += seconds;
+    timeStage(stageRecords_, stage, body);
     checkFinite(stage);
-    if (observer_) {
-        syncRoundContacts(solverWorkspace_);  // what solverContacts() shows: the impulses the lanes hold (round_contact_lanes.hpp)
-        observer_->afterStage(event, *this);
-    }
+    if (observer_) observer_->afterStage(event, *this);
 }
 
 void StepObserver::beforeStage(const StageEvent&, const World&) {}
 void StepObserver::afterStage(const StageEvent&, const World&) {}
 void StepObserver::afterStep(const World&) {}
 
+/// Every number the stage may have written into a body is finite, or the step stops naming the
+/// body, the quantity, the stage and the step (objects/finite_state.hpp).
+///
+/// The solve, the relax and the bounce move only the bodies with a solver record, those in a
+/// contact or a joint (prepareContacts()): only those are read after them, so a stage is never
+/// named for a number it did not write.
 void World::checkFinite(Stage stage) const {
-    auto fail = [&](const std::string& object, const char* quantity) {
-        throw SimulationError(object, stageName(stage), stepCount_, static_cast<double>(time_),
-                              std::string("non-finite ") + quantity +
-                                  " (check masses, time step and forces in the scene)");
-    };
+    const StageAtStep where{stage, stepCount_, static_cast<double>(time_)};
     const unsigned parts = statePartsWrittenBy(stage, settings_.integrator);
-    // The solve and relax stages move only the bodies with solver records: their packed copies say whether
-    // anything is wrong, and only then are the objects searched, to name it. So does the bounce, which
-    // writes the records' velocities to their objects, unless joints are finished there too (finishJoints()
-    // sets a jointed body's ω from its L, on the object).
-    const bool bounceOnRecords = stage == Stage::Restitution && !plan_.jointSolver.runs;
-    const bool solverStage = settings_.solver == SolverKind::SequentialImpulse &&
-                             (stage == Stage::SolveConstraints || stage == Stage::RelaxConstraints || bounceOnRecords);
-    // On the packed substeps the balls with a record are current in the records, not in their objects,
-    // until the last relax (substepOnRecords()): the records are probed (the kick writes only their v
-    // and ω), and a record names its object. The other bodies are objects, probed as they flew.
-    const bool onRecords = substepsOnRecords_ && substep_ >= 0;
-    // The kick and the drift probed the records as they wrote them (their return values, substepOnRecords()).
-    const bool probedAsWritten = recordsFinite_ && (stage == Stage::Integrate || stage == Stage::SolveConstraints);
-    if (onRecords && parts != 0 && (solverStage || stage == Stage::Integrate) && !probedAsWritten) {
-        const SolverWorkspace& w = solverWorkspace_;
-        const unsigned recordParts = stage == Stage::Integrate ? unsigned(kMotion) : parts;
-        if (finiteProbe(w, recordParts, true) != Real(0)) {
-            for (std::size_t i = 1; i < w.bodies.size(); ++i) {
-                const std::string& name = dynamics_[w.recordBody[i]].name;
-                if (!stepwise::isFinite(w.bodies[i].velocity)) fail(name, "velocity");
-                if (!stepwise::isFinite(w.bodies[i].angularVelocity)) fail(name, "angular velocity");
-                if ((recordParts & kPose) && !stepwise::isFinite(w.centres[i].position)) fail(name, "position");
-                if ((recordParts & kPose) && !(stepwise::isFinite(w.orientations[i]) && stepwise::isFinite(w.turnSums[i].sum))) {
-                    fail(name, "orientation");
-                }
-            }
-        }
+    const bool constraintStage = settings_.solver == SolverKind::SequentialImpulse &&
+                                 (stage == Stage::SolveConstraints || stage == Stage::RelaxConstraints ||
+                                  stage == Stage::Restitution);
+    const std::vector<std::uint32_t>& recordBody = solverWorkspace_.recordBody;
+    if (constraintStage && !recordBody.empty()) {
+        requireFiniteState(dynamics_, std::span(recordBody).subspan(1), parts, where);  // record 0 is the static body
+    } else {
+        requireFiniteState(dynamics_, parts, where);
     }
-    // The Euler integrators probed each block of bodies as they moved it (World::integrate()).
-    const bool probedWhileIntegrating = stage == Stage::Integrate && integratedFinite_;
-    const bool recordsProbed = solverStage && (onRecords || finiteProbe(solverWorkspace_, parts, false) == Real(0));
-    if (parts != 0 && !probedWhileIntegrating && !recordsProbed) {
-        for (const DynamicObject& body : dynamics_) {
-            if (finiteProbe(body, parts) == Real(0)) continue;  // all finite: nothing to name
-            if (!stepwise::isFinite(body.position)) fail(body.name, "position");
-            if (!stepwise::isFinite(body.velocity)) fail(body.name, "velocity");
-            if (!stepwise::isFinite(body.acceleration)) fail(body.name, "acceleration");
-            if (!stepwise::isFinite(body.orientation)) fail(body.name, "orientation");
-            if (!stepwise::isFinite(body.angularVelocity)) fail(body.name, "angular velocity");
-            if (!stepwise::isFinite(body.angularMomentum)) fail(body.name, "angular momentum");
-            if (!stepwise::isFinite(body.torque)) fail(body.name, "torque");
-        }
-    }
-    for (const KinematicsObject& body : kinematics_) {
-        if (!stepwise::isFinite(body.position)) fail(body.name, "position");
-        if (!stepwise::isFinite(body.orientation)) fail(body.name, "orientation");
-    }
+    requireFiniteState(kinematics_, where);
 }
 
 }  // namespace stepwise

@@ -12,21 +12,24 @@
 #include "collision/contact.hpp"
 #include "collision/continuous.hpp"
 #include "collision/narrowphase.hpp"
-#include "core/thread_pool.hpp"
-#include "dynamics/contact_solver.hpp"
 #include "collision/raycast.hpp"
+#include "core/stages.hpp"
+#include "core/thread_pool.hpp"
+#include "core/world_settings.hpp"
+#include "dynamics/contact_solver.hpp"
 #include "dynamics/impulse_resolver.hpp"
 #include "dynamics/islands.hpp"
 #include "dynamics/joints/joint.hpp"
+#include "fast/fast_path_counts.hpp"
 #include "forces/apply_forces.hpp"
 #include "objects/body_set.hpp"
 #include "world/scene.hpp"
-#include "core/stages.hpp"
 #include "world/step_observer.hpp"
 #include "world/step_plan.hpp"
-#include "core/world_settings.hpp"
 
 namespace stepwise {
+
+struct FastWorkspace;  // src/fast/fast_workspace.hpp: the fast path's own arrays
 
 /// @brief A running simulation: the objects of a Scene plus the clock and the step pipeline.
 ///
@@ -42,6 +45,9 @@ public:
     ///         a spring joining a missing body or a body to itself, negative stiffness, μ ≤ 0),
     ///         or the joint when it cannot be built (makeJoints()).
     explicit World(Scene scene);
+    ~World();
+    World(World&&) noexcept;             ///< A World can be moved (not copied: it owns a thread pool).
+    World& operator=(World&&) noexcept;  ///< Moves another World in.
 
     /// @brief Advances the simulation by one time step (see world.cpp for the stages).
     /// @throws SimulationError when a stage leaves a non-finite state, naming object, stage and step.
@@ -78,20 +84,21 @@ public:
     const StageRecords& stageRecords() const { return stageRecords_; }           ///< Per-stage timing.
     /// @brief The sequential-impulse solver's constraints of the last step (effective masses, accumulated impulses).
     ///
-    /// Current between steps and in a StepObserver's afterStage(); inside a stage the round
-    /// contacts' impulses are held in SIMD lanes (round_contact_lanes.hpp) and copied back here.
+    /// Current between steps and in a StepObserver's afterStage() (with an observer the step takes
+    /// the plain path, which solves them where they are).
     const std::vector<SolverContact>& solverContacts() const { return solverWorkspace_.contacts; }
     /// @brief Where each of those constraints came from (bodies, lever arms, start gap) and its bounce; same order.
     const std::vector<ContactStart>& solverContactStarts() const { return solverWorkspace_.starts; }
-    /// @brief The bytes of the contact solver's arrays in the last step: what its passes read, and all of them.
-    SolverFootprint solverFootprint() const { return stepwise::solverFootprint(solverWorkspace_); }
+    /// @brief The bytes of the contact solver's arrays in the last step: what its passes read, and all of
+    /// them (the fast path's too, when the plan runs it: fastFootprint(), src/fast/fast_path.hpp).
+    SolverFootprint solverFootprint() const;
     const Broadphase& broadphase() const { return broadphase_; }  ///< Stage 4's state: which kind ran, Auto's reason.
     /// @brief What each step runs and why (src/world/step_plan.hpp), as of the last step
     /// (or construction); `stepwise run --explain` prints it.
     const StepPlan& plan() const { return plan_; }
-    /// @brief Did the last step run its substeps on the contact solver's packed records
-    /// (substepOnRecords(), step_plan.hpp "packed substeps")? Bit for bit the same result either way.
-    bool substepsRanOnRecords() const { return substepsOnRecords_; }
+    /// @brief How many steps so far ran their substeps on the fast path, and how many of those on
+    /// its packed records (src/fast/fast_path.hpp); the plain path took the others.
+    FastPathCounts fastPathCounts() const;
     /// @brief Threads the narrowphase uses (the World's `Threads`, 0 resolved to the hardware's count).
     unsigned threadCount() const { return threadPool_->threadCount(); }
     /// @brief Fast bodies the continuous stage moved back to their time of impact in the last step.
@@ -120,12 +127,10 @@ private:
     void stepWithImpulses();
     void measureSweeps(Real h);
     void stepWithSequentialImpulses();
-    void substepOnRecords(Real hs, const ContactSolverSettings& contactSettings);
-    void solveJointsBetweenContactPasses(const JointSolverSettings& jointSettings, bool useBias);
-    void integrate(Real h, const AccelerationFunction& forces);
-    void integrateBodiesWithoutRecord(Real h);
-    template <class Picks, class Move>
-    bool inProbedObjectRuns(Picks&& picks, Move&& move);
+    void warmStart(int substep);
+    void solvePass(const ContactSolverSettings& contactSettings, const JointSolverSettings& jointSettings, bool useBias);
+    void runFastPath(const AccelerationFunction& forces, const ContactSolverSettings& contactSettings,
+                     const JointSolverSettings& jointSettings);
     BodySet bodies();
 
     WorldSettings settings_;
@@ -145,6 +150,9 @@ private:
     IslandWorkspace islandWorkspace_;
     JointWorkspace jointWorkspace_;
     std::vector<BodyLink> links_;  ///< Bodies held together by joints (for islands).
+    /// The fast path's arrays (src/fast/): the round contacts in lanes, the packed balls. Created
+    /// once here; a pointer so that a reader of this header need not open the fast path.
+    std::unique_ptr<FastWorkspace> fastWorkspace_;
 
     StepPlan plan_;
     bool planStale_ = false;  ///< A body may have changed through dynamics() or kinematics(): replan before stepping.
@@ -158,14 +166,6 @@ private:
     StageRecords stageRecords_{};
     StepObserver* observer_ = nullptr;
     int substep_ = -1;  ///< Substep being run, −1 outside the substep loop (for StageEvent).
-    /// The last integrate() found every number it wrote finite while the bodies were still in
-    /// cache, so checkFinite() need not read them again (World::integrate()).
-    bool integratedFinite_ = false;
-    /// This step's substeps run on the solver's packed records (substepOnRecords()): until the
-    /// last relax, the balls with a record are current there, not in their objects.
-    bool substepsOnRecords_ = false;
-    /// The last packed kick or drift found every number it wrote finite, as it wrote them (substepOnRecords()).
-    bool recordsFinite_ = false;
     Real time_ = 0;
     std::uint64_t stepCount_ = 0;
 };

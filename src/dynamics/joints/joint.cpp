@@ -216,6 +216,14 @@ void solveJoints(JointWorkspace& workspace, std::span<const Pose> poses, const J
     }
 }
 
+void solveJointsBetweenContactPasses(JointWorkspace& joints, SolverWorkspace& contacts,
+                                     const JointSolverSettings& settings, bool useBias) {
+    if (joints.joints.empty()) return;
+    copyVelocitiesOut(contacts);
+    solveJoints(joints, contacts.poses, settings, useBias);
+    copyVelocitiesIn(contacts);
+}
+
 std::size_t finishJoints(JointWorkspace& workspace, std::span<Joint> joints, Real substep, std::uint64_t step,
                          Real time, std::vector<BodyLink>& links) {
     std::size_t broke = 0;

@@ -180,6 +180,15 @@ void warmStartJoints(JointWorkspace& workspace, std::span<const Pose> poses);
 void solveJoints(JointWorkspace& workspace, std::span<const Pose> poses, const JointSolverSettings& settings,
                  bool useBias);
 
+/// @brief One joint pass between two contact passes (World::stepWithSequentialImpulses()).
+///
+/// A joint pass works on the objects' velocities, a contact pass on the solver
+/// bodies' copies (solver_body.hpp): the velocities are handed across around
+/// the joints. With no joint acting there is nothing to hand across, and the
+/// copies stay as they are.
+void solveJointsBetweenContactPasses(JointWorkspace& joints, SolverWorkspace& contacts,
+                                     const JointSolverSettings& settings, bool useBias);
+
 /// @brief After the substeps: breaks every joint whose force |λ_acc|/h_s exceeds its MaxForce (recorded with
 /// @p step and @p time), refreshes @p links when one broke, and makes each body's ω agree with its L again.
 /// @return the number of joints that broke in this step.

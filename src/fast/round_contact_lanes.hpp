@@ -2,9 +2,9 @@
 /// @brief The round contacts (ball–ball, ball–plane) solved four at a time: waves of independent contacts in SIMD lanes.
 ///
 /// **Why.** Solving one contact is a long chain of small operations, most
-/// waiting for the one before (contact_solver.cpp): about 290 instructions
-/// for a ball on a ball, and a pass is bound by them, not by memory (up to
-/// 16k balls; bench/solver_performance.md, sixth round). A processor can do
+/// waiting for the one before (solveContact() in dynamics/contact_solver.cpp):
+/// a few hundred instructions for a ball on a ball, and while the contacts fit
+/// in the caches a pass is bound by them, not by memory. A processor can do
 /// the same operation on four doubles at once (SIMD: SSE2 two, AVX2 and AVX-512 four),
 /// but only on four *independent* contacts.
 ///
@@ -28,19 +28,18 @@
 /// (This is list scheduling of the contacts' dependency graph. Colouring
 /// that graph, as Box2D v3 does, fills the batches with fewer, larger groups
 /// but changes the order, and with it how far one pass carries a pile's
-/// weight down: a first try with colours left the 64k rain's worst overlap at
-/// 7.5 mm instead of 2.9; bench/solver_performance.md, sixth round.)
+/// weight down, so the result would no longer be the plain pass's.)
 ///
 /// A contact whose rows are stored (a box, a kinematic body) is solved alone
-/// after the batches, in order: in a scene of boxes only, the order is the
-/// plain one; balls touching boxes see their ball contacts first.
+/// after the batches, in order, by the plain solveContact(): the plain pass
+/// also takes the round contacts first ("The order of a pass", contact_solver.hpp).
 ///
 /// **The order is the contacts'.** The waves follow from the contacts
 /// alone: the same on every machine, whether the lanes run in AVX-512, AVX2, SSE2 or
 /// no vector registers at all (IEEE 754 rounds each lane as a scalar).
 ///
 /// **The formulas** are the round contact's of solver_body.hpp and
-/// contact_solver.cpp, written on Lanes (core/lanes.hpp) instead of Reals:
+/// contact_solver.cpp, written on Lanes (lanes.hpp) instead of Reals:
 /// the same lines, four contacts at a time.
 ///
 /// Reference: Catto, Box2D v3 `contact_solver.c` (contacts in SIMD lanes) and
@@ -51,12 +50,13 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/lanes.hpp"
+#include "fast/lanes.hpp"
 
 namespace stepwise {
 
 struct SolverWorkspace;
 struct ContactSolverSettings;
+struct FastWorkspace;
 
 /// RoundBatch::contact of an empty lane (the last batch of a wave may not be full).
 inline constexpr std::uint32_t kEmptyLane = 0xffffffffu;
@@ -69,11 +69,9 @@ inline constexpr std::uint32_t kEmptyLane = 0xffffffffu;
 /// Every pass reads every batch, so a batch holds only what cannot be had
 /// otherwise: the bodies' m⁻¹ and I⁻¹ come with their velocities (the same
 /// loads), and t₂ is n × t₁, formed in the pass as prepare formed it
-/// (tangentBasis(), the same bits). Leaving those seven Lanes out made a
-/// batch 576 bytes instead of 800, and the passes of the settled 64k sphere
-/// rain, which read 27 MB of batches each instead of 37, about 18 % cheaper
-/// (bench/solver_performance.md, eleventh round). Aligned to a cache line, a
-/// batch is nine whole lines, not parts of ten.
+/// (tangentBasis(), the same bits). That keeps a batch at 576 bytes: fewer
+/// bytes for every pass to read. Aligned to a cache line, a batch is nine
+/// whole lines, not parts of ten.
 struct alignas(kCacheLine) RoundBatch {
     std::uint32_t contact[kLanes];  ///< Index in SolverWorkspace::contacts, or kEmptyLane.
     std::uint32_t bodyA[kLanes];    ///< A's solver-body record.
@@ -93,38 +91,25 @@ struct alignas(kCacheLine) RoundBatch {
     Lanes maxNormalImpulse;         ///< Largest λ_n this step, N·s.
 };
 
-/// @brief Puts the round contacts of @p workspace in waves and packs them into RoundBatch lanes;
-/// lists every other contact in SolverWorkspace::otherContacts: startWaves(), placeInWave() for
-/// each contact in order, packWaves().
-void batchRoundContacts(SolverWorkspace& workspace);
+/// @brief Each record's centre at the poses last recorded (SolverWorkspace::poses) into
+/// FastWorkspace::centres, where the lanes measure separations; record 0's "centre" is the origin.
+void recordCentres(const SolverWorkspace& solver, FastWorkspace& fast);
 
-/// @name batchRoundContacts() in three parts
-///
-/// prepareContacts() places each contact in its wave as soon as it has made it, while the
-/// contact's record is still in the L2 cache: a separate walk over the records read 184 bytes of
-/// each for the 12 the wave needs, which with 64k balls came from L3 (31 MB a step).
-///@{
-
-/// @brief Empties the batches and the waves.
-void startWaves(SolverWorkspace& workspace);
-
-/// @brief Contact @p i's wave (its record made; contacts placed in order), or the list of the others.
-void placeInWave(SolverWorkspace& workspace, std::uint32_t i);
-
-/// @brief The placed contacts, wave by wave, four to a RoundBatch.
-void packWaves(SolverWorkspace& workspace);
-///@}
+/// @brief Puts the round contacts of @p solver (SolverWorkspace::roundContacts, in order) in waves
+/// and packs them into @p fast's RoundBatch lanes, with their impulses as prepareContacts() left them.
+void batchRoundContacts(const SolverWorkspace& solver, FastWorkspace& fast);
 
 /// @brief The warm start of the batched contacts: their accumulated impulses applied to the bodies.
-void warmStartRoundContacts(SolverWorkspace& workspace);
+void warmStartRoundContacts(SolverWorkspace& solver, const FastWorkspace& fast);
 
 /// @brief Starts the batched contacts' impulses from zero (a substep without accumulated impulses).
-void clearRoundContactImpulses(SolverWorkspace& workspace);
+void clearRoundContactImpulses(FastWorkspace& fast);
 
-/// @brief One Gauss–Seidel pass over the batched contacts, four at a time (solveContacts()'s round half).
-void solveRoundContacts(SolverWorkspace& workspace, const ContactSolverSettings& settings, bool useBias);
+/// @brief One Gauss–Seidel pass over the batched contacts, four at a time: solveContacts()'s first
+/// half, the round contacts in their order. Separations are measured at FastWorkspace::centres.
+void solveRoundContacts(SolverWorkspace& solver, FastWorkspace& fast, const ContactSolverSettings& settings, bool useBias);
 
-/// @brief Copies the batched contacts' impulses back into SolverWorkspace::contacts, if the passes changed them since.
-void syncRoundContacts(SolverWorkspace& workspace);
+/// @brief Copies the batched contacts' impulses back into SolverWorkspace::contacts.
+void syncRoundContacts(const FastWorkspace& fast, SolverWorkspace& solver);
 
 }  // namespace stepwise

@@ -2,14 +2,14 @@
 /// @brief rotateByAngularVelocity() on four bodies at once (SIMD lanes), to the bit.
 ///
 /// On the packed substeps every ball turns once a step, in the last substep's
-/// drift (velocity_change_drift.cpp): 1 000 turns a step in the 1k sphere
+/// drift (packed_drift.cpp): 1 000 turns a step in the 1k sphere
 /// rain, each a short chain of multiplications (a series for cos φ
 /// and sin φ / φ, a quaternion product, a Newton step back to unit length)
 /// that a scalar loop does one ball at a time. The same formulas on Lanes
-/// (core/lanes.hpp) turn four balls with the instructions of one.
+/// (lanes.hpp) turn four balls with the instructions of one.
 ///
 /// **The same numbers.** Every line below is the scalar turn's
-/// (kinematic_motion.cpp), written on Lanes in the same order of operations,
+/// (integrators/kinematic_motion.cpp), written on Lanes in the same order of operations,
 /// with glm's orders for the dot products and the quaternion product; IEEE 754
 /// rounds each lane as the scalar operation, so a lane gives the scalar turn's
 /// bits. The rare lanes the series or the Newton step do not cover (a turn
@@ -22,13 +22,13 @@
 /// (SIGGRAPH 1985) for q ← exp(½h·ω̂)·q; the series are in rotation_series.hpp.
 #pragma once
 
-// Lanes pass by value between always-inlined functions (see core/lanes.hpp).
+// Lanes pass by value between always-inlined functions (see lanes.hpp).
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wpsabi"
 #endif
 
-#include "core/lanes.hpp"
+#include "fast/lanes.hpp"
 #include "integrators/rotation_series.hpp"
 
 namespace stepwise {

@@ -48,8 +48,7 @@
 /// for the processor it runs on when it starts. The AVX-512 copy still works
 /// on four doubles; what it gains is 32 vector registers instead of 16, so a
 /// contact's two bodies, its axes and its impulses stay in registers instead
-/// of being spilled to the stack and read back (the rain's round-contact pass
-/// had about 70 such spills; bench/solver_performance.md, ninth round). All
+/// of being spilled to the stack and read back. All
 /// copies give the same numbers (the file is built with -ffp-contract=off, so
 /// no copy fuses a·b + c into one rounding). Define STEPWISE_NO_AVX_COPY to
 /// build only the last (to compare them, or for a compiler without `target_clones`).

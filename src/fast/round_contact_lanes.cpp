@@ -1,14 +1,15 @@
 /// @file round_contact_lanes.cpp
 /// @brief The round contacts solved four at a time (the why and the waves are in round_contact_lanes.hpp).
-#include "dynamics/round_contact_lanes.hpp"
+#include "fast/round_contact_lanes.hpp"
 
 #include <algorithm>
 #include <cstddef>
 #include <cstring>
 
 #include "dynamics/contact_solver.hpp"
+#include "fast/fast_workspace.hpp"
 
-// This file's helpers pass Lanes by value too, always inlined (see core/lanes.hpp).
+// This file's helpers pass Lanes by value too, always inlined (see lanes.hpp).
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic ignored "-Wpsabi"
 #endif
@@ -158,97 +159,80 @@ constexpr std::uint32_t kBatchingLookAhead = 8;
 /// The same for syncRoundContacts(), in batches of four contacts.
 constexpr std::size_t kSyncLookAhead = 2;
 
-/// SolverWorkspace::waveOf of a contact with stored rows: in no wave.
-constexpr std::uint32_t kNotRound = 0xffffffffu;
-
 }  // namespace
 
-void startWaves(SolverWorkspace& workspace) {
-    workspace.roundBatches.clear();
-    workspace.otherContacts.clear();
-    workspace.roundBatchesAhead = false;
-    // Per record: the wave its next contact may take (one after its last contact's), 0 before any.
-    workspace.nextWave.assign(workspace.bodies.size(), 0);
-    workspace.waveOf.resize(workspace.contacts.size());
-    workspace.waves = 0;
+void recordCentres(const SolverWorkspace& solver, FastWorkspace& fast) {
+    fast.centres.resize(solver.bodies.size());
+    fast.centres[0] = SolverCentre{};
+    for (std::size_t i = 1; i < solver.bodies.size(); ++i) fast.centres[i].position = solver.poses[solver.recordBody[i]].position;
 }
 
-void placeInWave(SolverWorkspace& workspace, std::uint32_t i) {
-    const SolverContact& c = workspace.contacts[i];
-    if (c.rows != kRoundContact) {
-        workspace.waveOf[i] = kNotRound;
-        workspace.otherContacts.push_back(i);  // solved alone, after the batches
-        return;
+void batchRoundContacts(const SolverWorkspace& solver, FastWorkspace& fast) {
+    // Each round contact's wave, walking them in order: one after the last wave of an earlier
+    // contact on either of its bodies (round_contact_lanes.hpp).
+    const std::vector<std::uint32_t>& round = solver.roundContacts;
+    fast.nextWave.assign(solver.bodies.size(), 0);  // per record: the wave its next contact may take
+    fast.waveOf.resize(round.size());
+    fast.waves = 0;
+    for (std::size_t k = 0; k < round.size(); ++k) {
+        const SolverContact& c = solver.contacts[round[k]];
+        const bool bothDynamic = c.bodyB != kStaticSolverBody;  // nothing moves the static record: no wait
+        const std::uint32_t wave = std::max(fast.nextWave[c.bodyA], bothDynamic ? fast.nextWave[c.bodyB] : 0);
+        fast.waveOf[k] = wave;
+        fast.nextWave[c.bodyA] = wave + 1;
+        if (bothDynamic) fast.nextWave[c.bodyB] = wave + 1;
+        fast.waves = std::max(fast.waves, wave + 1);
     }
-    const bool bothDynamic = c.bodyB != kStaticSolverBody;  // nothing moves the static record: no wait
-    const std::uint32_t wave = std::max(workspace.nextWave[c.bodyA], bothDynamic ? workspace.nextWave[c.bodyB] : 0);
-    workspace.waveOf[i] = wave;
-    workspace.nextWave[c.bodyA] = wave + 1;
-    if (bothDynamic) workspace.nextWave[c.bodyB] = wave + 1;
-    workspace.waves = std::max(workspace.waves, wave + 1);
-}
-
-void batchRoundContacts(SolverWorkspace& workspace) {
-    startWaves(workspace);
-    for (std::uint32_t i = 0; i < workspace.contacts.size(); ++i) placeInWave(workspace, i);
-    packWaves(workspace);
-}
-
-void packWaves(SolverWorkspace& workspace) {
-    const std::uint32_t waves = workspace.waves;
     // Counting sort by wave (contact order kept within a wave): each wave's contacts, four to a batch.
-    workspace.waveStart.assign(waves + 1, 0);
-    for (const std::uint32_t wave : workspace.waveOf) {
-        if (wave != kNotRound) ++workspace.waveStart[wave + 1];
-    }
+    const std::uint32_t waves = fast.waves;
+    fast.waveStart.assign(waves + 1, 0);
+    for (const std::uint32_t wave : fast.waveOf) ++fast.waveStart[wave + 1];
     std::size_t batches = 0;
     for (std::uint32_t wave = 0; wave < waves; ++wave) {
-        batches += (workspace.waveStart[wave + 1] + kLanes - 1) / kLanes;
-        workspace.waveStart[wave + 1] += workspace.waveStart[wave];
+        batches += (fast.waveStart[wave + 1] + kLanes - 1) / kLanes;
+        fast.waveStart[wave + 1] += fast.waveStart[wave];
     }
-    workspace.waveOrder.resize(workspace.waveStart[waves]);
-    for (std::uint32_t i = 0; i < workspace.contacts.size(); ++i) {
-        if (workspace.waveOf[i] != kNotRound) workspace.waveOrder[workspace.waveStart[workspace.waveOf[i]]++] = i;
-    }
+    fast.waveOrder.resize(round.size());
+    for (std::size_t k = 0; k < round.size(); ++k) fast.waveOrder[fast.waveStart[fast.waveOf[k]]++] = round[k];
     // Placing moved each start to its wave's end; the batches walk the waves in turn.
-    workspace.roundBatches.reserve(batches);
+    fast.roundBatches.clear();
+    fast.roundBatches.reserve(batches);
     std::uint32_t first = 0;
     for (std::uint32_t wave = 0; wave < waves; ++wave) {
-        const std::uint32_t end = workspace.waveStart[wave];
+        const std::uint32_t end = fast.waveStart[wave];
         for (std::uint32_t k = first; k < end; ++k) {
-            if (k + kBatchingLookAhead < workspace.waveOrder.size()) {
-                const SolverContact& ahead = workspace.contacts[workspace.waveOrder[k + kBatchingLookAhead]];
+            if (k + kBatchingLookAhead < fast.waveOrder.size()) {
+                const SolverContact& ahead = solver.contacts[fast.waveOrder[k + kBatchingLookAhead]];
                 for (std::size_t byte = 0; byte < sizeof(SolverContact); byte += kCacheLine) {
                     __builtin_prefetch(reinterpret_cast<const char*>(&ahead) + byte);
                 }
             }
             const int lane = static_cast<int>((k - first) % kLanes);
             if (lane == 0) {
-                workspace.roundBatches.push_back(emptyBatch());
-                workspace.roundBatches.back().wave = wave;
+                fast.roundBatches.push_back(emptyBatch());
+                fast.roundBatches.back().wave = wave;
             }
-            setLane(workspace.roundBatches.back(), lane, workspace.waveOrder[k], workspace.contacts[workspace.waveOrder[k]]);
+            setLane(fast.roundBatches.back(), lane, fast.waveOrder[k], solver.contacts[fast.waveOrder[k]]);
         }
         first = end;
     }
 }
 
 STEPWISE_LANES_COPIES
-void warmStartRoundContacts(SolverWorkspace& workspace) {
+void warmStartRoundContacts(SolverWorkspace& solver, const FastWorkspace& fast) {
     SolverBody discard;  // where the static record's lanes go (scatter())
-    for (RoundBatch& batch : workspace.roundBatches) {
-        BodyLanes a = gather(workspace.bodies, batch.bodyA);
-        BodyLanes b = gather(workspace.bodies, batch.bodyB);
+    for (const RoundBatch& batch : fast.roundBatches) {
+        BodyLanes a = gather(solver.bodies, batch.bodyA);
+        BodyLanes b = gather(solver.bodies, batch.bodyB);
         applyNormal(a, b, batch.normal, batch.normalImpulse);
         applyFriction(a, b, batch, cross(batch.normal, batch.tangent0), batch.tangentImpulse0, batch.tangentImpulse1);
-        scatter(workspace.bodies, batch.bodyA, a, discard);
-        scatter(workspace.bodies, batch.bodyB, b, discard);
+        scatter(solver.bodies, batch.bodyA, a, discard);
+        scatter(solver.bodies, batch.bodyB, b, discard);
     }
 }
 
-void clearRoundContactImpulses(SolverWorkspace& workspace) {
-    for (RoundBatch& batch : workspace.roundBatches) batch.normalImpulse = batch.tangentImpulse0 = batch.tangentImpulse1 = splat(0);
-    workspace.roundBatchesAhead = true;
+void clearRoundContactImpulses(FastWorkspace& fast) {
+    for (RoundBatch& batch : fast.roundBatches) batch.normalImpulse = batch.tangentImpulse0 = batch.tangentImpulse1 = splat(0);
 }
 
 namespace {
@@ -312,16 +296,16 @@ STEPWISE_LANES_INLINE void solveFrictionOfBatches(RoundBatch* batches, BodyLanes
 /// and division, scatter. The processor overlaps the next batch only as far as its
 /// reorder window reaches ahead, about one batch's instructions. Batches of one wave share
 /// no body, so their chains are independent: written phase by phase, every phase once
-/// for each batch, the N chains run side by side. Three is best here: the 1k and 4k
-/// rain −7 % against one at a time; two gained 2 %, four lost to spilled registers
-/// (bench/solver_performance.md, thirteenth round). The numbers are each batch's own,
-/// so the bits are the same whatever N.
+/// for each batch, the N chains run side by side. Three fit the registers; with four,
+/// values spill to the stack (docs/performance-history.md measured each N). The
+/// numbers are each batch's own, so the bits are the same whatever N.
 ///
 /// With @p Friction false (a relax pass, unless ContactSolverSettings::relaxBallFriction) the
 /// batches' normal rows are solved and their friction is left as the solve pass left it
 /// (contact_solver.hpp, "Friction in the relax").
 template <std::size_t N, bool PushOut, bool Friction>
-STEPWISE_LANES_INLINE void solveBatches(RoundBatch* batches, SolverWorkspace& workspace, const PassConstants& k,
+STEPWISE_LANES_INLINE void solveBatches(RoundBatch* batches, std::vector<SolverBody>& bodies,
+                                        const std::vector<SolverCentre>& centres, const PassConstants& k,
                                         SolverBody& discard) {
     BodyLanes a[N];
     BodyLanes b[N];
@@ -331,13 +315,13 @@ STEPWISE_LANES_INLINE void solveBatches(RoundBatch* batches, SolverWorkspace& wo
         RoundBatch& batch = batches[j];
         const Vec3Lanes& n = batch.normal;
         const Lanes separation =
-            dot(gatherCentres(workspace.centres, batch.bodyB) - gatherCentres(workspace.centres, batch.bodyA), n) +
+            dot(gatherCentres(centres, batch.bodyB) - gatherCentres(centres, batch.bodyA), n) +
             batch.separationOffset;
         const auto gap = separation > k.zero;
         const Lanes gapBias = separation * k.inverseSubstep;
 
-        a[j] = gather(workspace.bodies, batch.bodyA);
-        b[j] = gather(workspace.bodies, batch.bodyB);
+        a[j] = gather(bodies, batch.bodyA);
+        b[j] = gather(bodies, batch.bodyB);
         const Lanes vn = dot(b[j].velocity - a[j].velocity, n);
         Lanes impulse;
         if constexpr (PushOut) {
@@ -361,73 +345,70 @@ STEPWISE_LANES_INLINE void solveBatches(RoundBatch* batches, SolverWorkspace& wo
     for (std::size_t j = 0; j < N; ++j) applyNormal(a[j], b[j], batches[j].normal, applied[j]);
     if constexpr (Friction) solveFrictionOfBatches<N>(batches, a, b, k);
     for (std::size_t j = 0; j < N; ++j) {
-        scatter(workspace.bodies, batches[j].bodyA, a[j], discard);
-        scatter(workspace.bodies, batches[j].bodyB, b[j], discard);
+        scatter(bodies, batches[j].bodyA, a[j], discard);
+        scatter(bodies, batches[j].bodyB, b[j], discard);
     }
 }
 
 /// One pass: wave by wave, up to kBatchesSideBySide batches of a wave at a time. With
 /// @p PushOut a template argument, the relax pass (no push) is compiled without the soft
-/// bias's selects and scales, which are 1 and 0 there (−3 % at 1k, the same bits).
+/// bias's selects and scales, which are 1 and 0 there (the same bits).
 template <bool PushOut, bool Friction>
-STEPWISE_LANES_INLINE void solveWaves(SolverWorkspace& workspace, const PassConstants& k) {
+STEPWISE_LANES_INLINE void solveWaves(SolverWorkspace& solver, FastWorkspace& fast, const PassConstants& k) {
     SolverBody discard;  // where the static record's lanes go (scatter())
-    RoundBatch* const batches = workspace.roundBatches.data();
-    const std::size_t count = workspace.roundBatches.size();
+    RoundBatch* const batches = fast.roundBatches.data();
+    const std::size_t count = fast.roundBatches.size();
     for (std::size_t first = 0; first < count;) {
         std::size_t run = 1;  // batches from `first` on in its wave, at most kBatchesSideBySide
         while (run < kBatchesSideBySide && first + run < count && batches[first + run].wave == batches[first].wave) ++run;
         static_assert(kBatchesSideBySide == 3, "one solveBatches<N> below for each N up to kBatchesSideBySide");
-        if (run == 3) solveBatches<3, PushOut, Friction>(batches + first, workspace, k, discard);
-        else if (run == 2) solveBatches<2, PushOut, Friction>(batches + first, workspace, k, discard);
-        else solveBatches<1, PushOut, Friction>(batches + first, workspace, k, discard);
+        if (run == 3) solveBatches<3, PushOut, Friction>(batches + first, solver.bodies, fast.centres, k, discard);
+        else if (run == 2) solveBatches<2, PushOut, Friction>(batches + first, solver.bodies, fast.centres, k, discard);
+        else solveBatches<1, PushOut, Friction>(batches + first, solver.bodies, fast.centres, k, discard);
         first += run;
     }
 }
 
 }  // namespace
 
-// Compiled three times (STEPWISE_LANES_COPIES, core/lanes.hpp): AVX-512, AVX2 and any x86-64, the same numbers.
+// Compiled three times (STEPWISE_LANES_COPIES, lanes.hpp): AVX-512, AVX2 and any x86-64, the same numbers.
 STEPWISE_LANES_COPIES
-void solveRoundContacts(SolverWorkspace& workspace, const ContactSolverSettings& settings, bool useBias) {
+void solveRoundContacts(SolverWorkspace& solver, FastWorkspace& fast, const ContactSolverSettings& settings, bool useBias) {
     PassConstants k;
     k.accumulate = settings.accumulate;
     k.zero = splat(0);
     k.one = splat(1);
-    k.inverseSubstep = splat(Real(1) / settings.substep);
+    k.inverseSubstep = splat(settings.inverseSubstep);
     k.biasRate = splat(settings.softness.biasRate);
     k.slowestPushOut = splat(-kMaxPushOutSpeed);
     k.softMassScale = splat(settings.softness.massScale);
     k.softImpulseScale = splat(settings.softness.impulseScale);
-    if (useBias && settings.positionCorrection) solveWaves<true, true>(workspace, k);  // the soft bias pushes overlaps apart
-    else if (passSolvesRoundFriction(settings, useBias)) solveWaves<false, true>(workspace, k);
-    else solveWaves<false, false>(workspace, k);  // a relax pass: the normal rows only
-    workspace.roundBatchesAhead = true;
+    if (useBias && settings.positionCorrection) solveWaves<true, true>(solver, fast, k);  // the soft bias pushes overlaps apart
+    else if (passSolvesRoundFriction(settings, useBias)) solveWaves<false, true>(solver, fast, k);
+    else solveWaves<false, false>(solver, fast, k);  // a relax pass: the normal rows only
 }
 
-void syncRoundContacts(SolverWorkspace& workspace) {
-    if (!workspace.roundBatchesAhead) return;
-    const std::size_t count = workspace.roundBatches.size();
+void syncRoundContacts(const FastWorkspace& fast, SolverWorkspace& solver) {
+    const std::size_t count = fast.roundBatches.size();
     for (std::size_t b = 0; b < count; ++b) {
-        const RoundBatch& batch = workspace.roundBatches[b];
+        const RoundBatch& batch = fast.roundBatches[b];
         // The contacts again in wave order: their records asked for (to be written) a few batches ahead
         if (b + kSyncLookAhead < count) {
-            for (const std::uint32_t index : workspace.roundBatches[b + kSyncLookAhead].contact) {
+            for (const std::uint32_t index : fast.roundBatches[b + kSyncLookAhead].contact) {
                 if (index == kEmptyLane) continue;
-                __builtin_prefetch(&workspace.contacts[index].normalImpulse, 1);
-                __builtin_prefetch(&workspace.contacts[index].maxNormalImpulse, 1);
+                __builtin_prefetch(&solver.contacts[index].normalImpulse, 1);
+                __builtin_prefetch(&solver.contacts[index].maxNormalImpulse, 1);
             }
         }
         for (int lane = 0; lane < kLanes; ++lane) {
             if (batch.contact[lane] == kEmptyLane) continue;
-            SolverContact& c = workspace.contacts[batch.contact[lane]];
+            SolverContact& c = solver.contacts[batch.contact[lane]];
             c.normalImpulse = batch.normalImpulse[lane];
             c.tangentImpulse[0] = batch.tangentImpulse0[lane];
             c.tangentImpulse[1] = batch.tangentImpulse1[lane];
             c.maxNormalImpulse = batch.maxNormalImpulse[lane];
         }
     }
-    workspace.roundBatchesAhead = false;
 }
 
 }  // namespace stepwise

@@ -1,0 +1,15 @@
+/// @file fast_path_counts.hpp
+/// @brief What the fast path reports: how many steps it ran.
+#pragma once
+
+#include <cstdint>
+
+namespace stepwise {
+
+/// @brief How many steps took the fast path, and how many of those ran on the packed records (World::fastPathCounts()).
+struct FastPathCounts {
+    std::uint64_t steps = 0;        ///< Steps whose substeps ran on the fast path.
+    std::uint64_t packedSteps = 0;  ///< Of those, the steps whose substeps ran on the packed records.
+};
+
+}  // namespace stepwise

@@ -1,0 +1,392 @@
+// The fast path (src/fast/): the plain path's numbers, bit for bit, by another road.
+// Tags: [fast], [solver], [lanes].
+//
+// Claims, from the smallest piece to the whole step:
+// - the waves make the lanes independent and keep each body's order (no wave
+//   holds two contacts of one dynamic body, each body meets its contacts in
+//   their order, every round contact is solved exactly once);
+// - so a pass in lanes is the plain scalar pass of contact_solver.cpp, one
+//   contact at a time in its order: the same velocities and impulses;
+// - and a whole World on the fast path, on the objects (balls with boxes,
+//   joints, another integrator) or on the packed records (a rain of balls),
+//   ends every step where the same World on the plain path does.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <random>
+#include <vector>
+
+#include "collision/broadphase.hpp"
+#include "collision/narrowphase.hpp"
+#include "config/scene_loader.hpp"
+#include "dynamics/contact_solver.hpp"
+#include "dynamics/softness.hpp"
+#include "fast/fast_path.hpp"
+#include "fast/fast_workspace.hpp"
+#include "fast/round_contact_lanes.hpp"
+#include "objects/inertia.hpp"
+#include "test_support.hpp"
+#include "world/world.hpp"
+
+using namespace stepwise;
+
+namespace {
+
+/// A heap of balls of two sizes and masses, pressed into each other and into
+/// the ground and two walls, moving and spinning at random: many round contacts.
+struct BallHeap {
+    std::vector<DynamicObject> dynamics;
+    std::vector<KinematicsObject> kinematics;
+    std::vector<CollisionPlane> planes;
+    std::vector<Contact> contacts;
+
+    BallHeap() {
+        std::mt19937 random(7);
+        std::uniform_real_distribution<double> jitter(-0.04, 0.04);
+        std::uniform_real_distribution<double> speed(-1.5, 1.5);
+        for (int layer = 0; layer < 4; ++layer) {
+            for (int row = 0; row < 5; ++row) {
+                for (int column = 0; column < 5; ++column) {
+                    // Centres 0.95 m apart: neighbours overlap by about 5 cm (radius 0.5 m)
+                    const Vec3 centre(0.45 + 0.95 * column + jitter(random), 0.47 + 0.93 * layer + jitter(random),
+                                      0.45 + 0.95 * row + jitter(random));
+                    DynamicObject ball = test::sphere("b" + std::to_string(dynamics.size()), centre,
+                                                      Vec3(speed(random), speed(random), speed(random)));
+                    if ((row + column + layer) % 3 == 0) ball.setMass(3);  // a heavier ball now and then
+                    ball.angularVelocity = Vec3(speed(random), speed(random), speed(random));
+                    ball.friction = 0.6;
+                    dynamics.push_back(ball);
+                }
+            }
+        }
+        planes.push_back(test::ground());
+        CollisionPlane wallX;
+        wallX.normal = Vec3(1, 0, 0);
+        CollisionPlane wallZ;
+        wallZ.normal = Vec3(0, 0, 1);
+        planes.push_back(wallX);
+        planes.push_back(wallZ);
+        for (DynamicObject& body : dynamics) initialiseMassProperties(body);
+
+        const BodySet bodies{dynamics, kinematics, planes};
+        std::vector<CandidatePair> pairs;
+        Broadphase().findPairs(BroadphaseKind::BruteForce, bodies, pairs);
+        ThreadPool pool(1);
+        NarrowphaseWorkspace workspace;
+        findContacts(bodies, pairs, contacts, false, kSpeculativeDistance, pool, workspace);
+    }
+    BodySet bodies() { return {dynamics, kinematics, planes}; }
+};
+
+ContactSolverSettings substepSettings() {
+    ContactSolverSettings settings;
+    settings.substep = Real(1) / 960;
+    settings.inverseSubstep = Real(960);
+    settings.softness = makeSoftness(240, 1, settings.substep);
+    return settings;
+}
+
+}  // namespace
+
+TEST_CASE("Waves: no wave holds two contacts of one dynamic body, each body meets its contacts in order", "[fast][solver][lanes]") {
+    BallHeap heap;
+    SolverWorkspace workspace;
+    prepareContacts(heap.bodies(), heap.contacts, {}, Real(1) / 60, false, workspace);
+    REQUIRE(workspace.contacts.size() > 100);  // a heap, not a handful
+    FastWorkspace fast;
+    batchRoundContacts(workspace, fast);
+
+    std::vector<int> solved(workspace.contacts.size(), 0);
+    std::vector<std::uint32_t> waveRecords;                                  // the dynamic records of the current wave
+    std::vector<std::int64_t> lastContact(workspace.bodies.size(), -1);      // per record: its last contact solved so far
+    for (std::size_t n = 0; n < fast.roundBatches.size(); ++n) {
+        const RoundBatch& batch = fast.roundBatches[n];
+        if (n > 0) CHECK(batch.wave >= fast.roundBatches[n - 1].wave);  // wave by wave
+        if (n == 0 || batch.wave != fast.roundBatches[n - 1].wave) {
+            std::sort(waveRecords.begin(), waveRecords.end());
+            CHECK(std::adjacent_find(waveRecords.begin(), waveRecords.end()) == waveRecords.end());
+            waveRecords.clear();
+        }
+        for (int lane = 0; lane < kLanes; ++lane) {
+            if (batch.contact[lane] == kEmptyLane) {
+                CHECK(batch.bodyA[lane] == kStaticSolverBody);  // an empty lane moves nothing
+                CHECK(batch.bodyB[lane] == kStaticSolverBody);
+                continue;
+            }
+            const std::uint32_t index = batch.contact[lane];
+            const SolverContact& c = workspace.contacts[index];
+            CHECK(c.rows == kRoundContact);
+            CHECK(batch.bodyA[lane] == c.bodyA);
+            CHECK(batch.bodyB[lane] == c.bodyB);
+            ++solved[index];
+            for (const std::uint32_t record : {c.bodyA, c.bodyB}) {
+                if (record == kStaticSolverBody) continue;
+                waveRecords.push_back(record);
+                INFO("contact " << index << ", record " << record);
+                CHECK(lastContact[record] < std::int64_t(index));  // the body's contacts in their order
+                lastContact[record] = index;
+            }
+        }
+    }
+    std::sort(waveRecords.begin(), waveRecords.end());
+    CHECK(std::adjacent_find(waveRecords.begin(), waveRecords.end()) == waveRecords.end());
+    for (const std::uint32_t index : workspace.otherContacts) ++solved[index];
+    for (std::size_t i = 0; i < solved.size(); ++i) {
+        INFO("contact " << i);
+        CHECK(solved[i] == 1);
+    }
+    CHECK(workspace.otherContacts.empty());  // balls and planes only: every contact is round
+    CHECK(workspace.roundContacts.size() == workspace.contacts.size());
+    // Wide waves: the lanes are mostly full (each wave's last batch may not be).
+    const std::size_t waves = fast.roundBatches.back().wave + 1;
+    CHECK(fast.roundBatches.size() * kLanes < workspace.contacts.size() + waves * kLanes);
+    CHECK(waves * 8 < workspace.contacts.size());
+}
+
+TEST_CASE("A pass in lanes is the scalar pass, four contacts at a time", "[fast][solver][lanes]") {
+    // The same contacts, solved once by the lanes and once one at a time by the plain scalar pass
+    // (solveContacts(), contact_solver.cpp): warm start, a solve and a relax pass must leave the same
+    // velocities and impulses. Each lane rounds as a scalar does and each body meets its contacts in
+    // the same order, so they agree to the last bit: the engine is built with -ffp-contract=off, so
+    // that no copy of the lanes (AVX-512, AVX2 or SSE2) and no scalar line fuses a·b + c. A build for
+    // a processor with FMA whose own flags fuse anyway gets a tolerance of a billionth of the values.
+    BallHeap heap;
+    ContactSolverSettings settings = substepSettings();
+    // Both kinds of relax pass: the normal rows only (the default), and with friction.
+    settings.relaxBallFriction = GENERATE(false, true);
+    INFO("relaxBallFriction " << settings.relaxBallFriction);
+    SolverWorkspace lanes;
+    prepareContacts(heap.bodies(), heap.contacts, {}, Real(1) / 60, false, lanes);
+    // Something to warm start from: the impulses a previous step might have left.
+    for (SolverContact& c : lanes.contacts) {
+        c.normalImpulse = Real(0.01) * c.normalMass;
+        c.tangentImpulse[0] = Real(0.002) * c.normalMass;
+    }
+    SolverWorkspace scalar = lanes;
+    FastWorkspace fast;
+    batchRoundContacts(lanes, fast);
+    REQUIRE(fast.roundBatches.size() > 20);
+
+    recordPoses(heap.bodies(), lanes);
+    recordCentres(lanes, fast);
+    copyVelocitiesIn(lanes);
+    warmStartRoundContacts(lanes, fast);
+    solveRoundContacts(lanes, fast, settings, true);
+    solveRoundContacts(lanes, fast, settings, false);
+    syncRoundContacts(fast, lanes);
+
+    recordPoses(heap.bodies(), scalar);
+    copyVelocitiesIn(scalar);
+    warmStartContacts(scalar, true);
+    solveContacts(scalar, settings, true);
+    solveContacts(scalar, settings, false);
+
+#if defined(__FMA__)
+    const auto same = [](Real x, Real y) { return x == Approx(y).epsilon(1e-9).margin(1e-12); };
+#else
+    const auto same = [](Real x, Real y) { return x == y; };
+#endif
+    int pushing = 0;
+    for (std::size_t i = 0; i < lanes.contacts.size(); ++i) {
+        INFO("contact " << i);
+        CHECK(same(lanes.contacts[i].normalImpulse, scalar.contacts[i].normalImpulse));
+        CHECK(same(lanes.contacts[i].maxNormalImpulse, scalar.contacts[i].maxNormalImpulse));
+        for (int k = 0; k < 2; ++k) CHECK(same(lanes.contacts[i].tangentImpulse[k], scalar.contacts[i].tangentImpulse[k]));
+        if (lanes.contacts[i].normalImpulse > 0) ++pushing;
+    }
+    CHECK(pushing > 50);  // the passes did work: there is something to compare
+    for (std::size_t r = 0; r < lanes.bodies.size(); ++r) {
+        INFO("record " << r);
+        for (int k = 0; k < 3; ++k) {
+            CHECK(same(lanes.bodies[r].velocity[k], scalar.bodies[r].velocity[k]));
+            CHECK(same(lanes.bodies[r].angularVelocity[k], scalar.bodies[r].angularVelocity[k]));
+        }
+    }
+    // The static record stays at rest whatever the empty lanes and plane contacts wrote into it.
+    CHECK(lanes.bodies[kStaticSolverBody].velocity == Vec3(0));
+    CHECK(lanes.bodies[kStaticSolverBody].angularVelocity == Vec3(0));
+}
+
+TEST_CASE("A relax pass leaves a ball contact's friction as the solve pass left it, unless told to solve it too", "[fast][solver][lanes][friction]") {
+    // The relax pass is there to take back the push-out speed, which the normal rows carry;
+    // a round contact's friction rows are not coupled to its own normal row (K_nt = 0: the normal
+    // impulse passes through the centres), so by default the relax solves the normal rows only
+    // (contact_solver.hpp, "Friction in the relax"). Were the template argument or the setting
+    // not wired through, one of the two checks below fails.
+    BallHeap heap;
+    ContactSolverSettings settings = substepSettings();
+    const bool relaxBallFriction = GENERATE(false, true);
+    settings.relaxBallFriction = relaxBallFriction;
+    INFO("relaxBallFriction " << relaxBallFriction);
+    // On both roads: the plain pass, and the lanes.
+    const bool inLanes = GENERATE(false, true);
+    INFO((inLanes ? "in lanes" : "plain"));
+    SolverWorkspace w;
+    FastWorkspace fast;
+    prepareContacts(heap.bodies(), heap.contacts, {}, Real(1) / 60, false, w);
+    recordPoses(heap.bodies(), w);
+    copyVelocitiesIn(w);
+    auto pass = [&](bool useBias) {
+        if (inLanes) {
+            solveRoundContacts(w, fast, settings, useBias);
+            syncRoundContacts(fast, w);
+        } else {
+            solveContacts(w, settings, useBias);
+        }
+    };
+    if (inLanes) {
+        batchRoundContacts(w, fast);
+        recordCentres(w, fast);
+    }
+    pass(true);
+    const std::vector<SolverContact> afterSolve = w.contacts;
+    pass(false);
+
+    int normalsChanged = 0;
+    int frictionChanged = 0;
+    for (std::size_t i = 0; i < w.contacts.size(); ++i) {
+        if (w.contacts[i].normalImpulse != afterSolve[i].normalImpulse) ++normalsChanged;
+        for (int k = 0; k < 2; ++k) {
+            if (w.contacts[i].tangentImpulse[k] != afterSolve[i].tangentImpulse[k]) ++frictionChanged;
+        }
+    }
+    CHECK(normalsChanged > 50);  // the relax pass ran, and took back push-out
+    if (relaxBallFriction) CHECK(frictionChanged > 50);
+    else CHECK(frictionChanged == 0);
+}
+
+TEST_CASE("The solver's footprint counts what a pass reads: the body records and the batches", "[fast][solver][lanes]") {
+    CHECK(solverFootprint(SolverWorkspace{}).allBytes == 0);  // nothing prepared, nothing held
+    CHECK(fastFootprint(SolverWorkspace{}, FastWorkspace{}).allBytes == 0);
+
+    BallHeap heap;
+    SolverWorkspace workspace;
+    prepareContacts(heap.bodies(), heap.contacts, {}, Real(1) / 60, false, workspace);
+    recordPoses(heap.bodies(), workspace);
+    FastWorkspace fast;
+    batchRoundContacts(workspace, fast);
+    recordCentres(workspace, fast);
+    // Counted from the contacts themselves: a record per dynamic body in a contact, and record 0
+    std::vector<bool> inContact(heap.dynamics.size(), false);
+    for (const Contact& contact : heap.contacts) {
+        inContact[contact.a] = true;
+        if (contact.b.kind == BodyKind::Dynamic) inContact[contact.b.index] = true;
+    }
+    const std::size_t records = 1 + std::size_t(std::count(inContact.begin(), inContact.end(), true));
+    const std::size_t contacts = heap.contacts.size();
+    REQUIRE(workspace.bodies.size() == records);
+    // Every contact is round here: all of them in batches of four, a wave's last batch perhaps not full
+    const std::size_t batches = fast.roundBatches.size();
+    CHECK(batches * kLanes >= contacts);
+
+    // The plain pass reads the records, every contact, and the poses (no rows: all round)
+    const SolverFootprint plain = solverFootprint(workspace);
+    CHECK(plain.passBytes == records * sizeof(SolverBody) + contacts * (sizeof(SolverContact) + sizeof(std::uint32_t)) +
+                                 workspace.poses.size() * sizeof(Pose));
+    // The lanes read the records, their centres and the batches
+    const SolverFootprint lanes = fastFootprint(workspace, fast);
+    CHECK(lanes.passBytes == records * (sizeof(SolverBody) + sizeof(SolverCentre)) + batches * sizeof(RoundBatch));
+    // Everything else is on top: at least each contact's record and start
+    CHECK(plain.allBytes >= plain.passBytes + contacts * sizeof(ContactStart));
+    CHECK(lanes.allBytes >= lanes.passBytes + contacts * (sizeof(SolverContact) + sizeof(ContactStart)));
+}
+
+namespace {
+
+/// Steps @p scene twice, once with FastPath=false and once with true, and requires every body's
+/// state to be the same, bit for bit, after every step; returns the fast World's counts.
+FastPathCounts requireSameOnBothRoads(Scene scene, int steps) {
+    scene.settings.fastPath = false;
+    World plain(scene);
+    scene.settings.fastPath = true;
+    World fast(scene);
+    REQUIRE_FALSE(plain.plan().fastPath.runs);
+    REQUIRE(fast.plan().fastPath.runs);
+    for (int step = 0; step < steps; ++step) {
+        plain.step();
+        fast.step();
+        for (std::size_t i = 0; i < plain.dynamics().size(); ++i) {
+            const DynamicObject& a = plain.dynamics()[i];
+            const DynamicObject& b = fast.dynamics()[i];
+            INFO("step " << step + 1 << ", body " << a.name);
+            REQUIRE(a.position == b.position);
+            REQUIRE(a.velocity == b.velocity);
+            REQUIRE(a.orientation == b.orientation);
+            REQUIRE(a.angularVelocity == b.angularVelocity);
+            REQUIRE(a.angularMomentum == b.angularMomentum);
+            REQUIRE(a.asleep == b.asleep);
+        }
+        REQUIRE(plain.impulses().size() == fast.impulses().size());
+        for (std::size_t c = 0; c < plain.impulses().size(); ++c) {
+            REQUIRE(plain.impulses()[c].normalImpulse == fast.impulses()[c].normalImpulse);
+            REQUIRE(plain.impulses()[c].frictionImpulse == fast.impulses()[c].frictionImpulse);
+        }
+    }
+    CHECK(plain.fastPathCounts().steps == 0);
+    return fast.fastPathCounts();
+}
+
+Scene sceneFrom(const std::string& text) { return parseScene(text, "fast-path test"); }
+
+}  // namespace
+
+TEST_CASE("A rain of balls on the packed substeps ends every step where the plain path does", "[fast][lanes]") {
+    // Rough, bouncing, spinning balls dropped into a box of planes: every step's contacts hold
+    // balls only, so the fast path runs its substeps on the packed records.
+    std::string text = "World, Duration=2, Sleep=false\n"
+                       "CollisionPlane, Name=floor, Position=(0,0,0), Normal=(0,1,0)\n"
+                       "CollisionPlane, Name=west, Position=(-1.5,0,0), Normal=(1,0,0)\n"
+                       "CollisionPlane, Name=east, Position=(1.5,0,0), Normal=(-1,0,0)\n"
+                       "CollisionPlane, Name=south, Position=(0,0,-1.5), Normal=(0,0,1)\n"
+                       "CollisionPlane, Name=north, Position=(0,0,1.5), Normal=(0,0,-1)\n";
+    for (int i = 0; i < 48; ++i) {
+        const double x = -1.1 + 0.45 * (i % 6), z = -1.0 + 0.5 * ((i / 6) % 4), y = 0.4 + 0.45 * (i / 24) + 0.05 * (i % 3);
+        text += "DynamicObject, Name=b" + std::to_string(i) + ", Shape=Sphere, Radius=0.2, Mass=" +
+                std::to_string(1 + i % 3) + ", Position=(" + std::to_string(x) + "," + std::to_string(y) + "," +
+                std::to_string(z) + "), Velocity=(" + std::to_string(0.3 * (i % 5) - 0.6) + ",0," +
+                std::to_string(0.2 * (i % 4) - 0.3) + "), AngularVelocity=(0," + std::to_string(i % 7) +
+                ",0), Elasticity=0.6, Friction=0.5\n";
+    }
+    const FastPathCounts counts = requireSameOnBothRoads(sceneFrom(text), 90);
+    INFO(counts.packedSteps << " of " << counts.steps << " steps on the packed records");
+    CHECK(counts.steps == 90);
+    CHECK(counts.packedSteps > 60);  // the comparison covers the packed substeps, not only the objects' road
+}
+
+TEST_CASE("Balls among boxes, on a joint and under Verlet take the fast path on the objects, with the plain numbers", "[fast][lanes]") {
+    const std::string ground = "CollisionPlane, Name=floor, Position=(0,0,0), Normal=(0,1,0)\n";
+    SECTION("balls and boxes in one pile: round contacts in lanes, box contacts one at a time") {
+        std::string text = "World, Duration=2, Sleep=false\n" + ground;
+        for (int i = 0; i < 12; ++i) {
+            const std::string at = "(" + std::to_string(-0.9 + 0.35 * (i % 6)) + "," + std::to_string(0.3 + 0.4 * (i / 6)) +
+                                   "," + std::to_string(0.05 * (i % 2)) + ")";
+            text += i % 3 == 0 ? "DynamicObject, Name=box" + std::to_string(i) +
+                                     ", Shape=Box, Scale=(0.3,0.3,0.3), Mass=2, Friction=0.6, Position=" + at + "\n"
+                               : "DynamicObject, Name=ball" + std::to_string(i) +
+                                     ", Shape=Sphere, Radius=0.16, Mass=1, Friction=0.6, Elasticity=0.3, Position=" + at + "\n";
+        }
+        const FastPathCounts counts = requireSameOnBothRoads(sceneFrom(text), 90);
+        CHECK(counts.steps == 90);
+        CHECK(counts.packedSteps < counts.steps);  // the boxes' contacts keep those steps on the objects
+    }
+    SECTION("a ball on a rope swinging into another: joints between the contact passes") {
+        const std::string text = "World, Duration=2, Sleep=false\n" + ground +
+                                 "DynamicObject, Name=bob, Shape=Sphere, Radius=0.2, Mass=1, Position=(-1,2,0)\n"
+                                 "DynamicObject, Name=target, Shape=Sphere, Radius=0.2, Mass=1, Position=(0.05,1.0,0)\n"
+                                 "DistanceJoint, Name=rod, BodyA=bob, AnchorA=(-1,2,0), AnchorB=(0,2,0)\n";
+        const FastPathCounts counts = requireSameOnBothRoads(sceneFrom(text), 120);
+        CHECK(counts.steps == 120);
+        CHECK(counts.packedSteps == 0);  // joint passes work on the objects
+    }
+    SECTION("balls under velocity Verlet and explicit Euler") {
+        const std::string integrator = GENERATE(std::string("Verlet"), std::string("Euler"));
+        INFO(integrator);
+        std::string text = "World, Duration=2, Integrator=" + integrator + "\n" + ground;
+        for (int i = 0; i < 6; ++i) {
+            text += "DynamicObject, Name=b" + std::to_string(i) + ", Shape=Sphere, Radius=0.2, Mass=1, Friction=0.4, Position=(" +
+                    std::to_string(0.3 * i) + "," + std::to_string(0.25 + 0.45 * i) + ",0)\n";
+        }
+        const FastPathCounts counts = requireSameOnBothRoads(sceneFrom(text), 90);
+        CHECK(counts.packedSteps == 0);  // the packed substeps carry symplectic Euler only
+    }
+}
