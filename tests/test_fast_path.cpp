@@ -350,7 +350,7 @@ TEST_CASE("A rain of balls on the packed substeps ends every step where the plai
     const FastPathCounts counts = requireSameOnBothRoads(sceneFrom(text), 90);
     INFO(counts.packedSteps << " of " << counts.steps << " steps on the packed records");
     CHECK(counts.steps == 90);
-    CHECK(counts.packedSteps > 60);  // the comparison covers the packed substeps, not only the objects' road
+    CHECK(counts.packedSteps > 60);  // the comparison covers the packed substeps, not only the road on the objects
 }
 
 TEST_CASE("Balls among boxes, on a joint and under Verlet take the fast path on the objects, with the plain numbers", "[fast][lanes]") {

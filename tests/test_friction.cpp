@@ -58,10 +58,10 @@ TEST_CASE("A ball rolling down an incline turns by the distance it rolls over it
     // and turns by h·ω_{n+1} with the solved velocities (velocity_change_drift.cpp), so the two sums
     // agree; a turn by free flight's ω alone would lag by h_s·(ω_end − ω_start), here 0.015 rad.
     const Real theta = 30, R = 0.5;
-    for (const bool stepPlan : {true, false}) {  // the packed substeps, and the object road
+    for (const bool fastPath : {true, false}) {  // the fast path (on packed records) and the plain path
         for (Real h : {Real(1) / 60, Real(1) / 240}) {
             Scene scene = test::emptyScene(IntegratorKind::SymplecticEuler, h);
-            scene.settings.stepPlan = stepPlan;
+            scene.settings.fastPath = fastPath;
             scene.planes.push_back(incline(theta));
             scene.dynamics.push_back(test::sphere("ball", R * scene.planes[0].normal, Vec3(0), R, 1, 0, 0.5));
             World world(scene);
@@ -73,7 +73,7 @@ TEST_CASE("A ball rolling down an incline turns by the distance it rolls over it
             const Quat expected = glm::angleAxis(rolled / R, axis);
             // The angle between the two orientations: 2·acos|q₁·q₂| (the ball started unturned)
             const Real apart = 2 * std::acos(std::min(Real(1), std::abs(glm::dot(ball.orientation, expected))));
-            INFO("StepPlan " << stepPlan << ", h = " << h << ": rolled " << rolled << " m, " << rolled / R << " rad");
+            INFO("FastPath " << fastPath << ", h = " << h << ": rolled " << rolled << " m, " << rolled / R << " rad");
             CHECK(rolled > 6);  // 5/7·g·sin30°·(2 s)²/2 = 7.0 m
             CHECK(apart < 1e-3);
         }

@@ -34,7 +34,7 @@
 #include "world/measurements.hpp"
 #include "world/world.hpp"
 
-// The lanes test passes Lanes by value to always-inlined functions (see core/lanes.hpp).
+// The lanes test passes Lanes by value to always-inlined functions (see src/fast/lanes.hpp).
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic ignored "-Wpsabi"
 #endif

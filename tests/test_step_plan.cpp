@@ -219,7 +219,7 @@ TEST_CASE("Balls on the packed substeps end bit for bit where the plain path lea
         scene.dynamics[2].angularVelocity = Vec3(0, 3, 7);
         REQUIRE(planOf(scene).rotation.runs);
     }
-    SECTION("a box drops among the balls: its steps take the object path") {
+    SECTION("a box drops among the balls: its steps take the fast path on the objects") {
         for (DynamicObject& body : scene.dynamics) body.friction = Real(0.4);
         scene.dynamics.push_back(test::dynamicBox("crate", Vec3(1, 4, 0.2), Vec3(0.6), 2, Real(0.5)));
     }

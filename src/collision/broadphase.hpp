@@ -42,19 +42,19 @@ struct BroadphaseChoice {
     std::string reason;                                ///< One sentence, for the run summary.
 };
 
-/// Below this many dynamic bodies `Auto` uses brute force. At 64 bodies it
-/// takes 0.04 ms a step, 0.02 ms more than sweep and prune, about 5 % of the
-/// step (docs/broadphase.md): little to win, and brute force is the
-/// reference, the easiest to follow in a debugger, and what the lecture
-/// scenes have always run. Beyond, its n² box tests cost more and more:
-/// 0.11 against 0.08 ms at 128 bodies, 1.0 against 0.54 ms at 512.
+/// Below this many dynamic bodies `Auto` uses brute force. Up to about 64
+/// bodies its n²/2 box tests cost a few hundredths of a millisecond more than
+/// sweep and prune, a few per cent of the step (docs/broadphase.md has the
+/// measurements): little to win, and brute force is the reference, the
+/// easiest to follow in a debugger, and what the lecture scenes run. Beyond,
+/// its n² tests cost more and more.
 inline constexpr std::size_t kAutoBruteForceBelow = 64;
 /// Below this many bodies `Auto` prefers sweep and prune to the grid for
-/// bodies of similar size. Measured (docs/broadphase.md), the two cost the
-/// same from 128 to 256 bodies, and from 512 on the grid is the faster, by
-/// 1.5 to 2 times at 1 024 to 2 048: the wider the floor the bodies spread
-/// over, the more of them each sweep interval crosses (sweep and prune's cost
-/// per body grows as √n), while the dense grid's stays flat. Structures at
+/// bodies of similar size. Measured (docs/broadphase.md), the two cost about
+/// the same up to a few hundred bodies, and beyond the grid is the faster:
+/// the wider the floor the bodies spread over, the more of them each sweep
+/// interval crosses (sweep and prune's cost per body grows as √n), while the
+/// dense grid's stays flat. Structures at
 /// rest (the pyramids) need no rule of their own: there the grid, rebuilt
 /// every step, still costs less than the AABB tree's descent (whose leaves
 /// stay put), and sweep and prune as little as the tree below 512 bodies.

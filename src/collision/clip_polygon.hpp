@@ -43,7 +43,7 @@ struct ClipVertex {
 ///
 /// A vertex counts as inside up to @p tolerance beyond the plane: a corner
 /// lying exactly on the plane (equal boxes stacked flush) then stays one
-/// vertex with its own labels, instead of turning, with round-off, into two
+/// vertex with its own labels, instead of turning, by rounding, into two
 /// nearly coincident crossing points whose labels change from step to step.
 ///
 /// Reference: Sutherland & Hodgman, "Reentrant polygon clipping", CACM 17(1), 1974;

@@ -42,7 +42,7 @@ void moveInProbedRuns(std::span<DynamicObject> all, Picks&& picks, Move&& move, 
 /// How a check of the solver's records reads them.
 enum class RecordsHold {
     Velocities,        ///< v and ω only.
-    VelocitiesPoses,   ///< v and ω, and the pose recorded for each record's body (the objects' road).
+    VelocitiesPoses,   ///< v and ω, and the pose recorded for each record's body (the fast path on the objects).
     PackedPoses,       ///< v and ω, and the packed centre, orientation and summed turn (the packed road).
 };
 
@@ -77,7 +77,7 @@ Real probeRecords(const SolverWorkspace& w, const FastWorkspace& fast, RecordsHo
     failNonFinite("a body with a solver record", "number", where);  // not reached: the probe saw one of the above
 }
 
-/// The objects' road: after a stage that moved only the bodies with records, their records and
+/// On the objects: after a stage that moved only the bodies with records, their records and
 /// poses say whether anything went wrong; only then are the objects searched, to name it.
 void requireFiniteRecords(std::span<const DynamicObject> dynamics, const SolverWorkspace& w, const FastWorkspace& fast,
                           unsigned parts, const StageAtStep& where) {

@@ -70,9 +70,8 @@ public:
     // the pose that ends the base class: from position to canTurn is one run
     // of 212 bytes, four cache lines of the 400-byte body, which is all that a
     // pass over the bodies (integrate, the drift, the solver's copies) reads.
-    // With the name, size and colour between pose and motion it was five or
-    // six lines, and at 64k bodies such a pass reads tens of megabytes (the
-    // 64k rain ran 9 % slower; bench/solver_performance.md, ninth round). The
+    // With the name, size and colour between pose and motion it would be five
+    // or six lines, and at 64k bodies such a pass reads tens of megabytes. The
     // order of fields is their order in memory; it changes nothing else.
     Vec3 velocity{0, 0, 0};          ///< Linear velocity of the centre of mass, m/s.
     Vec3 angularVelocity{0, 0, 0};   ///< Angular velocity in world space, rad/s.

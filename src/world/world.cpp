@@ -221,10 +221,9 @@ void World::stepWithImpulses() {
 /// body can be knocked within the step, and a collision passes its speed on
 /// (a ball struck by an equal ball takes up to the striker's speed). A ball
 /// at rest 2 cm from a wall, struck at 3 m/s, would cross those 2 cm and sink
-/// into the wall before the next step found the contact: in the 16k sphere
-/// rain such a knock left a ball 10.6 mm inside a wall (bench/solver_performance.md,
-/// eighth round). Walls are few and a contact with a gap costs nothing until
-/// it closes, so every body gets its plane contacts that far ahead.
+/// into the wall before the next step found the contact, as happens in a
+/// dense sphere rain. Walls are few and a contact with a gap costs nothing
+/// until it closes, so every body gets its plane contacts that far ahead.
 void World::measureSweeps(Real h) {
     Real fastest = 0;
     for (DynamicObject& body : dynamics_) {
