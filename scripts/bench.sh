@@ -15,8 +15,9 @@
 #   docs/images/precision-*.png      one work-precision figure per reference problem, and the energy figure
 #   docs/benchmarks.md               the page: how it was made, the figures, the tables,
 #                                    the stress suite's table (stepwise-bench stress), and the
-#                                    sections measured by hand (bench/solver_performance.md,
-#                                    docs/data/bench-*.txt, docs/data/threads-section.txt)
+#                                    sections of docs/data/bench-*.txt (scripts/bench_scaling.sh).
+#                                    The measurement history is docs/performance-history.md,
+#                                    written by hand; this script does not touch it.
 # Build: the `release` preset (build/release/), target stepwise-bench only.
 # Takes under a minute once stepwise-bench is built, on the 2-core Xeon of the page
 # (2026-11-26): the precision sweep 17 s (load average 2.5), the stress suite 10.5 s of
@@ -210,14 +211,5 @@ EOF
     cat "$stress_table"
     # Scaling and Bullet: the tables of their last measurement (docs/data/bench-*.txt).
     bash scripts/bench_scaling.sh --sections
-    # Threads and continuous collision: measured by hand with stepwise_bench_threads (minutes
-    # at 16k bodies, so not part of this sweep); the section lives in docs/data/threads-section.txt.
-    if [[ -f docs/data/threads-section.txt ]]; then
-        echo
-        cat docs/data/threads-section.txt
-    fi
-    echo
-    # Measured by hand (stepwise run, callgrind), not by this script: kept as written.
-    cat bench/solver_performance.md
 } > docs/benchmarks.md
 echo "bench.sh: wrote docs/benchmarks.md, docs/data/precision.csv and docs/images/precision-*.png" >&2

@@ -120,7 +120,7 @@ a megabyte, less than a core's own L2 cache on current processors (1 to
 2 MB); from 16k on they are several times more, and every walk fetches
 them from the L3 cache shared by the cores, slower per byte and, on a
 shared machine, shared with its other users too. That is the growth in
-the ratio column, not the algorithm: bench/solver_performance.md measures
+the ratio column, not the algorithm: docs/performance-history.md measures
 it for the passes (the fourteenth and seventeenth rounds: the 64k pass with
 its records folded into the first 4 096, which then stay in the L2, runs as
 fast as the 1k pass), and the other stages are walks of the same kind,
