@@ -1,27 +1,30 @@
 #!/usr/bin/env bash
-# Regenerates docs/benchmarks.md: runs the benchmarks on this machine, draws
-# the plots with gnuplot, and writes the tables with the machine, date and
-# exact command.
+# Regenerates docs/benchmarks.md, the page of current benchmark results, and its companion
+# docs/data/benchmark-tables.md, which holds every table in full. It runs the precision and
+# stress benchmarks on this machine, draws the plots with gnuplot, and lays out the sections
+# that are measured apart (scripts/bench_scaling.sh, docs/data/bench-*.txt). The page's first
+# table says on which machine, when, on which commit and with which command it was made, and
+# how long each part took.
 #
-#   scripts/bench.sh                 the full sweep, 5 timed repetitions per point
+#   scripts/bench.sh                 precision (5 timed repetitions per point) and stress; the
+#                                    other sections are laid out again from their last measurement
 #   scripts/bench.sh --repeats 11    more repetitions (a noisy machine)
-#   scripts/bench.sh --scaling       also re-measure the Scaling section and its stage-by-stage table
-#                                    (scripts/bench_scaling.sh; about 3 minutes on the page's 2-core machine)
-#   scripts/bench.sh --bullet        also re-measure the Side by side with Bullet section (installs Bullet):
+#   scripts/bench.sh --scaling       also re-measure the Scaling section, its stage-by-stage table
+#                                    and the threads table (scripts/bench_scaling.sh --run ...)
+#   scripts/bench.sh --bullet        also re-measure the side by side with Bullet (installs Bullet):
 #                                    the scenario tables, the rain's run time against overlap, the verdicts
 #
 # Writes
-#   docs/data/precision.csv          every measurement (stepwise-bench precision --csv)
+#   docs/data/precision.csv          every precision measurement (stepwise-bench precision --csv)
 #   docs/images/precision-*.png      one work-precision figure per reference problem, and the energy figure
-#   docs/benchmarks.md               the page: how it was made, the figures, the tables,
-#                                    the stress suite's table (stepwise-bench stress), and the
-#                                    sections measured by hand (bench/solver_performance.md,
-#                                    docs/data/bench-*.txt, docs/data/threads-section.txt)
-# Build: the `release` preset (build/release/), target stepwise-bench only.
-# Takes under a minute once stepwise-bench is built, on the 2-core Xeon of the page
-# (2026-11-26): the precision sweep 17 s (load average 2.5), the stress suite 10.5 s of
-# wall and of CPU time (idle, load average 0.1-0.3). With --scaling --bullet, about 8 minutes
-# there (12:08-12:15 UTC for the page of 2026-11-26). Setup and build messages go to stderr.
+#   docs/benchmarks.md               the page: what each benchmark shows, the plots, short tables, how to
+#                                    reproduce; under 40 KB (the CTest test docs-benchmarks-page checks it)
+#   docs/data/benchmark-tables.md    every table in full: precision, the broadphase tracker, the side by side
+# and, with --scaling or --bullet, the docs/data/bench-*.txt files they re-measure.
+# The measurement history is docs/performance-history.md, written by hand: this script neither
+# reads nor changes it.
+# Build: the `release` preset (build/release/), target stepwise-bench only. Setup and build
+# messages go to stderr. How long a run takes on your machine: the page's first table says.
 set -euo pipefail
 
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -33,12 +36,20 @@ extra_runs=()
 while [[ $# -gt 0 ]]; do
     case $1 in
         --repeats) repeats=${2:?--repeats needs a number}; shift 2 ;;
-        --scaling) extra_runs+=(scaling stage-costs); shift ;;
+        --scaling) extra_runs+=(scaling stage-costs threads); shift ;;
         --bullet) extra_runs+=(bullet); shift ;;
         -h|--help) sed -n '2,/^[^#]/{/^#/p}' "$0"; exit 0 ;;  # the header above, up to its first line of code
         *) echo "bench.sh: unknown option '$1' (see --help)" >&2; exit 2 ;;
     esac
 done
+
+page=docs/benchmarks.md
+companion=docs/data/benchmark-tables.md
+csv=docs/data/precision.csv
+# The summary table's two time steps (1/60 s: a display frame; 1/960 s: a fine step), as 1/h.
+summary_steps="60 960"
+# The energy figure's problems and quantities: the same as bench/plot_precision.gp's energyProblems.
+energy_quantities="spring:amplitude_error kepler-circular:energy_error_max kepler-eccentric:energy_error_max free-box:energy_error_max"
 
 bash scripts/setup.sh >&2
 if [[ ! -f "$build_dir/build.ninja" || ! -f "$build_dir/CMakeCache.txt" \
@@ -50,17 +61,17 @@ cmake --build --preset release -j "${STEPWISE_JOBS:-2}" --target stepwise-bench 
 mkdir -p docs/data docs/images
 for what in "${extra_runs[@]}"; do bash scripts/bench_scaling.sh --run "$what"; done
 tables=$(mktemp)
-trap 'rm -f "$tables"' EXIT
-command=("$build_dir/bench/stepwise-bench" precision --repeats "$repeats" --csv docs/data/precision.csv
-         --markdown "$tables")
+stress_table=$(mktemp)
+trap 'rm -f "$tables" "$stress_table"' EXIT
+command=("$build_dir/bench/stepwise-bench" precision --repeats "$repeats" --csv "$csv" --markdown "$tables")
 echo "bench.sh: ${command[*]}" >&2
+precision_start=$SECONDS
 "${command[@]}" >&2
-gnuplot -e "csv='docs/data/precision.csv'; outdir='docs/images'" bench/plot_precision.gp
+precision_seconds=$((SECONDS - precision_start))
+gnuplot -e "csv='$csv'; outdir='docs/images'" bench/plot_precision.gp
 
 # The stress suite: its exit status is 1 when a case fails, and the table says
 # which; the page is written all the same, so a failure is published, not hidden.
-stress_table=$(mktemp)
-trap 'rm -f "$tables" "$stress_table"' EXIT
 stress_command=("$build_dir/bench/stepwise-bench" stress --markdown "$stress_table")
 echo "bench.sh: ${stress_command[*]}" >&2
 stress_start=$SECONDS
@@ -78,14 +89,127 @@ commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
 if [[ -n $(git status --porcelain -- src bench config 2>/dev/null) ]]; then commit+=" (with uncommitted changes)"; fi
 date=$(date -u '+%Y-%m-%d %H:%M UTC')
 
+# The headline error of each problem (its first quantity, the one its figure plots) at the
+# summary's time steps, and the ns per step, from the CSV: a row per problem and step.
+precision_summary() {
+    awk -F, -v steps="$summary_steps" '
+        function cell(v) { return (v == "" || v ~ /nan/) ? "—" : sprintf("%.2e", v) }
+        NR == 1 { next }
+        {
+            n = sprintf("%.0f", 1 / $3)
+            if (!($1 in metric)) { metric[$1] = $6; unit[$1] = $7; problems[++np] = $1 }
+            if (!($2 in known)) { known[$2] = 1; integrators[++ni] = $2 }
+            if ($6 == metric[$1]) value[$1, $2, n] = $8
+            ns[$1, $2, n] = $5
+        }
+        END {
+            printf "| problem | error | h (s) |"
+            for (i = 1; i <= ni; ++i) printf " %s |", integrators[i]
+            printf "\n|---|---|---|"
+            for (i = 1; i <= ni; ++i) printf "---:|"
+            printf "\n"
+            split(steps, hs, " ")
+            for (k = 1; k <= np; ++k) {
+                p = problems[k]
+                for (j = 1; j in hs; ++j) {
+                    if (j == 1) printf "| [%s](#bench-%s) | `%s` (%s) |", p, p, metric[p], unit[p]
+                    else printf "| | |"
+                    printf " 1/%s |", hs[j]
+                    for (i = 1; i <= ni; ++i) printf " %s |", cell(value[p, integrators[i], hs[j]])
+                    printf "\n"
+                }
+                printf "| | ns per step | 1/%s |", hs[1]
+                for (i = 1; i <= ni; ++i) {
+                    v = ns[p, integrators[i], hs[1]]
+                    printf " %s |", v == "" ? "—" : sprintf("%.0f", v)
+                }
+                printf "\n"
+            }
+        }' "$csv"
+}
+
+# The energy figure's numbers: each quantity at the coarsest and the finest step, and how
+# many times smaller it got over the last halving of h.
+energy_table() {
+    awk -F, -v wanted="$energy_quantities" '
+        function cell(v) { return (v == "" || v ~ /nan/) ? "—" : sprintf("%.2e", v) }
+        function abs(v) { return v < 0 ? -v : v }
+        BEGIN { nw = split(wanted, pairs, " "); for (k = 1; k <= nw; ++k) { split(pairs[k], pm, ":"); want[pm[1]] = pm[2]; order[k] = pm[1] } }
+        NR == 1 { next }
+        {
+            n = sprintf("%.0f", 1 / $3)
+            if (!(n in stepSeen)) { stepSeen[n] = 1; steps[++ns] = n + 0 }
+            if (!($2 in known)) { known[$2] = 1; integrators[++ni] = $2 }
+            if (want[$1] == $6) { value[$1, $2, n] = $8; unit[$1] = $7 }
+        }
+        END {
+            coarse = steps[1]; fine = steps[1]; before = 0
+            for (s = 1; s <= ns; ++s) { if (steps[s] < coarse) coarse = steps[s]; if (steps[s] > fine) fine = steps[s] }
+            for (s = 1; s <= ns; ++s) if (steps[s] < fine && steps[s] > before) before = steps[s]
+            printf "| problem | quantity | integrator | h = 1/%s s | h = 1/%s s | ÷ over the last halving |\n", coarse, fine
+            printf "|---|---|---|---:|---:|---:|\n"
+            for (k = 1; k <= nw; ++k) {
+                p = order[k]
+                for (i = 1; i <= ni; ++i) {
+                    a = value[p, integrators[i], before]; b = value[p, integrators[i], fine]
+                    ratio = (a == "" || b == "" || a ~ /nan/ || b ~ /nan/ || b + 0 == 0) ? "—" : sprintf("%.1f", abs(a) / abs(b))
+                    printf "| %s | %s |", i == 1 ? p : "", i == 1 ? "`" want[p] "` (" unit[p] ")" : ""
+                    printf " %s | %s | %s | %s |\n", integrators[i], cell(value[p, integrators[i], coarse]), cell(b), ratio
+                }
+            }
+        }' "$csv"
+}
+
+# The time steps swept, from the CSV: "1/30 s to 1/1920 s".
+step_range=$(awk -F, 'NR > 1 { n = sprintf("%.0f", 1 / $3); if (lo == "" || n + 0 < lo + 0) lo = n; if (n + 0 > hi + 0) hi = n }
+                      END { printf "1/%s s to 1/%s s", lo, hi }' "$csv")
+problem_count=$(awk -F, 'NR > 1 && !($1 in seen) { seen[$1] = 1; ++n } END { print n + 0 }' "$csv")
+# The stress suite's cases that passed, of all, and the elastic gas's energy at the end of its run.
+stress_passed=$(awk -F'|' '/^\| `/ { ++all; gsub(/ /, "", $5); if ($5 == "pass") ++ok } END { printf "%d of %d", ok, all }' "$stress_table")
+gas_loss=$(sed -n 's/^| `elastic-gas` |.*at the end \(-\{0,1\}[0-9.]*\) %.*/\1 %/p' "$stress_table")
+# The side by side's verdicts: how many of issue #7's targets were met, and which were not.
+bullet_data=docs/data/bench-bullet.txt
+bullet_verdicts=""
+if [[ -f $bullet_data ]]; then
+    bullet_verdicts=$(awk -F'|' '
+        /^\*\*Against the targets/ { inside = 1; next }
+        /^\*\*/ { inside = 0 }
+        inside && /^\| / && !/^\| target/ {
+            verdict = $4; gsub(/ /, "", verdict)
+            if (verdict == "yes") ++met
+            if (verdict == "yes" || verdict == "no") ++all
+            if (verdict == "no") { name = $2; sub(/^ /, "", name); sub(/ $/, "", name); missed = missed (missed == "" ? "" : "; ") name }
+        }
+        END { if (all) printf "%d of %d met%s", met, all, missed == "" ? "" : "; not met: " missed }' "$bullet_data")
+fi
+made_apart=$(bash scripts/bench_scaling.sh --made)
+total_seconds=$SECONDS
+
 {
     cat <<EOF
 # Benchmarks {#benchmarks}
 
-*This page is written by \`scripts/bench.sh\`; run it again to regenerate it
-on your machine (do not edit it by hand). The numbers below are from one
-machine on one day: the errors are the same everywhere (they are
-deterministic), the nanoseconds are not.*
+*This page is written by \`scripts/bench.sh\`: do not edit it by hand, run
+the script again. It shows the current results only. Every table in full
+is in [data/benchmark-tables.md](data/benchmark-tables.md), and every
+precision measurement in [data/precision.csv](data/precision.csv). What was
+tried and measured before, with its own dates, is in the
+[performance history](performance-history.md). The errors are the same on
+every machine (the runs are deterministic); the times are not.*
+
+At a glance:
+
+- [Precision](#benchmarks-precision): ${problem_count} reference problems with known exact
+  solutions, each run with every integrator at time steps from ${step_range}.
+- [Energy](#benchmarks-energy): how far each integrator lets a conserved quantity stray.
+- [Stress suite](#benchmarks-stress): ${stress_passed} cases pass in this run.
+- [Scaling](#benchmarks-scaling) and [stage by stage](#benchmarks-stage-costs): the cost
+  of a step per body from a thousand bodies to tens of thousands.
+- [Side by side with Bullet](#benchmarks-bullet): issue #7's targets, ${bullet_verdicts:-not measured yet}.
+- [Threads and continuous collision](#threads-and-continuous-collision).
+- [How to reproduce](#benchmarks-reproduce).
+
+## How this page was made {#benchmarks-made}
 
 | | |
 |---|---|
@@ -93,131 +217,180 @@ deterministic), the nanoseconds are not.*
 | date | ${date} |
 | commit | ${commit} |
 | compiler | ${compiler}, \`release\` preset (-O3, \`Real\` = double) |
-| command | \`${invocation}\` (${repeats} timed repetitions per point), which runs \`${command[*]/$tables/TABLES.md}\` and \`gnuplot bench/plot_precision.gp\` |
+| command | \`${invocation}\` (${repeats} timed repetitions per point) |
+| time taken | precision sweep ${precision_seconds} s, stress suite ${stress_seconds} s; the whole script ${total_seconds} s, setup and build included |
+
+The other sections are measured apart, and re-measured only by
+\`scripts/bench.sh --scaling\` and \`--bullet\`; each repeats how it was
+made above its tables:
+
+${made_apart}
 
 ## Precision: error against time step and work {#benchmarks-precision}
 
-\`stepwise-bench precision\` runs each *reference problem* — a scene in
-\`config/reference_*.scene\` with a known exact solution — with every
-integrator at the time steps h = 1/30, 1/60, …, 1/1920 s, through the
-engine's own \`World::step()\`, and compares the result with the exact
-solution (bench/reference_problems.cpp says how each error is measured;
-bench/exact_solutions.cpp computes the references). Only \`TimeStep\` and
-\`Integrator\` are overridden; open a scene file to see the problem.
+**What it shows.** How accurate each integrator is, and what its accuracy
+costs. \`stepwise-bench precision\` runs each *reference problem*, a scene
+in \`config/reference_*.scene\` with a known exact solution, with every
+integrator at time steps from ${step_range}, through the engine's own
+\`World::step()\`, and compares the result with the exact solution
+(bench/reference_problems.cpp says how each error is measured;
+bench/exact_solutions.cpp computes the exact solutions). Only \`TimeStep\`
+and \`Integrator\` are changed; open a scene file to see the problem. Each
+error is measured once, since the runs are deterministic; the time per step
+is the median of ${repeats} timed runs with nothing but \`World::step()\` in the
+loop.
 
-How to read a figure (lectures/09-accuracy-and-stability.md explains more):
+**How to read a figure** (lecture 9, *Accuracy and stability*, explains more):
 
 - **Left, error against h.** Both axes are logarithmic, so an error that
   behaves like C·h^p is a straight line of slope p: the *order* of the
-  method. The dashed and dotted guides have slopes 1 and 2. Halving h halves
-  a first-order error and quarters a second-order one.
-- **Right, error against work** (the work-precision diagram). The work is
-  the cost of simulating one second, ns per step ÷ h. The lower-left a
-  line runs, the more accuracy per nanosecond. One step costs about the
-  same with every integrator here (the step is dominated by the pipeline,
-  not by the integrator's few multiplications, although Verlet evaluates
-  the forces twice), so the right panel is the left one mirrored: the work
-  grows as 1/h, and what separates the integrators is their error.
-- Points missing from a line are errors of exactly 0 or runs that could
-  not be measured (see the notes under the tables).
+  method. The dashed and dotted guides have slopes 1 and 2. Halving h
+  halves a first-order error and quarters a second-order one.
+- **Right, error against work**: the cost of simulating one second, ns per
+  step ÷ h (the work-precision diagram). The further down and left a line
+  runs, the more accuracy per nanosecond. Where every integrator costs
+  about the same per step (the *ns per step* rows below), this panel is
+  the left one mirrored, and only the errors tell the integrators apart.
+- A point missing from a line is an error of exactly 0, or a run that
+  could not be measured (\`—\` in the tables).
 
-Each error is measured once (runs are deterministic); the time per step is
-the median of ${repeats} timed runs with nothing but \`World::step()\` in the
-loop. Tables: one per quantity, a row per time step, a column per
-integrator; \`—\` marks a quantity a run could not measure.
+**The headline error of each problem**, the one its figure plots, at two
+time steps, and the cost of a step. Each problem's other quantities, at
+every time step, are in the [full tables](data/benchmark-tables.md#tables-precision).
 
 EOF
-    # Each problem's figure goes right under its heading.
-    awk '{
-        print
-        if (match($0, /^### [a-z-]+ \{#bench-/)) {
+    precision_summary
+    echo
+    # Each problem: its heading, what it is (the line under the heading in the tables), its figure.
+    awk '
+        /^### / {
+            print; print ""
             name = substr($0, 5); sub(/ .*/, "", name)
+            while ((getline line) > 0 && line == "") {}
+            print line; print ""
             png = "docs/images/precision-" name ".png"
-            if ((getline line < png) >= 0) {
+            if ((getline probe < png) >= 0) {
                 close(png)
-                printf "\n<img src=\"images/precision-%s.png\" alt=\"%s: error against time step and against work, one line per integrator\" width=\"900\">\n", name, name
+                printf "<img src=\"images/precision-%s.png\" alt=\"%s: error against time step and against work, one line per integrator\" width=\"900\">\n\n", name, name
             }
-        }
-    }' "$tables"
+        }' "$tables"
     cat <<EOF
-**The pendulum's three lines coincide**, and its period error does not
-shrink steadily with h. Its rod is a \`DistanceJoint\`, so it runs under
-\`Solver=SequentialImpulse\`, where a body that a constraint touches in a
-substep ends it at x_n + h_s·v_{n+1} whatever the integrator
-(src/integrators/velocity_change_drift.cpp says why). What the tables
-measure is the soft joint's error. A soft joint is a spring of
-\`JointHertz\` = 60 Hz, which the bob's tension (up to 2 m·g) holds off
-its 1 m length (the \`length_error_max\` table above), and a rod ΔL off
-has its period off by ΔT/T = ΔL/(2L), a few 10⁻⁵: a floor that smaller
-steps do not lower. The period error crosses zero near h = 1/480 s, hence
-its dip there (lectures/09-accuracy-and-stability.md, *The pendulum: when
-the integrator does not matter*).
+**The pendulum's three lines coincide.** Its rod is a \`DistanceJoint\`, so
+it runs under \`Solver=SequentialImpulse\`, where a body that a constraint
+touches in a substep ends it at x_n + h_s·v_{n+1} whatever the integrator
+(src/integrators/velocity_change_drift.cpp says why). What it measures is
+the soft joint's error: a soft joint is a stiff spring (\`JointHertz\`),
+which the bob's tension stretches a little (\`length_error_max\` in the
+full tables), and a rod ΔL too long has its period off by ΔT/T = ΔL/(2L).
+Smaller steps do not lower that floor, and where the period error changes
+sign its line dips (lecture 9, *The pendulum: when the integrator does not
+matter*).
 
 ## Energy {#benchmarks-energy}
 
-How far each integrator lets a conserved quantity stray: the spring's
-amplitude after 10 periods, the largest energy error over 10 orbits, and
-over the free box's 20 s. Explicit Euler gains energy on every problem;
-its largest energy error is the largest of the three at every h and shrinks
-slowly. On the spring it falls from 5·10⁷ times the starting energy at
-h = 1/30 s to 0.39 of it at 1/1920 s, on the free box from 1.0 to 0.019,
-the last halvings of h dividing it by 2.4 to 2.9 (first order would be 2).
-On the circular and the eccentric orbit it is still 0.23 and 0.53 at
-1/1920 s (0.87 and 1.2 at 1/30 s), 1.1 to 1.5 times smaller per halving,
-and on the eccentric one it grows once (0.91 at 1/120 s, 0.95 at 1/240 s).
-Symplectic Euler's energy error is bounded and halves with h on the spring
-and the eccentric orbit (first order) but quarters on the circular orbit
-and the free box; Verlet's quarters on the spring, the eccentric orbit and
-the free box (second order) and falls 16 times per halving on the circular
-orbit. On the free box the two symplectic methods share one rotation
-scheme (src/integrators/free_rotation.cpp), so their lines coincide.
+**What it shows.** How far each integrator lets a conserved quantity
+stray over a long run: the spring's amplitude after 10 periods, and the
+largest energy error over 10 orbits and over the free box's tumbling.
+
+**How to read it.** The figure plots each quantity against h. In the
+table, the last column is the error at the second-finest step divided by
+the error at the finest: about 2 is first order, about 4 second order, and
+less than 2 an error that shrinks more slowly than h. Explicit Euler is not
+symplectic: nothing bounds its energy error, which grows with the length
+of the run. Symplectic Euler and Verlet keep it bounded. On the free box
+the two symplectic methods share one rotation scheme
+(src/integrators/free_rotation.cpp), so their rows agree.
 
 <img src="images/precision-energy.png" alt="Energy error against time step for the spring, both orbits and the free box" width="900">
 
-The same numbers, and every other measurement, are in
-[\`docs/data/precision.csv\`](data/precision.csv) (one row per problem,
-integrator, time step and metric).
+EOF
+    energy_table
+    cat <<EOF
 
 ## Stress suite {#benchmarks-stress}
 
-\`stepwise-bench stress\` pushes the engine where it is weakest and judges
-each case against a criterion from physics, not against an earlier run:
-deep stacks must stand, a perfectly elastic gas must not gain energy, a
-fast ball must not pass through a thin wall, a spring at its stability
-limit must stay on its invariant ellipse, a scene moved 10 km away or with
-every mass scaled must move as the original does, and random scenes must
-never produce a NaN or lose a body through a wall. The elastic gas passes
-while losing most of its energy (72 % in 10 s when this was written; the
-table has this run's figure) because its criterion, issue #7's, is that the
-energy never grows by more than 1 %. It loses it where a sphere is struck by
-two others in the same step: the contacts are solved one after the other
-(Gauss–Seidel), and one restitution pass cannot give each its bounce at
-once (two spheres closing on a third from both sides at 2 m/s lose 64 % of
-their energy; lectures/09-accuracy-and-stability.md, *The stress suite*).
-bench/stress.cpp lists
-every case, its scene and why its criterion is what it is; the scenes are
-in \`config/\` (\`stress_*.scene\`, \`lesson08_*.scene\`) except the elastic
-gas and the random scenes, which are generated from a seed
-(\`src/config/scene_generator.cpp\`, then changed as stress.cpp says).
-\`ms/step\` is the wall time of \`World::step()\` per step in one run.
+**What it shows.** Whether the engine holds where it is weakest.
+\`stepwise-bench stress\` judges each case against a criterion from
+physics, not against an earlier run: deep stacks must stand, a perfectly
+elastic gas must not gain energy, a fast ball must not pass through a thin
+wall, a spring at its stability limit must stay on its invariant ellipse,
+a scene moved far from the origin or with every mass scaled must move as
+the original does, and random scenes must never produce a NaN or lose a
+body through a wall. bench/stress.cpp lists every case, its scene and why
+its criterion is what it is; the scenes are in \`config/\`
+(\`stress_*.scene\`, \`lesson08_*.scene\`), except the elastic gas and the
+random scenes, which are generated from a seed.
 
-Command: \`${stress_command[*]/$stress_table/STRESS.md}\`; it took ${stress_seconds} s
-and exited with status ${stress_status} (1: a case failed).
-\`stepwise-bench stress --quick\` (shorter runs, fewer bodies, every case)
-is the CTest test \`bench_stress_quick\`.
+**How to read it.** *measured* is the figure the criterion judges;
+*ms/step* is the wall time of \`World::step()\` per step in one run. The
+elastic gas passes although it loses energy (its energy changed by
+${gas_loss:-the figure in its row} by the end of this run), because its criterion is
+that the energy never *grows*. It loses
+energy where a sphere is struck by two others in the same step: the
+contacts are solved one after the other (Gauss–Seidel), and one
+restitution pass cannot give each its bounce at once (lecture 9, *The
+stress suite*).
+
+Command: \`${stress_command[*]/$stress_table/STRESS.md}\`; it exited with
+status ${stress_status} (1: a case failed). \`stepwise-bench stress --quick\`
+(shorter runs, fewer bodies, every case) is the CTest test
+\`bench_stress_quick\`.
 
 EOF
     cat "$stress_table"
-    # Scaling and Bullet: the tables of their last measurement (docs/data/bench-*.txt).
-    bash scripts/bench_scaling.sh --sections
-    # Threads and continuous collision: measured by hand with stepwise_bench_threads (minutes
-    # at 16k bodies, so not part of this sweep); the section lives in docs/data/threads-section.txt.
-    if [[ -f docs/data/threads-section.txt ]]; then
-        echo
-        cat docs/data/threads-section.txt
-    fi
     echo
-    # Measured by hand (stepwise run, callgrind), not by this script: kept as written.
-    cat bench/solver_performance.md
-} > docs/benchmarks.md
-echo "bench.sh: wrote docs/benchmarks.md, docs/data/precision.csv and docs/images/precision-*.png" >&2
+    bash scripts/bench_scaling.sh --sections
+    cat <<'EOF'
+
+## How to reproduce {#benchmarks-reproduce}
+
+```sh
+scripts/bench.sh                # precision and stress; the other sections from docs/data/bench-*.txt
+scripts/bench.sh --scaling      # also re-measures Scaling, stage by stage, and threads
+scripts/bench.sh --bullet       # also re-measures the side by side (installs Bullet, builds build/bullet)
+scripts/bench.sh --repeats 11   # more timed repetitions per point, on a noisy machine
+```
+
+The table at the top of this page says how long each part took. One part
+alone, after a first `scripts/bench.sh` has built `build/release`:
+
+```sh
+build/release/bench/stepwise-bench precision --quick --problems spring
+build/release/bench/stepwise-bench stress --cases tower,elastic-gas
+build/release/bench/stepwise-bench stage-costs --sizes 1000,2000,4000,8000
+scripts/bench_scaling.sh --run threads
+```
+
+`stepwise-bench --help` lists every option. The script writes this page,
+[data/benchmark-tables.md](data/benchmark-tables.md),
+[data/precision.csv](data/precision.csv) and the figures in `docs/images/`;
+with `--scaling` or `--bullet` it also rewrites the `docs/data/bench-*.txt`
+files those sections are laid out from. Commit them together, from one
+run. The CTest test `docs-benchmarks-page` (label `docs`) keeps this page
+under 40 KB and free of history: what was tried and measured before goes
+to [the performance history](performance-history.md).
+EOF
+} > "$page"
+
+{
+    cat <<EOF
+# Benchmarks: every table {#benchmark-tables}
+
+*Written by \`scripts/bench.sh\` with [the benchmarks page](../benchmarks.md),
+from the same run and the same data files (${date}; commit ${commit}).
+Do not edit it by hand. The page says what each benchmark shows and how
+to read it.*
+
+## Precision, every quantity at every time step {#tables-precision}
+
+One table per quantity: a row per time step, a column per integrator; \`—\`
+marks a quantity a run could not measure. The same numbers are in
+[precision.csv](precision.csv), one row per problem, integrator, time step
+and quantity.
+
+EOF
+    # The page has the #bench-NAME anchors; here each problem is #tables-NAME.
+    sed 's/ {#bench-\([a-z-]*\)}$/ {#tables-\1}/' "$tables"
+    bash scripts/bench_scaling.sh --full-tables
+} > "$companion"
+echo "bench.sh: wrote $page ($(wc -c < "$page") bytes), $companion, $csv and docs/images/precision-*.png" >&2
