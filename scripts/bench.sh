@@ -278,7 +278,7 @@ EOF
 **The pendulum's three lines coincide.** Its rod is a \`DistanceJoint\`, so
 it runs under \`Solver=SequentialImpulse\`, where a body that a constraint
 touches in a substep ends it at x_n + h_s·v_{n+1} whatever the integrator
-(src/integrators/velocity_change_drift.cpp says why). What it measures is
+(src/dynamics/velocity_change_drift.hpp says why). What it measures is
 the soft joint's error: a soft joint is a stiff spring (\`JointHertz\`),
 which the bob's tension stretches a little (\`length_error_max\` in the
 full tables), and a rod ΔL too long has its period off by ΔT/T = ΔL/(2L).

@@ -297,7 +297,7 @@ STEPWISE_LANES_INLINE void solveFrictionOfBatches(RoundBatch* batches, BodyLanes
 /// reorder window reaches ahead, about one batch's instructions. Batches of one wave share
 /// no body, so their chains are independent: written phase by phase, every phase once
 /// for each batch, the N chains run side by side. Three fit the registers; with four,
-/// values spill to the stack (docs/performance-history.md measured each N). The
+/// values spill to the stack (docs/performance-history.md#history-round-13 measured each N). The
 /// numbers are each batch's own, so the bits are the same whatever N.
 ///
 /// With @p Friction false (a relax pass, unless ContactSolverSettings::relaxBallFriction) the
