@@ -305,22 +305,7 @@ FastPathCounts requireSameOnBothRoads(Scene scene, int steps) {
     for (int step = 0; step < steps; ++step) {
         plain.step();
         fast.step();
-        for (std::size_t i = 0; i < plain.dynamics().size(); ++i) {
-            const DynamicObject& a = plain.dynamics()[i];
-            const DynamicObject& b = fast.dynamics()[i];
-            INFO("step " << step + 1 << ", body " << a.name);
-            REQUIRE(a.position == b.position);
-            REQUIRE(a.velocity == b.velocity);
-            REQUIRE(a.orientation == b.orientation);
-            REQUIRE(a.angularVelocity == b.angularVelocity);
-            REQUIRE(a.angularMomentum == b.angularMomentum);
-            REQUIRE(a.asleep == b.asleep);
-        }
-        REQUIRE(plain.impulses().size() == fast.impulses().size());
-        for (std::size_t c = 0; c < plain.impulses().size(); ++c) {
-            REQUIRE(plain.impulses()[c].normalImpulse == fast.impulses()[c].normalImpulse);
-            REQUIRE(plain.impulses()[c].frictionImpulse == fast.impulses()[c].frictionImpulse);
-        }
+        test::requireSameState(fast, plain);
     }
     CHECK(plain.fastPathCounts().steps == 0);
     return fast.fastPathCounts();

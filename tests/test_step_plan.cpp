@@ -22,32 +22,6 @@ Scene configScene(const std::string& file) { return loadSceneFile(std::string(ST
 
 StepPlan planOf(Scene scene) { return World(std::move(scene)).plan(); }
 
-/// Every quantity of the state, compared with ==: the plan must not change one bit of it
-/// (== also lets +0 equal −0, the one difference a skipped I⁻¹·0 could make).
-void requireSameState(const World& planned, const World& unplanned) {
-    REQUIRE(planned.time() == unplanned.time());
-    REQUIRE(planned.candidatePairs().size() == unplanned.candidatePairs().size());
-    REQUIRE(planned.contacts().size() == unplanned.contacts().size());
-    REQUIRE(planned.dynamics().size() == unplanned.dynamics().size());
-    for (std::size_t i = 0; i < planned.dynamics().size(); ++i) {
-        const DynamicObject& a = planned.dynamics()[i];
-        const DynamicObject& b = unplanned.dynamics()[i];
-        INFO(a.name << " at step " << planned.stepCount());
-        REQUIRE(a.position == b.position);
-        REQUIRE(a.velocity == b.velocity);
-        REQUIRE(a.orientation == b.orientation);
-        REQUIRE(a.angularVelocity == b.angularVelocity);
-        REQUIRE(a.angularMomentum == b.angularMomentum);
-        REQUIRE(a.asleep == b.asleep);
-    }
-    for (std::size_t i = 0; i < planned.kinematics().size(); ++i) {
-        REQUIRE(planned.kinematics()[i].position == unplanned.kinematics()[i].position);
-        REQUIRE(planned.kinematics()[i].orientation == unplanned.kinematics()[i].orientation);
-    }
-    for (std::size_t i = 0; i < planned.joints().size(); ++i) {
-        REQUIRE(planned.joints()[i].broken == unplanned.joints()[i].broken);
-    }
-}
 
 /// Runs @p scene with and without the plan, comparing the whole state after every step.
 /// Returns how many stage runs the plan saved.
@@ -62,7 +36,7 @@ std::uint64_t requireSameTrajectory(const Scene& scene, int steps) {
     for (int i = 0; i < steps; ++i) {
         planned.step();
         unplanned.step();
-        requireSameState(planned, unplanned);
+        test::requireSameState(planned, unplanned);
     }
     std::uint64_t saved = 0;
     for (std::size_t s = 0; s < kStageCount; ++s) {
@@ -232,7 +206,7 @@ TEST_CASE("Balls on the packed substeps end bit for bit where the plain path lea
     for (int i = 0; i < 240; ++i) {
         packed.step();
         objects.step();
-        requireSameState(packed, objects);
+        test::requireSameState(packed, objects);
     }
     REQUIRE(objects.fastPathCounts().steps == 0);
     const auto stepsOnRecords = packed.fastPathCounts().packedSteps;
@@ -366,7 +340,7 @@ TEST_CASE("A push off a sphere's centre from outside the step still turns it wit
     for (int i = 0; i < 60; ++i) {
         planned.step();
         unplanned.step();
-        requireSameState(planned, unplanned);
+        test::requireSameState(planned, unplanned);
     }
     // The push gave it L = r × P = 0.3 m × 2 N·s = 0.6 kg·m²/s about −y, and a sphere keeps turning.
     CHECK(planned.dynamics()[0].orientation != Quat(1, 0, 0, 0));
@@ -404,7 +378,7 @@ TEST_CASE("A step where nothing is awake and nothing moves runs no stage; time s
     CHECK(runsOff >= std::uint64_t(kIdleSteps));  // without the plan every idle step still runs its stages
     CHECK(planned.stepCount() == std::uint64_t(kStepsToSleep + kIdleSteps));
     CHECK(planned.time() == unplanned.time());
-    requireSameState(planned, unplanned);
+    test::requireSameState(planned, unplanned);
 
     // A moving kinematic body can wake a sleeper: then the step is not skipped.
     scene.kinematics = {test::kinematicBox("pusher", Vec3(-5, 0.5, 0), Vec3(1), Vec3(1, 0, 0))};

@@ -1,6 +1,8 @@
 // Helpers shared by the tests: build small scenes in code, run them, watch them.
 #pragma once
 
+#include <catch2/catch.hpp>
+
 #include <string>
 
 #include "collision/narrowphase.hpp"
@@ -88,5 +90,39 @@ inline DynamicObject dynamicBox(const std::string& name, Vec3 position, Vec3 siz
 /// Every integrator, for tests that must hold for all of them.
 inline constexpr IntegratorKind kAllIntegrators[] = {IntegratorKind::ExplicitEuler, IntegratorKind::SymplecticEuler,
                                                      IntegratorKind::Verlet};
+
+/// Every quantity of two Worlds' states, compared with ==: two roads through the same step (the
+/// plan on and off, the fast path and the plain one) must not differ by one bit (== also lets +0
+/// equal −0, the one difference a skipped I⁻¹·0 could make). Contacts' impulses too.
+inline void requireSameState(const World& planned, const World& unplanned) {
+    REQUIRE(planned.time() == unplanned.time());
+    REQUIRE(planned.candidatePairs().size() == unplanned.candidatePairs().size());
+    REQUIRE(planned.contacts().size() == unplanned.contacts().size());
+    REQUIRE(planned.dynamics().size() == unplanned.dynamics().size());
+    for (std::size_t i = 0; i < planned.dynamics().size(); ++i) {
+        const DynamicObject& a = planned.dynamics()[i];
+        const DynamicObject& b = unplanned.dynamics()[i];
+        INFO(a.name << " at step " << planned.stepCount());
+        REQUIRE(a.position == b.position);
+        REQUIRE(a.velocity == b.velocity);
+        REQUIRE(a.orientation == b.orientation);
+        REQUIRE(a.angularVelocity == b.angularVelocity);
+        REQUIRE(a.angularMomentum == b.angularMomentum);
+        REQUIRE(a.asleep == b.asleep);
+    }
+    for (std::size_t i = 0; i < planned.kinematics().size(); ++i) {
+        REQUIRE(planned.kinematics()[i].position == unplanned.kinematics()[i].position);
+        REQUIRE(planned.kinematics()[i].orientation == unplanned.kinematics()[i].orientation);
+    }
+    for (std::size_t i = 0; i < planned.joints().size(); ++i) {
+        REQUIRE(planned.joints()[i].broken == unplanned.joints()[i].broken);
+    }
+    REQUIRE(planned.impulses().size() == unplanned.impulses().size());
+    for (std::size_t c = 0; c < planned.impulses().size(); ++c) {
+        INFO("contact " << c << " at step " << planned.stepCount());
+        REQUIRE(planned.impulses()[c].normalImpulse == unplanned.impulses()[c].normalImpulse);
+        REQUIRE(planned.impulses()[c].frictionImpulse == unplanned.impulses()[c].frictionImpulse);
+    }
+}
 
 }  // namespace stepwise::test
