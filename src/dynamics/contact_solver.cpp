@@ -360,13 +360,11 @@ void warmStartFromLastSubstep(SolverWorkspace& workspace) {
     }
 }
 
-void solveContacts(SolverWorkspace& workspace, const ContactSolverSettings& settings, bool useBias) {
-    for (const std::uint32_t index : workspace.roundContacts) solveContact(workspace, index, settings, useBias);
-    for (const std::uint32_t index : workspace.otherContacts) solveContact(workspace, index, settings, useBias);
-}
+namespace {
 
-void solveContact(SolverWorkspace& workspace, std::uint32_t index, const ContactSolverSettings& settings, bool useBias) {
-    SolverContact& c = workspace.contacts[index];
+/// One contact's rows solved once (solveContact()). Always inlined: a pass is then one loop over
+/// its contacts, with what the settings say worked out once, not a call per contact.
+[[gnu::always_inline]] inline void solveOne(SolverContact& c, SolverWorkspace& workspace, const ContactSolverSettings& settings, bool useBias) {
     // Normal: λ = −K⁻¹·s_m·(v_n + bias) − s_i·λ_acc (softness.hpp).
     const Real separation = currentSeparation(c, workspace);
     Real bias = 0;
@@ -399,6 +397,17 @@ void solveContact(SolverWorkspace& workspace, std::uint32_t index, const Contact
     });
     workspace.bodies[c.bodyA] = a;
     workspace.bodies[c.bodyB] = b;
+}
+
+}  // namespace
+
+void solveContacts(SolverWorkspace& workspace, const ContactSolverSettings& settings, bool useBias) {
+    for (const std::uint32_t index : workspace.roundContacts) solveOne(workspace.contacts[index], workspace, settings, useBias);
+    for (const std::uint32_t index : workspace.otherContacts) solveOne(workspace.contacts[index], workspace, settings, useBias);
+}
+
+void solveContact(SolverWorkspace& workspace, std::uint32_t index, const ContactSolverSettings& settings, bool useBias) {
+    solveOne(workspace.contacts[index], workspace, settings, useBias);
 }
 
 bool applyRestitution(SolverWorkspace& workspace) {

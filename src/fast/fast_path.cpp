@@ -121,8 +121,13 @@ void substepsOnObjects(const FastSubsteps& in, FastWorkspace& fast) {
             });
         }
         timeStage(in.records, Stage::Integrate, [&] {
-            recordPoses(bodies, w);  // the solve measures separations from here
-            recordCentres(w, fast);
+            // The solve measures separations from here. From the second substep on, the last drift
+            // (the bodies with a record) and relax (the kinematic ones) recorded these very poses and
+            // centres, and nothing has moved since: the plain loop records them again to the same bits.
+            if (substep == 0) {
+                recordPoses(bodies, w);
+                recordCentres(w, fast);
+            }
             if (in.integrator == IntegratorKind::Verlet) {  // its forces join bodies anywhere in the array: whole
                 integrateBodies(in.integrator, in.dynamics, hs, in.forces);
                 requireFiniteState(in.dynamics, kEverything, at(Stage::Integrate));
