@@ -49,7 +49,7 @@ void checkLocation(const ConfigDiagnostic& problem, int line, int column, const 
 
 // ------------------------------------------------------------------ message format
 
-TEST_CASE("A diagnostic reads file:line:column: error: field: expected, found; hint", "[config]") {
+TEST_CASE("A diagnostic reads file:line:column: error: field: expected, found, and a hint", "[config]") {
     const ConfigDiagnostic problem = theProblemIn("DynamicObject, Mass=-2\n");
     //                                              1234567890123456789012
     checkLocation(problem, 1, 21, "Mass");
@@ -167,7 +167,7 @@ TEST_CASE("Elasticity must lie in [0, 1] and Friction must not be negative", "[c
                              "edges.scene"));
 }
 
-TEST_CASE("Colour channels must lie in [0, 1]; 0-255 values get a hint", "[config]") {
+TEST_CASE("Colour channels must lie from 0 to 1, and 0-255 values get a hint", "[config]") {
     const ConfigDiagnostic problem = theProblemIn("DynamicObject, Sphere, 1, 200, 0\n");
     //                                              12345678901234567890123456
     checkLocation(problem, 1, 27, "ColorG");

@@ -200,7 +200,7 @@ TEST_CASE("A box hanging half over an edge touches only over its support", "[con
     }
 }
 
-TEST_CASE("Clipping can leave 8 points; the manifold keeps 4 spread out", "[contacts]") {
+TEST_CASE("Clipping can leave 8 points and the manifold keeps 4 spread out", "[contacts]") {
     // A unit cube (B) turned 45° about y on an equal cube (A) that is not
     // turned. A's top square |x|, |z| ≤ ½ (the reference) cuts B's bottom, the
     // diamond |x| + |z| ≤ √2/2, into a regular octagon: its 8 corners lie on a

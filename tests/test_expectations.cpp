@@ -317,7 +317,7 @@ TEST_CASE("A moment the run never reaches fails as not reached", "[expect]") {
     CHECK_THAT(window.result.reason, Contains("not reached"));
 }
 
-TEST_CASE("Asleep reads the body's sleep; unknown names fail at the monitor", "[expect][sleep]") {
+TEST_CASE("Asleep reads the body's sleep, and unknown names fail at the monitor", "[expect][sleep]") {
     // A ball resting on the floor is still from the start: asleep after the
     // time to sleep (0.5 s), never in the air.
     const std::string resting = "World, Duration=2\nCollisionPlane, 0, 0, 0, 0, 1, 0\n"

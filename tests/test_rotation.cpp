@@ -432,7 +432,7 @@ TEST_CASE("The apply-forces stage clears last step's torque", "[rotation]") {
 
 // ------------------------------------------------------------------ measurements and the lesson scene
 
-TEST_CASE("Energy splits into translational and rotational; L about the origin adds x cross m v", "[rotation]") {
+TEST_CASE("Energy splits into translational and rotational, and L about the origin adds x cross m v", "[rotation]") {
     // One box moving and spinning: m = 1 kg at x = (1, 0, 0) with v = (0, 2, 0), ω = (0, 0, 3) about
     // its body z axis (I_z = 5/12): translational ½·1·4 = 2 J, rotational ½·(5/12)·9 = 15/8 J,
     // L_O = x × m·v + I_z·ω = (0, 0, 2) + (0, 0, 5/4) kg·m²/s.

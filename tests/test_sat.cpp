@@ -111,7 +111,7 @@ TEST_CASE("Boxes apart only along an edge-edge axis do not collide", "[sat]") {
     CHECK_FALSE(collideBoxBox(b, a, m));
 }
 
-TEST_CASE("Boxes touching at distance 0 collide with depth 0; a gap gives speculative points up to 1 cm", "[sat]") {
+TEST_CASE("Boxes touching at distance 0 collide with depth 0, and a gap gives speculative points up to 1 cm", "[sat]") {
     // A unit cube on a 4 x 1 x 4 slab whose top is y = 0.5: A's bottom at 1.0 − 0.5 = 0.5.
     const Geometry slab = box(Vec3(0), Vec3(2, 0.5, 2));
     ContactManifold m;

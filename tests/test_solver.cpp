@@ -400,7 +400,7 @@ TEST_CASE("A round contact's computed rows are J: the point-impulse formulas for
     CHECK(b1.angularVelocity == b.angularVelocity);
 }
 
-TEST_CASE("Ball-ball and ball-plane contacts have computed rows; a box's or a kinematic body's are stored", "[solver]") {
+TEST_CASE("Ball-ball and ball-plane contacts have computed rows, and a box's or a kinematic body's are stored", "[solver]") {
     Scene scene = parseScene(
         "World, Solver=SequentialImpulse, Gravity=(0,-9.81,0), TimeStep=1/60\n"
         "CollisionPlane, Position=(0,0,0), Normal=(0,1,0)\n"

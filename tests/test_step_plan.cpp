@@ -346,7 +346,7 @@ TEST_CASE("A push off a sphere's centre from outside the step still turns it wit
     CHECK(planned.dynamics()[0].orientation != Quat(1, 0, 0, 0));
 }
 
-TEST_CASE("A step where nothing is awake and nothing moves runs no stage; time still advances", "[plan]") {
+TEST_CASE("A step where nothing is awake and nothing moves runs no stage, and time still advances", "[plan]") {
     Scene scene = test::emptyScene();
     scene.planes = {test::ground()};
     scene.dynamics = {test::sphere("ball", Vec3(0, Real(0.5), 0), Vec3(0), Real(0.5), 1, 0, Real(0.5))};
@@ -401,7 +401,7 @@ TEST_CASE("The explanation names every stage with its decision", "[plan]") {
     CHECK(text.find("rotation") != std::string::npos);
 }
 
-TEST_CASE("stepwise run --explain prints the plan; with --steps 0 nothing else", "[plan][cli]") {
+TEST_CASE("stepwise run --explain prints the plan, and with --steps 0 nothing else", "[plan][cli]") {
     const std::string cli = std::string("'") + STEPWISE_CLI_PATH + "' run '" + STEPWISE_SOURCE_DIR + "/config/";
     const test::CommandResult only = test::shell(cli + "reference_kepler_circular.scene' --explain --steps 0");
     CHECK(only.exitCode == 0);
