@@ -50,6 +50,17 @@ TEST_CASE("With no arguments stepwise prints its usage", "[cli]") {
     CHECK_THAT(r.output, Contains("Usage:") && Contains("stepwise run") && Contains("stepwise check"));
 }
 
+TEST_CASE("stepwise view --help prints the view command's usage and the window's controls", "[cli][viewer]") {
+    // Whether or not the viewer was built into this program: --help opens no window.
+    for (const char* flag : {"--help", "-h"}) {
+        const Result r = runStepwise(std::string("view ") + flag);
+        INFO(flag << ": " << r.output);
+        CHECK(r.exitCode == 0);
+        CHECK_THAT(r.output, Contains("stepwise view [FILE]") && Contains("--screenshot PATH"));
+        CHECK_THAT(r.output, Contains("In the window:") && Contains("Space   pause / resume") && Contains("Esc, Q  quit"));
+    }
+}
+
 TEST_CASE("Unknown commands and options are errors with exit code 2", "[cli]") {
     CHECK(runStepwise("fly").exitCode == 2);
     const Result r = runStepwise("run --speed 3");

@@ -44,6 +44,9 @@ int runCommand(const RunOptions& options);
 /// "nothing was loaded" to stderr; nullptr when it did not load (`run`, `check`, `bench`, `raycast`).
 std::unique_ptr<Scene> loadOrReport(const std::string& path);
 
+/// @brief What `stepwise view --help` prints: the command's usage, then the window's controls.
+std::string viewUsageText();
+
 /// @brief Parses the arguments after `view` (the options are the viewer's). @throws UsageError.
 viewer::ViewOptions parseViewOptions(const std::vector<std::string>& args, const std::string& defaultScene);
 

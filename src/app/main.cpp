@@ -30,10 +30,14 @@ std::string defaultScenePath() {
 /// `stepwise view`: the viewer when it was built, otherwise how to build it.
 int viewCommand(const std::vector<std::string>& args) {
     using namespace stepwise::cli;
+    const stepwise::viewer::ViewOptions options = parseViewOptions(args, defaultScenePath());
+    if (options.help) {
+        std::fputs(viewUsageText().c_str(), stdout);
+        return stepwise::kExitOk;
+    }
 #ifdef STEPWISE_HAVE_VIEWER
-    return stepwise::viewer::runViewer(parseViewOptions(args, defaultScenePath()));
+    return stepwise::viewer::runViewer(options);
 #else
-    (void)args;
     std::fprintf(stderr,
                  "stepwise: the viewer was not built into this program (CMake option STEPWISE_VIEWER is OFF,\n"
                  "  or freeglut/OpenGL were not found when it was configured). To build it, install the\n"

@@ -9,6 +9,19 @@
 
 namespace stepwise::cli {
 
+/// `stepwise view`'s lines of the usage text; `stepwise view --help` prints them too.
+#define VIEW_USAGE                                                                              \
+    "  stepwise view [FILE] [--size WxH] [--log-events PATH]\n"                               \
+    "      Open a window onto the scene (H in the window lists the controls);\n"              \
+    "      --log-events writes a line per mouse pick, push and release to PATH.\n"            \
+    "  stepwise view [FILE] --screenshot PATH [--at T] [--size WxH] [--keys KEYS]\n"          \
+    "                [--dump-state PATH] [--stage K]\n"                                      \
+    "      Simulate to T seconds (default 0) as 'run --duration T' does, draw one\n"         \
+    "      frame into the PNG file PATH and exit; --keys presses window keys first\n"         \
+    "      (e.g. CV: contacts and velocities); --dump-state writes the state drawn\n"        \
+    "      in the CSV format of --csv; --stage K draws the state after the K-th\n"           \
+    "      stage run of the next step (the S key). Without a screen, prefix 'xvfb-run -a'.\n"
+
 const char* usageText() {
     return "Stepwise - a rigid-body physics engine for teaching\n"
            "\n"
@@ -27,16 +40,7 @@ const char* usageText() {
            "                    and why (with --steps 0, only the plan)\n"
            "      --threads N   narrowphase threads, overriding the scene's World Threads\n"
            "                    (0: one per hardware thread); the results do not change\n"
-           "  stepwise view [FILE] [--size WxH] [--log-events PATH]\n"
-           "      Open a window onto the scene (H in the window lists the controls);\n"
-           "      --log-events writes a line per mouse pick, push and release to PATH.\n"
-           "  stepwise view [FILE] --screenshot PATH [--at T] [--size WxH] [--keys KEYS]\n"
-           "                [--dump-state PATH] [--stage K]\n"
-           "      Simulate to T seconds (default 0) as 'run --duration T' does, draw one\n"
-           "      frame into the PNG file PATH and exit; --keys presses window keys first\n"
-           "      (e.g. CV: contacts and velocities); --dump-state writes the state drawn\n"
-           "      in the CSV format of --csv; --stage K draws the state after the K-th\n"
-           "      stage run of the next step (the S key). Without a screen, prefix 'xvfb-run -a'.\n"
+           VIEW_USAGE
            "      A scene with Expect records ends with a table: each expectation, PASS or\n"
            "      FAIL, and the value measured.\n"
            "  stepwise check FILE\n"
@@ -128,6 +132,12 @@ void parseSize(const std::string& text, int& width, int& height) {
 
 }  // namespace
 
+std::string viewUsageText() {
+    std::string text = "Usage:\n" VIEW_USAGE "\nIn the window:\n";
+    for (const char* line : viewer::kViewerControls) text += std::string("  ") + line + "\n";
+    return text;
+}
+
 viewer::ViewOptions parseViewOptions(const std::vector<std::string>& args, const std::string& defaultScene) {
     viewer::ViewOptions options;
     bool sceneGiven = false;
@@ -138,7 +148,9 @@ viewer::ViewOptions parseViewOptions(const std::vector<std::string>& args, const
             if (i + 1 >= args.size()) throw UsageError(arg + " needs a value");
             return args[++i];
         };
-        if (arg == "--screenshot") {
+        if (arg == "--help" || arg == "-h") {
+            options.help = true;
+        } else if (arg == "--screenshot") {
             options.screenshotPath = value();
         } else if (arg == "--at") {
             const std::string& text = value();

@@ -1,10 +1,12 @@
 /// @file overlay.cpp
 /// @brief The 2D text layer, drawn with GLUT's bitmap font in an orthographic projection.
 #include "viewer/overlay.hpp"
+#include "viewer/view_options.hpp"
 
 #include <GL/freeglut.h>
 
 #include <algorithm>
+#include <iterator>
 #include <cstdio>
 #include <filesystem>
 #include <sstream>
@@ -121,31 +123,7 @@ std::vector<std::string> walkthroughLines(const Simulation& simulation) {
 
 }  // namespace
 
-std::vector<std::string> helpLines() {
-    return {
-        "Controls (H hides this)",
-        "  mouse, left drag      orbit the camera around its target",
-        "  mouse, middle drag    pan (or Shift + left drag)",
-        "  wheel / right drag    zoom (or Ctrl + left drag)",
-        "  left button on body   push it at that point (a force along the mouse ray)",
-        "  right button on body  pull it at that point (towards the camera)",
-        "  Space   pause / resume",
-        "  N       one step (pauses); during S, the end of the step",
-        "  S       one stage: the state after the next stage of the step, and what it produced",
-        "  Shift+S the same, skipping the substeps between the first and the last",
-        "  + / -   time scale x2 / x0.5 (wall-clock speed; the time step stays the scene's)",
-        "  R       reload the scene file (a broken file shows its errors, the last good scene stays)",
-        "  C       contact points and normals",
-        "  V       velocity (cyan) and angular velocity (magenta) vectors",
-        "  B       bounding boxes; the broadphase's candidate pairs in yellow",
-        "  I       islands: awake bodies coloured by island, sleeping bodies in pale blue-grey",
-        "  F       frame the scene again (reset the camera)",
-        "  O       hide / show the on-screen text",
-        "  P       save a picture of the window (stepwise-SCENE-stepN.png, current directory)",
-        "  Esc, Q  quit",
-        "Kinematic bodies wear diagonal stripes; joints are drawn as lines to their anchors.",
-    };
-}
+std::vector<std::string> helpLines() { return {std::begin(kViewerControls), std::end(kViewerControls)}; }
 
 std::vector<std::string> hudLines(const Simulation& simulation, const OverlayState& state) {
     const World& world = simulation.world();
