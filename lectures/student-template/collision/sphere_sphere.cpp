@@ -10,8 +10,8 @@
 /// With u = b.centre - a.centre (lecture 3, "1. Where the contact comes from"):
 ///
 ///     no contact when |u| > r_A + r_B + kTouchTolerance: return false
-///     out.normal = u / |u|                from A to B (any fixed direction,
-///                                         e.g. (0, 1, 0), when |u| < kCoincidentCentres)
+///     out.normal = u / |u|                from A to B (world up, (0, 1, 0),
+///                                         when |u| < kCoincidentCentres: no direction)
 ///     depth      = r_A + r_B - |u|
 ///     point      = c_A + n (r_A - depth/2)   the middle of the overlap
 ///
