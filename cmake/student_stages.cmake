@@ -8,7 +8,8 @@
 # instead of src/integrators/symplectic_euler.cpp, and everything built from
 # the engine (the stepwise program, the tests) uses it. Headers are not
 # replaced: they are the interface the rest of the engine calls, so a
-# student's file implements the same functions (lectures/student-template/).
+# student's file implements the same functions (lectures/student-template/
+# has one template per stage the lectures ask students to write).
 # A file that matches no engine file stops the configuration, so a typo in a
 # file name cannot silently leave the engine's own stage in place.
 
@@ -23,7 +24,7 @@ function(stepwise_swap_in_student_files sources_var)
   get_filename_component(student_dir "${STEPWISE_STUDENT_DIR}" ABSOLUTE)
   if(NOT IS_DIRECTORY "${student_dir}")
     message(FATAL_ERROR "STEPWISE_STUDENT_DIR: '${student_dir}' is not a folder "
-                        "(copy lectures/student-template there to start)")
+                        "(copy a template from lectures/student-template there to start)")
   endif()
   file(GLOB_RECURSE student_files RELATIVE "${student_dir}" CONFIGURE_DEPENDS "${student_dir}/*.cpp")
   if(NOT student_files)

@@ -1,0 +1,46 @@
+/// @file sphere_plane.cpp
+/// @brief YOUR sphere-plane test (lecture 3): a student template (lectures/student-template/README.md).
+///
+/// Copied to student/collision/sphere_plane.cpp, it replaces
+/// src/collision/sphere_plane.cpp in the student preset's build. It defines
+/// the pair test src/collision/narrowphase.hpp declares:
+///
+///     bool collideSpherePlane(const Geometry& sphere, const Geometry& plane, ContactManifold& out);
+///
+/// The plane passes through plane.centre with unit normal n = plane.normal
+/// (out of the solid side). With c = sphere.centre and r = sphere.radius
+/// (lecture 3, "1. Where the contact comes from"):
+///
+///     s = (c - plane.centre) . n          signed distance of the centre
+///     no contact when s > r + kTouchTolerance: return false
+///     out.normal = -n                     from the sphere (A) to the plane (B)
+///     depth      = r - s
+///     point      = c - n r                the sphere's own deepest point
+///
+/// Start with out.pointCount = 0, add the point with out.add(point, depth, 0)
+/// and return true. Until you write it, the test stops with
+/// "student stage not written yet: stepwise::collideSpherePlane".
+/// Test it: ctest --preset student -L sphere-plane
+#include <cmath>
+
+#include "collision/narrowphase.hpp"
+#include "core/student_todo.hpp"
+
+namespace stepwise {
+
+bool collideSpherePlane(const Geometry& sphere, const Geometry& plane, ContactManifold& out) {
+    // ==== YOUR CODE BEGINS: lecture 3, "1. Where the contact comes from" ====
+    const Real signedDistance = glm::dot(sphere.centre - plane.centre, plane.normal);
+    if (signedDistance > sphere.radius + kTouchTolerance) return false;
+
+    out.normal = -plane.normal;
+    const Real depth = sphere.radius - signedDistance;
+    // The sphere's own deepest point, not the middle of the overlap: friction
+    // acting there has the lever arm r exactly, however deep the step sank it.
+    out.pointCount = 0;
+    out.add(sphere.centre - plane.normal * sphere.radius, depth, 0);
+    return true;
+    // ==== YOUR CODE ENDS ====
+}
+
+}  // namespace stepwise

@@ -1,0 +1,48 @@
+/// @file apply_forces.cpp
+/// @brief YOUR stage 1, apply forces (lecture 1): a student template (lectures/student-template/README.md).
+///
+/// Copied to student/forces/apply_forces.cpp, it replaces
+/// src/forces/apply_forces.cpp in the student preset's build. It defines the
+/// functions src/forces/apply_forces.hpp declares; you write the first:
+///
+///     void applyUniformForces(std::span<DynamicObject> bodies, const Vec3& gravity);
+///
+/// Newton's second law with F = m g + m a_obj gives, for every body
+/// (lecture 1, "The math", where the acceleration comes from):
+///
+///     a   = g + a_obj     (body.acceleration; a_obj is body.constantAcceleration)
+///     tau = 0             (body.torque: a uniform field pulls at the centre of mass)
+///
+/// Both are written from nothing every step: springs and attractors add to
+/// them afterwards (SceneForces below, given). Until you write it, the stage
+/// stops with "student stage not written yet: stepwise::applyUniformForces".
+/// Test it: ctest --preset student -L forces
+#include "core/student_todo.hpp"
+#include "forces/apply_forces.hpp"
+
+namespace stepwise {
+
+void applyUniformForces(std::span<DynamicObject> bodies, const Vec3& gravity) {
+    for (DynamicObject& body : bodies) {
+        // ==== YOUR CODE BEGINS: lecture 1, "The math" (where the acceleration comes from) ====
+        body.acceleration = gravity + body.constantAcceleration;
+        // A uniform field pulls every mass element alike, so it acts at the
+        // centre of mass and has no torque about it. Torques are recomputed
+        // from nothing every step, like accelerations: springs (spring.cpp)
+        // add theirs after this.
+        body.torque = Vec3(0);
+        // ==== YOUR CODE ENDS ====
+    }
+}
+
+AccelerationFunction uniformForces(const Vec3& gravity) {
+    return [gravity](std::span<DynamicObject> bodies) { applyUniformForces(bodies, gravity); };
+}
+
+void SceneForces::operator()(std::span<DynamicObject> bodies) const {
+    applyUniformForces(bodies, gravity);  // sets a = g + a_obj and tau = 0
+    applySprings(bodies, springs);        // adds F/m and r x F at each anchor (spring.cpp)
+    applyAttractors(bodies, attractors);  // adds -mu r/|r|^3 (attractor.cpp)
+}
+
+}  // namespace stepwise
