@@ -2,6 +2,7 @@
 /// @brief Entry point of the `stepwise` program: picks the command.
 #include <cstdio>
 #include <cstring>
+#include <exception>
 #include <string>
 #include <vector>
 
@@ -80,5 +81,10 @@ int main(int argc, char** argv) {
     } catch (const UsageError& error) {
         std::fprintf(stderr, "stepwise: error: %s\nRun 'stepwise --help' for usage.\n", error.what());
         return stepwise::kExitUsageError;
+    } catch (const std::exception& error) {
+        // Whatever a command did not report itself (an unwritten student stage, memory that ran out):
+        // one line naming it, never an abort. The commands report the simulation's own errors.
+        std::fprintf(stderr, "stepwise: error: %s\n", error.what());
+        return stepwise::kExitSimulationError;
     }
 }
