@@ -8,7 +8,9 @@
 set breakpoint pending on
 # stages 6 and 7, every substep: a solve pass (useBias = true), then a relax pass (false),
 # which solves these balls' normal rows only; compare workspace.contacts[i].tangentImpulse
-# before and after each
+# before and after each. solveContacts is the plain path's pass: the debug build takes the
+# plain path; on another build add FastPath=false to the scene's World line, or this is not hit
+# (lectures/08-constraint-solver.md, section 2).
 break stepwise::solveContacts
 # stage 8: the step's impulses kept for the next step's warm start
 break stepwise::storeContactImpulses
