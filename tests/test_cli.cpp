@@ -2,12 +2,14 @@
 // CSV output and error messages. Tag: [cli].
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "command_runner.hpp"
@@ -224,4 +226,61 @@ TEST_CASE("bench broadphase runs every broadphase on a scene and ranks them", "[
                              Contains("Grid") && Contains("40 steps, 10 checked") && Contains("Auto would choose"));
     CHECK(runStepwise("bench broadphase").exitCode == 2);
     CHECK(runStepwise("bench narrowphase " + scene.quoted()).exitCode == 2);
+}
+
+namespace {
+
+/// Every line of the CSV file at @p path has the 15 fields of the header: no row cut short.
+std::size_t wholeRowsIn(const std::string& path) {
+    std::ifstream file(path);
+    std::string line;
+    std::size_t rows = 0;
+    while (std::getline(file, line)) {
+        INFO("row " << rows << ": " << line);
+        REQUIRE(std::count(line.begin(), line.end(), ',') == 14);
+        ++rows;
+    }
+    return rows;
+}
+
+}  // namespace
+
+TEST_CASE("run stopped by SIGINT or SIGTERM keeps its CSV whole, prints what ran, and exits 128 + the signal", "[cli]") {
+    const std::string csv = (std::filesystem::temp_directory_path() / "stepwise-interrupted.csv").string();
+    for (const auto& [signal, code] : {std::pair<std::string, int>{"INT", 130}, std::pair<std::string, int>{"TERM", 143}}) {
+        INFO("SIG" << signal);
+        std::filesystem::remove(csv);
+        // A run far longer than the test: 1000 balls for 10^8 steps, stopped after half a second.
+        const Result r = stepwise::test::shell(std::string("{ '") + STEPWISE_CLI_PATH +
+                                               "' run config/bench_sphere_rain_1k.scene --steps 100000000 --csv '" + csv +
+                                               "' > /dev/null & pid=$!; sleep 1; kill -" + signal +
+                                               " $pid; wait $pid; echo \"exit $?\"; }");
+        CHECK_THAT(r.output, Contains("stopped by signal") && Contains("exit " + std::to_string(code)));
+        const std::size_t rows = wholeRowsIn(csv);
+        CHECK(rows > 1001);  // the header, the start, and at least one step's 1000 balls, all whole
+        CHECK((rows - 1) % 1000 == 0);
+    }
+    std::filesystem::remove(csv);
+}
+
+TEST_CASE("A write that fails is an error with the path and the reason, never a silent exit 0", "[cli]") {
+    if (!std::filesystem::exists("/dev/full")) {
+        WARN("skipped: no /dev/full on this system");
+        return;
+    }
+    Result r = runStepwise("run config/lesson03_bounce.scene --csv /dev/full");
+    CHECK(r.exitCode == 1);
+    CHECK_THAT(r.output, Contains("cannot write '/dev/full': No space left on device"));
+    CHECK_THAT(r.output, !Contains("Trajectory written"));
+    r = runStepwise("generate sphere-rain --count 10 --out /dev/full");
+    CHECK(r.exitCode == 1);
+    CHECK_THAT(r.output, Contains("cannot write '/dev/full'"));
+    for (const char* command : {"check config/default.scene", "run config/lesson03_bounce.scene",
+                                "generate sphere-rain --count 10 --out -"}) {
+        INFO(command);
+        // Standard output into the full device, the messages (standard error) to the test
+        r = stepwise::test::shell(std::string("{ '") + STEPWISE_CLI_PATH + "' " + command + " > /dev/full; }");
+        CHECK(r.exitCode == 1);
+        CHECK_THAT(r.output, Contains("cannot write standard output"));
+    }
 }

@@ -18,6 +18,7 @@
 #include "config/spelling.hpp"
 #include "core/errors.hpp"
 #include "io/broadphase_table.hpp"
+#include "io/output_file.hpp"
 #include "world/world.hpp"
 
 namespace stepwise::cli {
@@ -185,14 +186,17 @@ int generateCommand(const std::vector<std::string>& args) {
     options.scene = *scene;
 
     const std::string text = generateSceneText(options);
-    std::FILE* out = outPath == "-" ? stdout : std::fopen(outPath.c_str(), "w");
-    if (out == nullptr) {
-        std::fprintf(stderr, "stepwise: error: cannot write '%s'\n", outPath.c_str());
+    OutputFile out(outPath);  // "-": standard output
+    if (!out.ok()) {
+        std::fprintf(stderr, "stepwise: error: %s\n", out.error().c_str());
         return kExitUsageError;
     }
-    std::fwrite(text.data(), 1, text.size(), out);
-    if (out != stdout) {
-        std::fclose(out);
+    std::fwrite(text.data(), 1, text.size(), out.file());
+    if (const std::string error = out.close(); !error.empty()) {
+        std::fprintf(stderr, "stepwise: error: %s\n", error.c_str());
+        return kExitSimulationError;
+    }
+    if (outPath != "-") {
         std::printf("Wrote %s, %zu bodies, seed %llu, to %s\n", toString(options.scene), options.count,
                     static_cast<unsigned long long>(options.seed), outPath.c_str());
     }

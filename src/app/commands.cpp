@@ -6,11 +6,14 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "app/cli.hpp"
+#include "app/interrupt.hpp"
 #include "config/scene_loader.hpp"
 #include "core/errors.hpp"
+#include "io/output_file.hpp"
 #include "io/trajectory_csv.hpp"
 #include "world/measurements.hpp"
 #include "world/world.hpp"
@@ -254,13 +257,15 @@ int runCommand(const RunOptions& options) {
     // Round to the nearest whole step: 10 s at 1/60 s is 600 steps, not 599.99.
     const std::uint64_t steps = options.steps.value_or(static_cast<std::uint64_t>(std::llround(duration / h)));
 
+    std::optional<OutputFile> csvFile;
     std::FILE* csv = nullptr;
     if (options.csvPath) {
-        csv = std::fopen(options.csvPath->c_str(), "w");
-        if (!csv) {
-            std::fprintf(stderr, "stepwise: error: cannot write CSV file '%s'\n", options.csvPath->c_str());
+        csvFile.emplace(*options.csvPath);
+        if (!csvFile->ok()) {
+            std::fprintf(stderr, "stepwise: error: %s\n", csvFile->error().c_str());
             return kExitUsageError;
         }
+        csv = csvFile->file();
         writeTrajectoryHeader(csv);
         writeTrajectoryRows(csv, world);
     }
@@ -271,6 +276,8 @@ int runCommand(const RunOptions& options) {
     const auto start = Clock::now();
     int exitCode = kExitOk;
     {
+        // Ctrl-C or kill: stop between two steps, with every CSV row whole, and report what ran (interrupt.hpp).
+        const InterruptGuard interrupts;
         Progress progress(steps);
         try {
             for (std::uint64_t i = 0; i < steps; ++i) {
@@ -278,14 +285,22 @@ int runCommand(const RunOptions& options) {
                 monitor.observe(world);
                 if (csv && world.stepCount() % options.every == 0) writeTrajectoryRows(csv, world);
                 progress.update(world.stepCount(), double(world.time()));
+                if (csvFile && csvFile->failed()) break;  // a full disk: no use going on
+                if (InterruptGuard::signalReceived() != 0) break;
             }
         } catch (const SimulationError& error) {
             std::fprintf(stderr, "stepwise: simulation failed: %s\n", error.what());
             exitCode = kExitSimulationError;
         }
+        if (const int signal = InterruptGuard::signalReceived(); signal != 0) {
+            std::fprintf(stderr, "stepwise: stopped by signal %d after %llu of %llu steps\n", signal,
+                         static_cast<unsigned long long>(world.stepCount()), static_cast<unsigned long long>(steps));
+            exitCode = exitCodeForSignal(signal);
+        }
     }
     const double wall = std::chrono::duration<double>(Clock::now() - start).count();
-    if (csv) std::fclose(csv);
+    std::string csvError;
+    if (csvFile) csvError = csvFile->close();
 
     std::printf("Simulated %.6g s in %llu steps\n", double(world.time()),
                 static_cast<unsigned long long>(world.stepCount()));
@@ -295,7 +310,11 @@ int runCommand(const RunOptions& options) {
     printConservation(energyBefore, energyOf(world), momentumBefore, linearMomentumOf(world), angularMomentumBefore,
                       angularMomentumOf(world));
     printStageTimes(world, wall);
-    if (csv) std::printf("\nTrajectory written to %s\n", options.csvPath->c_str());
+    if (csvFile && csvError.empty()) std::printf("\nTrajectory written to %s\n", options.csvPath->c_str());
+    if (!csvError.empty()) {
+        std::fprintf(stderr, "stepwise: error: %s; the trajectory is incomplete\n", csvError.c_str());
+        if (exitCode == kExitOk || exitCode == kExitExpectationFailed) exitCode = kExitSimulationError;
+    }
     if (!expectations.empty() && !printExpectationTable(expectations, monitor.results(world)) && exitCode == kExitOk) {
         exitCode = kExitExpectationFailed;
     }

@@ -1,5 +1,6 @@
 /// @file main.cpp
 /// @brief Entry point of the `stepwise` program: picks the command.
+#include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <exception>
@@ -50,13 +51,11 @@ int viewCommand(const std::vector<std::string>& args) {
 
 }  // namespace
 
-/// @brief Runs the command named by the first argument (`run`, `check`, `view`, `grade`, `raycast`, `generate`,
-/// `bench`, `trace`, `--help`).
-/// @return the exit code: 0 success, 1 simulation failure, 2 bad command line or scene,
-///         3 an expectation failed (`run`) or a graded file did not pass (`grade`).
-int main(int argc, char** argv) {
+namespace {
+
+/// The command named by the first of @p args, run; its exit code.
+int runCommandLine(const std::vector<std::string>& args) {
     using namespace stepwise::cli;
-    const std::vector<std::string> args(argv + 1, argv + argc);
     if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
         std::fputs(usageText(), stdout);
         return stepwise::kExitOk;
@@ -87,4 +86,21 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "stepwise: error: %s\n", error.what());
         return stepwise::kExitSimulationError;
     }
+}
+
+}  // namespace
+
+/// @brief Runs the command named by the first argument (`run`, `check`, `view`, `grade`, `raycast`, `generate`,
+/// `bench`, `trace`, `--help`).
+/// @return the exit code: 0 success, 1 simulation failure, 2 bad command line or scene,
+///         3 an expectation failed (`run`) or a graded file did not pass (`grade`).
+int main(int argc, char** argv) {
+    const int code = runCommandLine(std::vector<std::string>(argv + 1, argv + argc));
+    // What the command printed must have reached standard output (a full disk, a closed pipe): say so.
+    errno = 0;
+    if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
+        std::fprintf(stderr, "stepwise: error: cannot write standard output: %s\n", std::strerror(errno ? errno : EIO));
+        return code == stepwise::kExitOk ? stepwise::kExitSimulationError : code;
+    }
+    return code;
 }
