@@ -1088,9 +1088,9 @@ TEST_CASE("In the window, the mouse picks, highlights, pushes and pulls the body
 }
 
 TEST_CASE("I shows sleeping bodies in the sleeping colour instead of their own", "[viewer][xvfb][sleep]") {
-    // The 100:1 stack with Sleep=true is still from the start and sleeps after
-    // TimeToSleep (0.5 s); at 2 s the heavy box, red in the scene, must be drawn
-    // in kSleepingColor (blue above red) with I, and in its red without.
+    // The 100:1 stack with Sleep=true settles and then sleeps, once it has been at rest and
+    // in equilibrium for TimeToSleep (islands.hpp); half a second after that the heavy box,
+    // red in the scene, must be drawn in kSleepingColor (blue above red) with I, and in its red without.
     if (!canTakeScreenshots()) return;
     const TempFile scene("sleeping.scene");
     {
@@ -1102,9 +1102,15 @@ TEST_CASE("I shows sleeping bodies in the sleeping colour instead of their own",
         contents.replace(contents.find(off), off.size(), "Sleep=true");
         std::ofstream(scene.path) << contents;
     }
+    // When the heavy box falls asleep (within 20 s), and half a second later, in whole steps.
+    const Real at = [&] {
+        World w(loadSceneFile(scene.path.string()));
+        while (!w.findDynamic("heavy")->asleep && w.time() < 20) w.step();
+        return std::ceil((w.time() + Real(0.5)) * 10) / 10;
+    }();
     const World world = [&] {
         World w(loadSceneFile(scene.path.string()));
-        while (w.time() < 2 - 1e-9) w.step();
+        while (w.time() < at - 1e-9) w.step();
         return w;
     }();
     const DynamicObject& heavy = *world.findDynamic("heavy");
@@ -1114,7 +1120,7 @@ TEST_CASE("I shows sleeping bodies in the sleeping colour instead of their own",
     auto shoot = [&](const std::string& keys) {
         const TempFile png("sleep-" + keys + ".png");
         const Result shot = viewUnderXvfb(scene.quoted() + " --screenshot " + png.quoted() +
-                                          " --at 2 --size 320x240 --keys " + keys);
+                                          " --at " + std::to_string(at) + " --size 320x240 --keys " + keys);
         INFO(shot.output);
         REQUIRE(shot.exitCode == 0);
         const Image image = decodePng(readBytes(png.path));

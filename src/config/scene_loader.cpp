@@ -321,6 +321,8 @@ private:
         settings.sleeping = values.choice<bool>("Sleep", kBooleanChoices, defaults.sleeping);
         settings.sleepLinearSpeed = values.number("SleepLinearSpeed", defaults.sleepLinearSpeed);
         settings.sleepAngularSpeed = values.number("SleepAngularSpeed", defaults.sleepAngularSpeed);
+        settings.sleepLinearAcceleration = values.number("SleepLinearAcceleration", defaults.sleepLinearAcceleration);
+        settings.sleepAngularAcceleration = values.number("SleepAngularAcceleration", defaults.sleepAngularAcceleration);
         settings.timeToSleep = values.number("TimeToSleep", defaults.timeToSleep);
         settings.stepPlan = values.choice<bool>("StepPlan", kBooleanChoices, defaults.stepPlan);
         settings.fastPath = values.choice<bool>("FastPath", kBooleanChoices, defaults.fastPath);

@@ -115,6 +115,8 @@ constexpr FieldSpec kWorldFields[] = {
     {"Sleep",               FieldKind::Boolean, kNamedOnly, Range::Any},
     {"SleepLinearSpeed",    FieldKind::Number,  kNamedOnly, Range::NonNegative},      // m/s
     {"SleepAngularSpeed",   FieldKind::Number,  kNamedOnly, Range::NonNegative},      // rad/s
+    {"SleepLinearAcceleration",  FieldKind::Number, kNamedOnly, Range::NonNegative}, // m/s²
+    {"SleepAngularAcceleration", FieldKind::Number, kNamedOnly, Range::NonNegative}, // rad/s²
     {"TimeToSleep",         FieldKind::Number,  kNamedOnly, Range::Positive, kTimeHint}, // s
     {"Broadphase",          FieldKind::Broadphase, kNamedOnly, Range::Any},       // docs/broadphase.md
     {"StepPlan",            FieldKind::Boolean, kNamedOnly, Range::Any},          // src/world/step_plan.hpp

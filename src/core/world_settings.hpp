@@ -82,6 +82,15 @@ inline constexpr Real kDefaultJointDampingRatio = 2;
 inline constexpr Real kDefaultSleepLinearSpeed = Real(0.05);
 /// @brief A body turning slower than this, rad/s (≈ 2.9°/s), counts as still.
 inline constexpr Real kDefaultSleepAngularSpeed = Real(0.05);
+/// @brief A body whose velocity changed by less than this over a step, divided by the step,
+/// m/s², is in equilibrium: the forces and constraint impulses on it balance. A body that is
+/// slow but not balanced is at the turning point of an oscillation, and would move on if
+/// left awake. A harmonic oscillator of angular frequency ω whose amplitude A passes this test
+/// at its turning point has ω²·A below it: 0.01 m/s² keeps a 1 kg ball on a 100 N/m spring
+/// (ω = 10 rad/s) awake until it is within 0.1 mm of its rest position.
+inline constexpr Real kDefaultSleepLinearAcceleration = Real(0.01);
+/// @brief The same for the angular velocity, rad/s².
+inline constexpr Real kDefaultSleepAngularAcceleration = Real(0.01);
 /// @brief An island whose bodies have all been still this long, s, falls asleep.
 inline constexpr Real kDefaultTimeToSleep = Real(0.5);
 
@@ -127,6 +136,8 @@ struct WorldSettings {
     bool sleeping = true;                              ///< Islands at rest fall asleep (sequential impulse only).
     Real sleepLinearSpeed = kDefaultSleepLinearSpeed;  ///< Still below this speed, m/s.
     Real sleepAngularSpeed = kDefaultSleepAngularSpeed; ///< Still below this angular speed, rad/s.
+    Real sleepLinearAcceleration = kDefaultSleepLinearAcceleration;   ///< Still only if |Δv|/h is below this, m/s².
+    Real sleepAngularAcceleration = kDefaultSleepAngularAcceleration; ///< Still only if |Δω|/h is below this, rad/s².
     Real timeToSleep = kDefaultTimeToSleep;            ///< Still for this long → asleep, s.
     BroadphaseKind broadphase = BroadphaseKind::Auto;  ///< Which broadphase finds the candidate pairs.
     bool stepPlan = true;                              ///< Skip the stages the scene cannot need (src/world/step_plan.hpp).

@@ -101,18 +101,37 @@ std::size_t updateSleep(const BodySet& bodies, std::span<const Contact> contacts
         if (link.b != kWorldAnchor) join(workspace.parent, link.a, link.b);
     }
 
-    // 2. Still times (squared speeds: no square root per body), and each island's least.
+    // 2. Still times (squared speeds: no square root per body), and each island's least. Still is
+    //    slow and in equilibrium: the step changed the velocity by less than the acceleration limit
+    //    times h. A body with no velocity from the last step (the first step) is not yet still.
+    const bool known = workspace.lastVelocity.size() == n;
+    workspace.lastVelocity.resize(n, Vec3(0));
+    workspace.lastAngularVelocity.resize(n, Vec3(0));
+    workspace.linearAcceleration.resize(n, Real(0));
+    workspace.angularAcceleration.resize(n, Real(0));
+    const Real change2 = settings.sleepLinearAcceleration * h * settings.sleepLinearAcceleration * h;
+    const Real turnChange2 = settings.sleepAngularAcceleration * h * settings.sleepAngularAcceleration * h;
     workspace.islandStillTime.assign(n, std::numeric_limits<Real>::max());
     std::size_t asleep = 0;
     for (std::uint32_t i = 0; i < n; ++i) {
         DynamicObject& body = dynamics[i];
+        Vec3& lastVelocity = workspace.lastVelocity[i];
+        Vec3& lastAngularVelocity = workspace.lastAngularVelocity[i];
         if (body.asleep) {
+            lastVelocity = lastAngularVelocity = Vec3(0);
             ++asleep;
             continue;
         }
-        const bool still = glm::dot(body.velocity, body.velocity) < linear2 &&
-                           glm::dot(body.angularVelocity, body.angularVelocity) < angular2;
-        body.stillTime = still ? body.stillTime + h : Real(0);
+        const Vec3 change = body.velocity - lastVelocity;
+        const Vec3 turnChange = body.angularVelocity - lastAngularVelocity;
+        const bool slow = glm::dot(body.velocity, body.velocity) < linear2 &&
+                          glm::dot(body.angularVelocity, body.angularVelocity) < angular2;
+        const bool balanced = known && glm::dot(change, change) < change2 && glm::dot(turnChange, turnChange) < turnChange2;
+        workspace.linearAcceleration[i] = glm::length(change) / h;
+        workspace.angularAcceleration[i] = glm::length(turnChange) / h;
+        lastVelocity = body.velocity;
+        lastAngularVelocity = body.angularVelocity;
+        body.stillTime = slow && balanced ? body.stillTime + h : Real(0);
         Real& least = workspace.islandStillTime[findRoot(workspace.parent, i)];
         least = std::min(least, body.stillTime);
     }

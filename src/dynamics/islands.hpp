@@ -3,13 +3,21 @@
 ///
 /// A pile of boxes at rest still costs a full solve every step, and the solve
 /// never quite reaches zero velocity. Sleep removes that cost: each body keeps
-/// how long it has been *still* (|v| below a speed and |ω| below an angular
-/// speed); bodies connected through contacts or joints form an *island*
-/// (connected components of that graph, found with union–find); when every
-/// body of an island has been still for the time to sleep, the whole island
-/// sleeps: velocities are zeroed, and integration, broadphase pairs among
-/// sleepers and the solver skip it. A whole island, never part of it: a box
-/// whose neighbour still moves could be pushed while asleep.
+/// how long it has been *still*: slow (|v| below a speed and |ω| below an
+/// angular speed) and in equilibrium (the step changed v by less than an
+/// acceleration times h, and ω likewise: the forces and the constraint
+/// impulses on it balance, so waking it would not move it). Bodies connected
+/// through contacts or joints form an *island* (connected components of that
+/// graph, found with union–find); when every body of an island has been still
+/// for the time to sleep, the whole island sleeps: velocities are zeroed, and
+/// integration, broadphase pairs among sleepers and the solver skip it. A
+/// whole island, never part of it: a box whose neighbour still moves could be
+/// pushed while asleep.
+///
+/// Slow alone is not enough. A ball on a damped spring passes through rest at
+/// every turning point of its oscillation, slower and slower, and would fall
+/// asleep millimetres from where the spring holds it; at a turning point its
+/// acceleration is ω²·A, not zero, and the equilibrium test sees it.
 ///
 /// Static objects (planes, kinematic bodies) never join an island: through
 /// the floor every resting body in the scene would be one island, and one
@@ -45,6 +53,14 @@ struct BodyLink {
 
 /// @brief Scratch arrays for building islands, reused every step.
 struct IslandWorkspace {
+    /// Per dynamic body: its velocity and angular velocity at the end of the last step (zero while
+    /// asleep), m/s and rad/s: what the step's velocity change, the equilibrium test, is measured from.
+    std::vector<Vec3> lastVelocity;
+    std::vector<Vec3> lastAngularVelocity;
+    /// Per dynamic body: |Δv|/h and |Δω|/h of the last step, m/s² and rad/s², as the
+    /// equilibrium test measured them (for the trace: why a slow body is not yet still).
+    std::vector<Real> linearAcceleration;
+    std::vector<Real> angularAcceleration;
     std::vector<std::uint32_t> parent;   ///< Union–find forest over dynamic bodies.
     std::vector<Real> islandStillTime;   ///< Per root: the least still time of its bodies, s.
     std::vector<std::uint32_t> carried;  ///< Bodies resting on a moving kinematic body this step (never still).

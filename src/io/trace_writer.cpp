@@ -451,10 +451,17 @@ void TraceObserver::writeSleep(const std::string& head, const World& world) {
         } else {
             const Real speed = glm::length(b.velocity);
             const Real spin = glm::length(b.angularVelocity);
-            fields = "awake  island " + std::to_string(islandOf(world.islands(), std::uint32_t(i))) + "  still " +
+            const IslandWorkspace& islands = world.islands();
+            const bool measured = i < islands.linearAcceleration.size();
+            fields = "awake  island " + std::to_string(islandOf(islands, std::uint32_t(i))) + "  still " +
                      num(b.stillTime) + " s of " + num(s.timeToSleep) + " s  |v| " + num(speed) + " m/s (still when < " +
                      num(s.sleepLinearSpeed) + " m/s)  |w| " + num(spin) + " rad/s (still when < " +
                      num(s.sleepAngularSpeed) + " rad/s)";
+            if (measured) {
+                fields += "  |dv|/h " + num(islands.linearAcceleration[i]) + " m/s^2 (still when < " +
+                          num(s.sleepLinearAcceleration) + ")  |dw|/h " + num(islands.angularAcceleration[i]) +
+                          " rad/s^2 (still when < " + num(s.sleepAngularAcceleration) + ")";
+            }
         }
         line(head, b.name, fields);
     }
