@@ -1,4 +1,5 @@
-# Breakpoints for config/lesson03_collisions.scene (lecture 3, lectures/03-sphere-plane-impulses.md).
+# Breakpoints for config/lesson03_collisions.scene (lecture 3, lectures/03-sphere-plane-impulses.md, and its
+# appendix, lectures/03a-appendix-contacts-over-steps.md).
 # The same breakpoints as its entry in .vscode/launch.json, which sources this file.
 # By function name, so they do not move when lines do; the lecture's own sessions (lectures/gdb/NN-*.gdb)
 # go further, line by line. From the command line (after cmake --preset debug && cmake --build --preset debug):

@@ -1,4 +1,5 @@
-# Breakpoints for config/lesson07_tipping.scene (lecture 7, lectures/07-friction-and-restitution.md).
+# Breakpoints for config/lesson07_tipping.scene (lecture 7, lectures/07-friction-and-restitution.md, and its
+# appendix, lectures/07a-appendix-holding-still.md).
 # The same breakpoints as its entry in .vscode/launch.json, which sources this file.
 # By function name, so they do not move when lines do; the lecture's own sessions (lectures/gdb/NN-*.gdb)
 # go further, line by line. From the command line (after cmake --preset debug && cmake --build --preset debug):

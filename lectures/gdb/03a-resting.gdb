@@ -1,9 +1,9 @@
-# Lecture 3: the second impact, then the first contact the resting rule stops: the capped support,
-# the overlap removal, and the warm start of the steps after it.
+# Appendix 3a, session A: the second impact, then the first contact the resting rule stops: the capped
+# support, the overlap removal, and the warm start of the steps after it.
 # Breakpoints inside a function are named by the code at the line (break-at FILE "TEXT", from
 # lectures/gdb/stepwise.py), so they follow the code when lines move; run from the repository root.
-#   interactive:  gdb -x lectures/gdb/03-resting.gdb --args build/debug/stepwise run config/lesson03_bounce.scene
-#   all at once:  gdb -q -batch -x lectures/gdb/03-resting.gdb --args build/debug/stepwise run config/lesson03_bounce.scene
+#   interactive:  gdb -x lectures/gdb/03a-resting.gdb --args build/debug/stepwise run config/lesson03_bounce.scene
+#   all at once:  gdb -q -batch -x lectures/gdb/03a-resting.gdb --args build/debug/stepwise run config/lesson03_bounce.scene
 source lectures/gdb/stepwise.py
 break-at impulse_resolver.cpp "c.targetSeparation = e * approachAtTouch;"
 run

@@ -1,9 +1,9 @@
-# Lecture 3: two equal elastic spheres head on. They touch exactly at t = 1 s, on a step boundary; the depth
+# Appendix 3a, session B: two equal elastic spheres head on. They touch exactly at t = 1 s, on a step boundary; the depth
 # is a hair below zero (round-off), which counts as touching, so the velocities swap in that step.
 # Breakpoints inside a function are named by the code at the line (break-at FILE "TEXT", from
 # lectures/gdb/stepwise.py), so they follow the code when lines move; run from the repository root.
-#   interactive:  gdb -x lectures/gdb/03-head-on.gdb --args build/debug/stepwise run config/lesson03_collisions.scene
-#   all at once:  gdb -q -batch -x lectures/gdb/03-head-on.gdb --args build/debug/stepwise run config/lesson03_collisions.scene
+#   interactive:  gdb -x lectures/gdb/03a-head-on.gdb --args build/debug/stepwise run config/lesson03_collisions.scene
+#   all at once:  gdb -q -batch -x lectures/gdb/03a-head-on.gdb --args build/debug/stepwise run config/lesson03_collisions.scene
 source lectures/gdb/stepwise.py
 break-at impulse_resolver.cpp "c.targetSeparation = e * approachAtTouch;" if contact.b.kind == stepwise::BodyKind::Dynamic && contact.a == 0
 run

@@ -1,8 +1,8 @@
-# Lecture 7, session C (continued): the eight box corners of the incline at step 60, one line each.
+# Appendix 7a, session A: the eight box corners of the incline at step 60, one line each.
 # Breakpoints inside a function are named by the code at the line (break-at FILE "TEXT", from
 # lectures/gdb/stepwise.py), so they follow the code when lines move; run from the repository root.
-#   interactive:  gdb -x lectures/gdb/07-boxes.gdb --args build/debug/stepwise run config/lesson07_incline.scene --steps 60
-#   all at once:  gdb -q -batch -x lectures/gdb/07-boxes.gdb --args build/debug/stepwise run config/lesson07_incline.scene --steps 60
+#   interactive:  gdb -x lectures/gdb/07a-boxes.gdb --args build/debug/stepwise run config/lesson07_incline.scene --steps 60
+#   all at once:  gdb -q -batch -x lectures/gdb/07a-boxes.gdb --args build/debug/stepwise run config/lesson07_incline.scene --steps 60
 source lectures/gdb/stepwise.py
 set trace-commands on
 break-at world.cpp "resolveImpulses(bodies(), contacts_, h, settings_.impulseIterations" if stepCount_ == 59

@@ -1,0 +1,456 @@
+// The lecture pages themselves: every lecture and appendix has the sections
+// lectures/README.md names, the README's reading order names every page (the
+// appendices as optional), its map of the step lists each solver's stages in
+// the order World::step() runs them, links lead somewhere, code a page quotes
+// is in the file it names, and no page points at code by a line number.
+// Tag: [lectures].
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "core/stages.hpp"
+#include "world/step_plan.hpp"
+
+namespace fs = std::filesystem;
+using namespace stepwise;
+
+namespace {
+
+const fs::path kRoot = STEPWISE_SOURCE_DIR;
+const fs::path kLectures = kRoot / "lectures";
+
+std::string readText(const fs::path& path) {
+    std::ifstream in(path);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+std::vector<std::string> readLines(const fs::path& path) {
+    std::ifstream in(path);
+    std::vector<std::string> lines;
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+    return lines;
+}
+
+std::string trim(const std::string& text) {
+    const std::size_t first = text.find_first_not_of(" \t");
+    if (first == std::string::npos) return "";
+    return text.substr(first, text.find_last_not_of(" \t") - first + 1);
+}
+
+bool startsWith(const std::string& text, const std::string& prefix) { return text.rfind(prefix, 0) == 0; }
+
+/// A fence line (```, possibly indented inside a list item) opens or closes a code block.
+bool isFence(const std::string& line) { return startsWith(trim(line), "```"); }
+
+/// The lecture pages: lectures/NN*.md, the core lectures and their appendices (03a, 07a, …).
+std::vector<fs::path> lecturePages() {
+    std::vector<fs::path> pages;
+    for (const fs::directory_entry& entry : fs::directory_iterator(kLectures)) {
+        const std::string name = entry.path().filename().string();
+        if (entry.path().extension() == ".md" && name.size() > 2 && std::isdigit(static_cast<unsigned char>(name[0])))
+            pages.push_back(entry.path());
+    }
+    std::sort(pages.begin(), pages.end());
+    return pages;
+}
+
+/// An appendix's file name has a letter after the lecture's number: 03a-appendix-….md.
+bool isAppendix(const fs::path& page) {
+    const std::string name = page.filename().string();
+    return name.size() > 2 && std::isalpha(static_cast<unsigned char>(name[2]));
+}
+
+/// The backtick spans of a piece of markdown, `\|` read as `|` (a table cell escapes it).
+std::vector<std::string> codeSpans(const std::string& text) {
+    std::vector<std::string> spans;
+    std::size_t at = 0;
+    while ((at = text.find('`', at)) != std::string::npos) {
+        const std::size_t end = text.find('`', at + 1);
+        if (end == std::string::npos) break;
+        spans.push_back(std::regex_replace(text.substr(at + 1, end - at - 1), std::regex(R"(\\\|)"), "|"));
+        at = end + 1;
+    }
+    return spans;
+}
+
+/// The cells of a markdown table row, `\|` kept inside a cell.
+std::vector<std::string> tableCells(const std::string& row) {
+    std::vector<std::string> cells;
+    std::string cell;
+    const std::string text = trim(row);
+    for (std::size_t i = 1; i < text.size(); ++i) {  // past the leading '|'
+        if (text[i] == '\\' && i + 1 < text.size() && text[i + 1] == '|') {
+            cell += "\\|";
+            ++i;
+        } else if (text[i] == '|') {
+            cells.push_back(trim(cell));
+            cell.clear();
+        } else {
+            cell += text[i];
+        }
+    }
+    return cells;
+}
+
+/// The rows of the markdown table that starts at @p lines[@p first]: the header's cells, then each row's.
+std::vector<std::vector<std::string>> tableAt(const std::vector<std::string>& lines, std::size_t first) {
+    std::vector<std::vector<std::string>> rows;
+    for (std::size_t i = first; i < lines.size() && startsWith(trim(lines[i]), "|"); ++i) {
+        if (i == first + 1) continue;  // |---|---|
+        rows.push_back(tableCells(lines[i]));
+    }
+    return rows;
+}
+
+/// The column of a table whose header cell is @p name, or -1.
+int columnNamed(const std::vector<std::string>& header, const std::string& name) {
+    for (std::size_t i = 0; i < header.size(); ++i)
+        if (header[i] == name) return static_cast<int>(i);
+    return -1;
+}
+
+/// A path as a page names it: from the repository root, or a file name found once under src/.
+fs::path resolveSource(const std::string& name) {
+    if (fs::exists(kRoot / name)) return kRoot / name;
+    fs::path found;
+    int count = 0;
+    for (const fs::directory_entry& entry : fs::recursive_directory_iterator(kRoot / "src")) {
+        const std::string path = entry.path().generic_string();
+        if (path.size() > name.size() && path.compare(path.size() - name.size() - 1, std::string::npos, "/" + name) == 0) {
+            found = entry.path();
+            ++count;
+        }
+    }
+    return count == 1 ? found : fs::path();
+}
+
+/// The ## headings of a page, outside code blocks.
+std::vector<std::string> sectionHeadings(const fs::path& page) {
+    std::vector<std::string> headings;
+    bool code = false;
+    for (const std::string& line : readLines(page)) {
+        if (isFence(line)) code = !code;
+        if (!code && startsWith(line, "## ")) headings.push_back(trim(line.substr(3)));
+    }
+    return headings;
+}
+
+/// What GitHub makes of a heading for its anchor: lower case, letters, digits, '-' and '_'
+/// kept, spaces to '-', the rest dropped (a byte above ASCII too: give such a heading a {#id}).
+std::string slugOf(const std::string& heading) {
+    std::string slug;
+    for (char ch : heading) {
+        const unsigned char c = static_cast<unsigned char>(ch);
+        if (std::isalnum(c) && c < 128) slug += static_cast<char>(std::tolower(c));
+        else if (ch == ' ' || ch == '-') slug += '-';
+        else if (ch == '_') slug += '_';
+    }
+    return slug;
+}
+
+/// The anchors a markdown file offers: every heading's slug, and every {#id}.
+std::set<std::string> anchorsOf(const fs::path& page) {
+    std::set<std::string> anchors;
+    bool code = false;
+    const std::regex explicitId(R"(\{#([\w-]+)\})");
+    for (const std::string& line : readLines(page)) {
+        if (isFence(line)) code = !code;
+        if (code) continue;
+        for (auto it = std::sregex_iterator(line.begin(), line.end(), explicitId); it != std::sregex_iterator(); ++it)
+            anchors.insert((*it)[1]);
+        if (startsWith(line, "#")) {
+            const std::size_t text = line.find_first_not_of('#');
+            if (text != std::string::npos && line[text] == ' ') anchors.insert(slugOf(trim(line.substr(text))));
+        }
+    }
+    return anchors;
+}
+
+/// Every Catch2 tag in use, "[verlet]", from the test cases this program holds.
+std::set<std::string> testTags() {
+    std::set<std::string> tags;
+    for (const Catch::TestCase& test : Catch::getRegistryHub().getTestCaseRegistry().getAllTests()) {
+        for (const std::string& tag : test.tags) tags.insert("[" + tag + "]");
+    }
+    return tags;
+}
+
+}  // namespace
+
+TEST_CASE("Every lecture and appendix has the sections lectures/README.md names, in order", "[lectures]") {
+    // The README's sentence "Each lecture and each appendix has the same sections: **Goal**, …".
+    const std::string readme = readText(kLectures / "README.md");
+    const std::size_t start = readme.find("has the same sections:");
+    REQUIRE(start != std::string::npos);
+    const std::string sentence = readme.substr(start, readme.find('(', start) - start);
+    std::vector<std::string> sections;
+    const std::regex bold(R"(\*\*([^*]+)\*\*)");
+    for (auto it = std::sregex_iterator(sentence.begin(), sentence.end(), bold); it != std::sregex_iterator(); ++it) {
+        std::string name = (*it)[1];
+        std::replace(name.begin(), name.end(), '\n', ' ');
+        sections.push_back(name);
+    }
+    REQUIRE(sections.size() == 8);
+
+    // "The scene" may be "The scenes"; "Check it against physics" may check against something else.
+    const auto matches = [](const std::string& heading, const std::string& section) {
+        if (section == "The scene") return heading == "The scene" || heading == "The scenes";
+        if (startsWith(section, "Check it against ")) return startsWith(heading, "Check it against ");
+        return heading == section;
+    };
+    const std::vector<fs::path> pages = lecturePages();
+    REQUIRE(pages.size() >= 12);
+    for (const fs::path& page : pages) {
+        const std::vector<std::string> headings = sectionHeadings(page);
+        INFO("lectures/" << page.filename().string() << " has the ## sections: " << [&] {
+            std::string all;
+            for (const std::string& h : headings) all += "\n  " + h;
+            return all;
+        }());
+        REQUIRE(headings.size() == sections.size());
+        for (std::size_t i = 0; i < sections.size(); ++i) {
+            INFO("section " << i + 1 << " should be " << sections[i]);
+            CHECK(matches(headings[i], sections[i]));
+        }
+    }
+}
+
+TEST_CASE("lectures/README.md's reading order names every lecture, each appendix as optional after its lecture", "[lectures]") {
+    const std::vector<std::string> lines = readLines(kLectures / "README.md");
+    const auto begin = std::find(lines.begin(), lines.end(), "## Reading order");
+    REQUIRE(begin != lines.end());
+    const auto end = std::find_if(begin + 1, lines.end(), [](const std::string& l) { return startsWith(l, "## "); });
+
+    // The first line of the section that links each page.
+    std::vector<std::pair<std::string, int>> linked;
+    const std::regex link(R"(\]\(([^)#]+\.md)\))");
+    for (auto it = begin; it != end; ++it) {
+        for (auto m = std::sregex_iterator(it->begin(), it->end(), link); m != std::sregex_iterator(); ++m) {
+            linked.emplace_back((*m)[1], static_cast<int>(it - lines.begin()));
+        }
+    }
+    const auto lineOf = [&](const std::string& name) {
+        for (const auto& [file, line] : linked)
+            if (file == name) return line;
+        return -1;
+    };
+    for (const fs::path& page : lecturePages()) {
+        const std::string name = page.filename().string();
+        INFO("lectures/" << name);
+        const int line = lineOf(name);
+        REQUIRE(line >= 0);
+        if (!isAppendix(page)) {
+            CHECK(lines[line].find("ptional") == std::string::npos);
+            continue;
+        }
+        // 03a-… follows lecture 03's page, on a line that says it is optional.
+        CHECK(lines[line].find("*Optional*") != std::string::npos);
+        std::string core;
+        for (const fs::path& other : lecturePages())
+            if (!isAppendix(other) && other.filename().string().substr(0, 2) == name.substr(0, 2)) core = other.filename().string();
+        REQUIRE_FALSE(core.empty());
+        CHECK(lineOf(core) >= 0);
+        CHECK(lineOf(core) < line);
+    }
+}
+
+TEST_CASE("lectures/README.md's map of the step lists each solver's stages in the order World::step() runs them", "[lectures]") {
+    const std::vector<std::string> lines = readLines(kLectures / "README.md");
+    const std::set<std::string> tags = testTags();
+    for (const auto& [solver, marker] : {std::pair{SolverKind::Impulse, "<!-- step map: Impulse -->"},
+                                         std::pair{SolverKind::SequentialImpulse, "<!-- step map: SequentialImpulse -->"}}) {
+        INFO(marker);
+        const auto at = std::find(lines.begin(), lines.end(), marker);
+        REQUIRE(at != lines.end());
+        const std::vector<std::vector<std::string>> table = tableAt(lines, static_cast<std::size_t>(at - lines.begin()) + 1);
+        REQUIRE(table.size() >= 2);
+        const int stageColumn = columnNamed(table[0], "stage");
+        const int fileColumn = columnNamed(table[0], "file");
+        const int lectureColumn = columnNamed(table[0], "lecture");
+        const int testsColumn = columnNamed(table[0], "tests");
+        REQUIRE(stageColumn >= 0);
+        REQUIRE(fileColumn >= 0);
+        REQUIRE(lectureColumn >= 0);
+        REQUIRE(testsColumn >= 0);
+
+        // The stages, row by row, are the pipeline's.
+        std::vector<std::string> listed;
+        for (std::size_t row = 1; row < table.size(); ++row) {
+            const std::vector<std::string> spans = codeSpans(table[row].at(stageColumn));
+            listed.push_back(spans.empty() ? "(none)" : spans[0]);
+        }
+        std::vector<std::string> runs;
+        for (const PipelineSlot& slot : pipelineOrder(solver)) runs.push_back(stageName(slot.stage));
+        CHECK(listed == runs);
+
+        for (std::size_t row = 1; row < table.size(); ++row) {
+            const std::vector<std::string>& cells = table[row];
+            INFO("the row of " << listed[row - 1]);
+            const std::vector<std::string> files = codeSpans(cells.at(fileColumn));
+            CHECK_FALSE(files.empty());
+            for (const std::string& file : files) {
+                INFO(file);
+                CHECK(fs::exists(kRoot / file));
+            }
+            const std::regex link(R"(\]\(([^)]+)\))");
+            const std::string& lectures = cells.at(lectureColumn);
+            int lectureLinks = 0;
+            for (auto m = std::sregex_iterator(lectures.begin(), lectures.end(), link); m != std::sregex_iterator(); ++m) {
+                INFO((*m)[1]);
+                CHECK(fs::exists(kLectures / std::string((*m)[1])));
+                ++lectureLinks;
+            }
+            CHECK(lectureLinks >= 1);
+            const std::vector<std::string> named = codeSpans(cells.at(testsColumn));
+            CHECK_FALSE(named.empty());
+            for (const std::string& tag : named) {
+                INFO(tag << " is not a tag of any test case");
+                CHECK(tags.count(tag) == 1);
+            }
+        }
+    }
+}
+
+TEST_CASE("Links in the lectures lead to files and headings that exist", "[lectures]") {
+    std::vector<fs::path> pages = lecturePages();
+    pages.push_back(kLectures / "README.md");
+    const std::regex link(R"(\]\(([^)\s]+)\))");
+    int links = 0;
+    for (const fs::path& page : pages) {
+        const std::vector<std::string> lines = readLines(page);
+        bool code = false;
+        for (std::size_t i = 0; i < lines.size(); ++i) {
+            if (isFence(lines[i])) code = !code;
+            if (code) continue;
+            // Inline code may hold a lambda, [](const Body& b): not a link.
+            const std::string text = std::regex_replace(lines[i], std::regex("`[^`]*`"), "``");
+            for (auto m = std::sregex_iterator(text.begin(), text.end(), link); m != std::sregex_iterator(); ++m) {
+                const std::string target = (*m)[1];
+                if (target.find("://") != std::string::npos || startsWith(target, "mailto:")) continue;
+                INFO("lectures/" << page.filename().string() << ":" << i + 1 << ": (" << target << ")");
+                const std::size_t hash = target.find('#');
+                const std::string file = target.substr(0, hash);
+                const fs::path path = file.empty() ? page : page.parent_path() / file;
+                CHECK(fs::exists(path));
+                if (hash != std::string::npos && fs::exists(path) && path.extension() == ".md") {
+                    CHECK(anchorsOf(path).count(target.substr(hash + 1)) == 1);
+                }
+                ++links;
+            }
+        }
+    }
+    CHECK(links >= 50);
+}
+
+TEST_CASE("Code a lecture quotes is in the file it names, on exactly one line", "[lectures]") {
+    // <!-- code-quotes: FILE --> before a table: each `span` of its "code" column is on exactly
+    // one line of FILE (as break-at needs). Without ": FILE", each row names its file in a
+    // "file" column. Before a ```cpp block: each of the block's lines is a line of FILE, in order.
+    int blocks = 0;
+    int quotes = 0;
+    for (const fs::path& page : lecturePages()) {
+        const std::vector<std::string> lines = readLines(page);
+        for (std::size_t i = 0; i < lines.size(); ++i) {
+            const std::string marker = trim(lines[i]);
+            if (!startsWith(marker, "<!-- code-quotes")) continue;
+            const std::string where = "lectures/" + page.filename().string() + ":" + std::to_string(i + 1);
+            INFO(where);
+            std::string named;
+            const std::size_t colon = marker.find(':');
+            if (colon != std::string::npos) named = trim(marker.substr(colon + 1, marker.find("-->") - colon - 1));
+            std::size_t next = i + 1;
+            while (next < lines.size() && trim(lines[next]).empty()) ++next;
+            REQUIRE(next < lines.size());
+            ++blocks;
+            if (isFence(lines[next])) {
+                REQUIRE_FALSE(named.empty());
+                const fs::path file = resolveSource(named);
+                REQUIRE_FALSE(file.empty());
+                const std::vector<std::string> source = readLines(file);
+                std::size_t from = 0;
+                for (std::size_t k = next + 1; k < lines.size() && !isFence(lines[k]); ++k) {
+                    const std::string quoted = trim(lines[k]);
+                    if (quoted.empty()) continue;
+                    INFO(where << ": line " << k + 1 << " quotes `" << quoted << "`, not the next line of " << named << " that holds it");
+                    const auto found = std::find_if(source.begin() + static_cast<std::ptrdiff_t>(from), source.end(),
+                                                    [&](const std::string& line) { return trim(line) == quoted; });
+                    CHECK(found != source.end());
+                    if (found != source.end()) from = static_cast<std::size_t>(found - source.begin()) + 1;
+                    ++quotes;
+                }
+                continue;
+            }
+            REQUIRE(startsWith(trim(lines[next]), "|"));
+            const std::vector<std::vector<std::string>> table = tableAt(lines, next);
+            const int codeColumn = columnNamed(table.at(0), "code");
+            const int fileColumn = columnNamed(table.at(0), "file");
+            REQUIRE(codeColumn >= 0);
+            REQUIRE((!named.empty() || fileColumn >= 0));
+            for (std::size_t row = 1; row < table.size(); ++row) {
+                std::string name = named;
+                if (name.empty()) {
+                    const std::vector<std::string> files = codeSpans(table[row].at(fileColumn));
+                    name = files.empty() ? "" : files[0];
+                }
+                const fs::path file = resolveSource(name);
+                INFO(where << ": row " << row << ", file " << name);
+                REQUIRE_FALSE(file.empty());
+                for (const std::string& quoted : codeSpans(table[row].at(codeColumn))) {
+                    INFO("`" << quoted << "` must be on exactly one line of " << name);
+                    int count = 0;
+                    for (const std::string& line : readLines(file)) count += line.find(quoted) != std::string::npos ? 1 : 0;
+                    CHECK(count == 1);
+                    ++quotes;
+                }
+            }
+        }
+    }
+    CHECK(blocks >= 6);
+    CHECK(quotes >= 40);
+}
+
+TEST_CASE("Lectures point at code by function and quoted text, not by line number", "[lectures]") {
+    // What a program prints (a gdb transcript, a test's failure) is quoted in code blocks and
+    // keeps its line numbers; the prose around it names a line by its code (break-at FILE "TEXT").
+    const std::regex lineNumber(R"((\b[Ll]ines? \d+)|(\.(cpp|hpp|py|gdb):\d+))");
+    // Lectures whose prose still names lines by number. A page leaves the list once it names
+    // them by their code, and the check then says to take it off.
+    const std::set<std::string> notYet = {"01-explicit-euler.md", "02-verlet-and-symplectic-euler.md",
+                                          "04-inertia-and-rotation.md", "05-separating-axis-theorem.md",
+                                          "06-contact-points-and-manifolds.md"};
+    std::vector<fs::path> pages = lecturePages();
+    pages.push_back(kLectures / "README.md");
+    int scanned = 0;
+    for (const fs::path& page : pages) {
+        const std::string name = page.filename().string();
+        const std::vector<std::string> lines = readLines(page);
+        bool code = false;
+        int found = 0;
+        for (std::size_t i = 0; i < lines.size(); ++i) {
+            if (isFence(lines[i])) {
+                code = !code;
+                continue;
+            }
+            if (code) continue;
+            ++scanned;
+            if (!std::regex_search(lines[i], lineNumber)) continue;
+            ++found;
+            if (notYet.count(name) == 0) FAIL_CHECK("lectures/" << name << ":" << i + 1 << " names a line by its number: " << lines[i]);
+        }
+        if (notYet.count(name) == 1) {
+            INFO("lectures/" << name << " names no line by number any more: take it off the list");
+            CHECK(found > 0);
+        }
+    }
+    CHECK(scanned >= 2000);
+}
