@@ -9,8 +9,10 @@
 #   6. asan tests   ctest --preset asan (without the tests labelled slow, e.g. the 210-box
 #                   pyramid's 10 s: the ci tests run them; under the sanitizers they take
 #                   over 15 minutes on 2 cores and check no code the shorter tests miss)
+#   7. fuzz build   configure + build the `fuzz` preset (clang-14, libFuzzer, ASan + UBSan)
+#   8. fuzz         scripts/fuzz.sh --no-build 60: the scene loader and the command line, 60 s each
 #
-# Prints a header "==> [N/6] part: command" before each part, "--> part: OK"
+# Prints a header "==> [N/8] part: command" before each part, "--> part: OK"
 # or "--> part: FAILED" after it, and a one-line summary at the end; exits
 # non-zero if any part failed. The parts after a failure still run (so one run
 # shows every problem), except the tests of a build that failed.
@@ -25,7 +27,7 @@ start=$SECONDS
 passed=()
 failed=()
 skipped=()
-total=6
+total=8
 n=0
 
 # part NAME SHOWN COMMAND… : runs COMMAND under a header naming the part and
@@ -86,6 +88,12 @@ if part "asan build" "cmake --preset asan && cmake --build --preset asan -j $job
     part "asan tests" "ctest --preset asan" ctest --preset asan
 else
     skip "asan tests" "the asan build failed"
+fi
+
+if part "fuzz build" "cmake --preset fuzz && cmake --build --preset fuzz -j $jobs" configure_and_build fuzz; then
+    part "fuzz" "scripts/fuzz.sh --no-build ${STEPWISE_FUZZ_SECONDS:-60}" bash scripts/fuzz.sh --no-build "${STEPWISE_FUZZ_SECONDS:-60}"
+else
+    skip "fuzz" "the fuzz build failed"
 fi
 
 elapsed=$((SECONDS - start))

@@ -65,9 +65,10 @@ void SweepAndPrune::findOverlaps(const ProxySet& proxies, std::vector<ProxyPair>
             if (firstKinematic && proxies.isKinematic(second.proxy)) continue;  // neither can be pushed
             ++tests;
             const Aabb& b = second.box;
-            const bool overlaps = (a.min[u] <= b.max[u]) & (b.min[u] <= a.max[u]) & (a.min[w] <= b.max[w]) &
-                                  (b.min[w] <= a.max[w]);
-            if (overlaps) pairs.push_back(orderedPair(first.proxy, second.proxy));
+            // The four comparisons as 0 or 1, and'ed: all four made, one branch instead of four.
+            const int overlaps = int(a.min[u] <= b.max[u]) & int(b.min[u] <= a.max[u]) & int(a.min[w] <= b.max[w]) &
+                                 int(b.min[w] <= a.max[w]);
+            if (overlaps != 0) pairs.push_back(orderedPair(first.proxy, second.proxy));
         }
     }
     counters.pairTests += tests;

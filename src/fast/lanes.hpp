@@ -24,7 +24,7 @@
 // convention with AVX than without. These functions are always inlined and
 // never cross a library boundary, so no two builds ever call each other with
 // them. Silenced here only, not for the files that include this one.
-#if defined(__GNUC__) && !defined(__clang__)
+#if defined(__GNUC__)  // GCC, and clang, which reads GCC's pragmas
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wpsabi"
 #endif
@@ -160,6 +160,6 @@ STEPWISE_LANES_INLINE Lanes dot(const Vec3Lanes& a, const Vec3Lanes& b) { return
 
 }  // namespace stepwise
 
-#if defined(__GNUC__) && !defined(__clang__)
+#if defined(__GNUC__)  // GCC, and clang, which reads GCC's pragmas
 #pragma GCC diagnostic pop
 #endif

@@ -7,7 +7,7 @@
 #include "integrators/integrators.hpp"
 
 // This file's lane helpers pass Lanes by value too, always inlined (see lanes.hpp).
-#if defined(__GNUC__) && !defined(__clang__)
+#if defined(__GNUC__)  // GCC, and clang, which reads GCC's pragmas
 #pragma GCC diagnostic ignored "-Wpsabi"
 #endif
 

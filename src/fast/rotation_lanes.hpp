@@ -23,7 +23,7 @@
 #pragma once
 
 // Lanes pass by value between always-inlined functions (see lanes.hpp).
-#if defined(__GNUC__) && !defined(__clang__)
+#if defined(__GNUC__)  // GCC, and clang, which reads GCC's pragmas
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wpsabi"
 #endif
@@ -83,6 +83,6 @@ STEPWISE_LANES_INLINE TurnLanes rotateByAngularVelocity(const QuatLanes& q, cons
 
 }  // namespace stepwise
 
-#if defined(__GNUC__) && !defined(__clang__)
+#if defined(__GNUC__)  // GCC, and clang, which reads GCC's pragmas
 #pragma GCC diagnostic pop
 #endif

@@ -1,0 +1,62 @@
+#!/usr/bin/env bash
+# Fuzzes the scene loader and the command line (tests/fuzz/): libFuzzer, with AddressSanitizer
+# and UndefinedBehaviorSanitizer, built by clang-14 (the `fuzz` preset).
+#
+#   scripts/fuzz.sh              builds, then runs each fuzzer for 60 s (what CI does)
+#   scripts/fuzz.sh 3600         one hour each
+#   scripts/fuzz.sh --no-build 60
+#
+# Seeds: every shipped scene (config/, lectures/) for the loader, tests/fuzz/seeds/cli/ for the
+# command line; the loader also gets a dictionary of the record and field names found in them.
+# What a run adds to the corpus stays in build/fuzz/corpus/ for the next run. A crash, a leak,
+# undefined behaviour or a hang (over 10 s on one input) stops the fuzzer: its input is saved in
+# build/fuzz/artifacts/, the script says how to reproduce it, and exits 1. Turn the input into a
+# regression test in tests/ (tests/test_fuzz_regressions.cpp) when it is fixed.
+set -euo pipefail
+
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+cd "$root"
+build=true
+seconds=60
+for arg in "$@"; do
+    case $arg in
+        --no-build) build=false ;;
+        -h|--help) sed -n '2,/^[^#]/{/^#/p}' "$0"; exit 0 ;;
+        *[!0-9]*|'') echo "fuzz.sh: expected a number of seconds or --no-build, found '$arg'" >&2; exit 2 ;;
+        *) seconds=$arg ;;
+    esac
+done
+
+if $build; then
+    cmake --preset fuzz >&2
+    cmake --build --preset fuzz -j "${STEPWISE_JOBS:-2}" >&2
+fi
+bin=build/fuzz/tests/fuzz
+work=build/fuzz
+mkdir -p "$work/artifacts" "$work/corpus/scenes" "$work/corpus/cli" "$work/seeds/scenes"
+find config lectures -name '*.scene' -exec cp {} "$work/seeds/scenes/" \;
+# The dictionary: record names and "Field=" words of the shipped scenes.
+{
+    find config lectures -name '*.scene' -exec cat {} + |
+        grep -v '^#' | grep -oE '(^[A-Za-z]+|[A-Za-z]+=)' | sort -u | sed 's/.*/"&"/'
+    printf '"%s"\n' "," "(" ")" "1/60" "true" "false" "1e308" "-0" "nan" "inf" "#" '\x0A'
+} > "$work/scene.dict"
+
+status=0
+run() {
+    local target=$1
+    shift
+    echo "fuzz.sh: $target for $seconds s" >&2
+    if ! "$bin/$target" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
+            -artifact_prefix="$work/artifacts/$target-" "$@" 2> "$work/$target.log"; then
+        echo "fuzz.sh: $target FAILED; the end of its log ($work/$target.log):" >&2
+        tail -40 "$work/$target.log" >&2
+        echo "fuzz.sh: reproduce with: $bin/$target $work/artifacts/$target-<crash file>" >&2
+        status=1
+        return
+    fi
+    grep -E '^stat::(number_of_executed_units|new_units_added)' "$work/$target.log" | sed "s/^/fuzz.sh: $target: /" >&2
+}
+run fuzz_scene_loader -dict="$work/scene.dict" "$work/corpus/scenes" "$work/seeds/scenes"
+run fuzz_command_line "$work/corpus/cli" tests/fuzz/seeds/cli
+exit $status
