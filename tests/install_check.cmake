@@ -7,9 +7,12 @@
 # 2. Every header installed includes only headers installed beside it, and the CMake package
 #    names no file of the source or build tree, so the installed tree stands on its own.
 # 3. A course's own project (tests/install_consumer/) finds the package with find_package(Stepwise):
-#    a version of another minor is refused, this build's version is found in the scratch prefix.
+#    a version of another minor is refused, this build's version is found in the scratch prefix,
+#    and the package says how the engine was configured (single precision, fast path).
 #    The project builds against Stepwise::engine and runs: a ball falls for 1 s and must be where
-#    symplectic Euler puts it, within g·h·t/2 of y0 − g·t²/2 (tests/install_consumer/free_fall.cpp).
+#    symplectic Euler puts it, within g·h·t/2 of y0 − g·t²/2 (tests/install_consumer/free_fall.cpp);
+#    the headers, compiled there, make Real the type the build chose, and agree with the library
+#    on the fast path's default.
 # 4. The installed program, run from a folder with no config/ in it, opens the installed default
 #    scene, not the source tree's.
 cmake_minimum_required(VERSION 3.20)
@@ -96,6 +99,16 @@ if(result EQUAL 0 OR NOT "${output}${errors}" MATCHES "compatible with requested
 endif()
 
 run("configuring tests/install_consumer" ${configure_consumer} "-DSTEPWISE_VERSION_WANTED=${VERSION}")
+# The package's variables say how this build was configured (the options in its CMakeCache.txt).
+file(STRINGS "${BUILD_DIR}/CMakeCache.txt" single REGEX "^STEPWISE_SINGLE_PRECISION:")
+file(STRINGS "${BUILD_DIR}/CMakeCache.txt" fast REGEX "^STEPWISE_FAST_PATH:")
+string(REGEX REPLACE "^[^=]*=" "" single "${single}")
+string(REGEX REPLACE "^[^=]*=" "" fast "${fast}")
+if(NOT run_output MATCHES "single precision ([A-Za-z]+), fast path ([A-Za-z]+)"
+   OR NOT CMAKE_MATCH_1 STREQUAL single OR NOT CMAKE_MATCH_2 STREQUAL fast)
+  message(FATAL_ERROR "install: the package says \"${CMAKE_MATCH_0}\"; the build was configured with "
+                      "STEPWISE_SINGLE_PRECISION=${single}, STEPWISE_FAST_PATH=${fast}:\n${run_output}")
+endif()
 file(STRINGS "${consumer}/CMakeCache.txt" found REGEX "^Stepwise_DIR:")
 string(REGEX REPLACE "^[^=]*=" "" found "${found}")
 file(REAL_PATH "${found}" found)
@@ -107,6 +120,16 @@ run("building tests/install_consumer" "${CMAKE_COMMAND}" --build "${consumer}")
 run("free_fall (tests/install_consumer/free_fall.cpp)" "${consumer}/free_fall")
 if(NOT run_output MATCHES "free_fall: PASS")
   message(FATAL_ERROR "install: free_fall did not say PASS:\n${run_output}")
+endif()
+# The project's Real is the one the build chose: float with STEPWISE_SINGLE_PRECISION, else double.
+if(single)
+  set(real_size 4)
+else()
+  set(real_size 8)
+endif()
+if(NOT run_output MATCHES "sizeof\\(Real\\) = ${real_size},")
+  message(FATAL_ERROR "install: STEPWISE_SINGLE_PRECISION=${single}, but the project outside the tree "
+                      "does not see a Real of ${real_size} bytes:\n${run_output}")
 endif()
 message(STATUS "install: the project outside the tree ran the installed engine:\n${run_output}")
 
