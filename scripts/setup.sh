@@ -24,7 +24,10 @@ set -euo pipefail
 #                             stepwise-bench's CSV); -nox: PNG and SVG output without X11
 #   gdb                       the lectures' step-through sessions (lectures/gdb/, with Python for
 #                             stepwise.py's break-at), and the [gdb] test that runs one of them
-packages=(cmake ninja-build g++ libglm-dev freeglut3-dev catch2 doxygen xvfb xauth xdotool gnuplot-nox gdb clang-14 libfuzzer-14-dev)
+#   clang-14, libfuzzer-14-dev the fuzzers of tests/fuzz/ (scripts/fuzz.sh; README, Fuzzing)
+#   dpkg-dev                  dpkg-shlibdeps, which finds the libraries the program loads for the
+#                             .deb `cpack` makes (cmake/install.cmake; the test install-deb)
+packages=(cmake ninja-build g++ libglm-dev freeglut3-dev catch2 doxygen xvfb xauth xdotool gnuplot-nox gdb dpkg-dev clang-14 libfuzzer-14-dev)
 
 # Only when asked (CI does not need them):
 #   libbullet-dev, pkg-config   Bullet 3, the engine `stepwise-bench bullet` compares Stepwise with

@@ -4,7 +4,9 @@
 #include <cstdio>
 #include <cstring>
 #include <exception>
+#include <filesystem>
 #include <string>
+#include <system_error>
 #include <vector>
 
 #include "app/cli.hpp"
@@ -16,16 +18,44 @@
 /// Path of the default scene; CMake passes the absolute path in the source tree.
 #define STEPWISE_DEFAULT_SCENE "config/default.scene"
 #endif
+#ifndef STEPWISE_SCENES_FROM_PROGRAM
+/// Path from the installed program's folder to the installed scenes' folder; CMake passes it
+/// (bin/ to share/stepwise/config/ is "../share/stepwise/config").
+#define STEPWISE_SCENES_FROM_PROGRAM "../share/stepwise/config"
+#endif
 
 namespace {
 
-/// The default scene: the copy in the source tree this program was built
-/// from, or config/default.scene below the current directory.
-std::string defaultScenePath() {
-    if (std::FILE* f = std::fopen(STEPWISE_DEFAULT_SCENE, "r")) {
+/// True when @p path names a file this program can open.
+bool readable(const std::string& path) {
+    if (std::FILE* f = std::fopen(path.c_str(), "r")) {
         std::fclose(f);
-        return STEPWISE_DEFAULT_SCENE;
+        return true;
     }
+    return false;
+}
+
+/// The folder of the running program, from Linux's /proc/self/exe ("" when it cannot be read).
+std::filesystem::path programFolder() {
+    std::error_code error;
+    const std::filesystem::path program = std::filesystem::read_symlink("/proc/self/exe", error);
+    return error ? std::filesystem::path() : program.parent_path();
+}
+
+/// The default scene, the first of these that exists:
+///  1. the installed copy, found from the program's own folder (PREFIX/bin/stepwise opens
+///     PREFIX/share/stepwise/config/default.scene), so an installed program opens its own
+///     scene under any prefix, even where the source tree it was built from is gone or has changed;
+///  2. the copy in the source tree this program was built from (a program in the build tree);
+///  3. config/default.scene below the current directory (the name is then reported as missing there).
+std::string defaultScenePath() {
+    const std::filesystem::path folder = programFolder();
+    if (!folder.empty()) {
+        const std::string installed =
+            (folder / STEPWISE_SCENES_FROM_PROGRAM / "default.scene").lexically_normal().string();
+        if (readable(installed)) return installed;
+    }
+    if (readable(STEPWISE_DEFAULT_SCENE)) return STEPWISE_DEFAULT_SCENE;
     return "config/default.scene";
 }
 
