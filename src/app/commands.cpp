@@ -9,6 +9,7 @@
 #include <string>
 
 #include "app/cli.hpp"
+#include "config/scene_changes.hpp"
 #include "config/scene_loader.hpp"
 #include "core/errors.hpp"
 #include "io/trajectory_csv.hpp"
@@ -325,6 +326,10 @@ int checkCommand(const std::string& scenePath) {
                     vec(p.normal).c_str());
     }
     for (const Expectation& e : scene->expectations) std::printf("  Expect (line %d)  %s\n", e.line, describe(e).c_str());
+    for (const MayChange& m : scene->mayChange) {
+        std::printf("  MayChange (line %d)  %s may differ from this file when it is graded as the starter\n", m.line,
+                    describeAllowed(m).c_str());
+    }
     for (const Spring& s : scene->springs) {
         const std::string other = s.bodyB == kFixedInWorld ? "the world point " + vec(s.anchorB) + " m"
                                                            : scene->dynamics[s.bodyB].name;
