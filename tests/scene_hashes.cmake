@@ -18,7 +18,9 @@
 # The hashes belong to one platform: x86-64 with Debian's compiler and C
 # library (std::sin and std::exp may round differently elsewhere). A scene
 # that exits 1 or 2 fails the test; an `Expect` failure (exit 3, the
-# assignments' starters) does not, since its trajectory is still hashed.
+# assignments' starters) does not, since its trajectory is still hashed. In a
+# students' copy, which has no lectures/instructors/, the scenes listed there
+# are skipped.
 #
 #   cmake -D STEPWISE=<stepwise> -D SOURCE_DIR=<repo> -D SCRATCH_DIR=<dir> [-D UPDATE=ON] -P scene_hashes.cmake
 cmake_minimum_required(VERSION 3.20)
@@ -84,10 +86,20 @@ foreach(scene IN LISTS scenes)
   endif()
 endforeach()
 file(REMOVE "${csv}")
+# A students' copy (scripts/student-kit.sh) has no lectures/instructors/: its scenes are not
+# missing there, only held back, so they are skipped rather than failed.
+set(held_back 0)
 foreach(gone IN LISTS expected_scenes)
+  if(gone MATCHES "^lectures/instructors/" AND NOT IS_DIRECTORY "${SOURCE_DIR}/lectures/instructors")
+    math(EXPR held_back "${held_back} + 1")
+    continue()
+  endif()
   string(APPEND report "  ${gone}: listed, but no such scene any more (write the list again with -D UPDATE=ON)\n")
   math(EXPR failures "${failures} + 1")
 endforeach()
+if(held_back GREATER 0)
+  message(STATUS "scene-hashes: ${held_back} listed scenes of lectures/instructors/ skipped: a students' copy has none")
+endif()
 
 list(LENGTH scenes count)
 if(UPDATE)

@@ -11,6 +11,7 @@
 
 #include "app/cli.hpp"
 #include "app/interrupt.hpp"
+#include "config/scene_changes.hpp"
 #include "config/scene_loader.hpp"
 #include "core/errors.hpp"
 #include "io/output_file.hpp"
@@ -344,6 +345,10 @@ int checkCommand(const std::string& scenePath) {
                     vec(p.normal).c_str());
     }
     for (const Expectation& e : scene->expectations) std::printf("  Expect (line %d)  %s\n", e.line, describe(e).c_str());
+    for (const MayChange& m : scene->mayChange) {
+        std::printf("  MayChange (line %d)  %s may differ from this file when it is graded as the starter\n", m.line,
+                    describeAllowed(m).c_str());
+    }
     for (const Spring& s : scene->springs) {
         const std::string other = s.bodyB == kFixedInWorld ? "the world point " + vec(s.anchorB) + " m"
                                                            : scene->dynamics[s.bodyB].name;

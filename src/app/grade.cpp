@@ -6,6 +6,11 @@
 /// step with an ExpectationMonitor. A file that cannot be loaded or run is a
 /// row that says why, never the end of the grading: one student's broken
 /// file must not hide the others' results.
+///
+/// With `--expect STARTER`, a starter that has MayChange records also fixes
+/// everything else: each submission is compared with it record by record
+/// (compareWithStarter, config/scene_changes.hpp), and a change no MayChange
+/// record allows fails the file, whatever its expectations measured.
 #include <fnmatch.h>
 
 #include <algorithm>
@@ -13,11 +18,14 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include "app/cli.hpp"
+#include "config/scene_changes.hpp"
 #include "config/scene_loader.hpp"
 #include "core/errors.hpp"
 #include "world/world.hpp"
@@ -41,7 +49,32 @@ struct GradeRow {
     std::size_t passed = 0;
     std::size_t total = 0;
     std::string note;     ///< The first failure, or the error.
+    std::vector<ConfigDiagnostic> changes;  ///< Changes against the starter that no MayChange record allows.
 };
+
+/// The file given with --expect: the instructor's records every submission is graded on.
+struct AnswerKey {
+    std::string path;                       ///< As given on the command line.
+    std::string text;                       ///< Its text, which submissions are compared with.
+    std::vector<Expectation> expectations;  ///< Its Expect records.
+    std::vector<MayChange> mayChange;       ///< Its MayChange records; none: any change is allowed.
+};
+
+std::string readText(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+/// "line 14:109: error: …": a diagnostic without its file name, which the row already shows.
+std::string rowNote(const ConfigDiagnostic& diagnostic, std::size_t count) {
+    std::string note = diagnostic.message();
+    const std::string prefix = diagnostic.file + ":";
+    if (note.rfind(prefix, 0) == 0) note = (diagnostic.line > 0 ? "line " : "") + note.substr(prefix.size());
+    if (count > 1) note += " (and " + std::to_string(count - 1) + " more)";
+    return note;
+}
 
 const char* outcomeText(Outcome outcome) {
     switch (outcome) {
@@ -71,23 +104,29 @@ std::vector<fs::path> sceneFiles(const fs::path& folder, const std::string& glob
 }
 
 /// Loads, simulates and checks one file; every way it can go wrong becomes the row's note.
-GradeRow gradeFile(const fs::path& path, const fs::path& folder, const std::vector<Expectation>* instructor,
-                   std::uint64_t maxSteps) {
+GradeRow gradeFile(const fs::path& path, const fs::path& folder, const AnswerKey* key, std::uint64_t maxSteps) {
     GradeRow row;
     row.file = path.lexically_relative(folder).generic_string();
     std::unique_ptr<Scene> scene;
     try {
         scene = std::make_unique<Scene>(loadSceneFile(path.string()));
     } catch (const ConfigError& error) {
-        const std::size_t count = error.diagnostics().size();
         // The row already names the file: "line 14:109: error: Mass: …" leaves room for the message.
-        row.note = error.diagnostics().front().message();
-        const std::string prefix = path.string() + ":";
-        if (row.note.rfind(prefix, 0) == 0) row.note = "line " + row.note.substr(prefix.size());
-        if (count > 1) row.note += " (and " + std::to_string(count - 1) + " more)";
+        row.note = rowNote(error.diagnostics().front(), error.diagnostics().size());
         return row;
     }
-    const std::vector<Expectation> expectations = instructor ? *instructor : scene->expectations;
+    if (key != nullptr && !key->mayChange.empty()) {
+        for (const SceneChange& change : compareWithStarter(key->text, readText(path), key->mayChange)) {
+            if (!change.allowed) row.changes.push_back(changeDiagnostic(change, path.string(), key->mayChange));
+        }
+    }
+    // A change the assignment does not allow fails the file, whatever the expectations measure.
+    const auto reportChanges = [&row]() {
+        if (row.changes.empty()) return;
+        row.outcome = Outcome::Fail;
+        row.note = rowNote(row.changes.front(), row.changes.size());
+    };
+    const std::vector<Expectation> expectations = key ? key->expectations : scene->expectations;
     row.total = expectations.size();
     if (expectations.empty()) {
         row.note = "no Expect records: nothing to check";
@@ -100,6 +139,7 @@ GradeRow gradeFile(const fs::path& path, const fs::path& folder, const std::vect
         if (steps > double(maxSteps)) {
             row.note = "needs " + std::to_string(static_cast<unsigned long long>(steps)) + " steps, more than --max-steps " +
                        std::to_string(maxSteps) + " (check its TimeStep and Duration)";
+            reportChanges();
             return row;
         }
         ExpectationMonitor monitor(world, expectations);
@@ -125,7 +165,9 @@ GradeRow gradeFile(const fs::path& path, const fs::path& folder, const std::vect
         row.outcome = row.passed == row.total && failure.empty() ? Outcome::Pass : Outcome::Fail;
     } catch (const std::invalid_argument& error) {
         row.note = std::string("the scene cannot be simulated: ") + error.what();
+        return row;
     }
+    reportChanges();
     return row;
 }
 
@@ -188,16 +230,20 @@ int gradeCommand(const GradeOptions& options) {
         std::fprintf(stderr, "stepwise: error: '%s' is not a folder\n", options.folder.c_str());
         return kExitUsageError;
     }
-    std::vector<Expectation> instructor;
+    AnswerKey key;
     if (options.expectPath) {
+        key.path = *options.expectPath;
         try {
-            instructor = loadSceneFile(*options.expectPath).expectations;
+            Scene scene = loadSceneFile(key.path);
+            key.expectations = std::move(scene.expectations);
+            key.mayChange = std::move(scene.mayChange);
         } catch (const ConfigError& error) {
             for (const ConfigDiagnostic& d : error.diagnostics()) std::fprintf(stderr, "%s\n", d.message().c_str());
             std::fprintf(stderr, "stepwise: the --expect file does not load; nothing was graded.\n");
             return kExitUsageError;
         }
-        if (instructor.empty()) {
+        key.text = readText(key.path);
+        if (key.expectations.empty()) {
             std::fprintf(stderr, "stepwise: error: %s has no Expect records\n", options.expectPath->c_str());
             return kExitUsageError;
         }
@@ -212,10 +258,17 @@ int gradeCommand(const GradeOptions& options) {
     std::printf("Grading %zu file(s) in %s against %s\n", files.size(), options.folder.c_str(),
                 options.expectPath ? ("the Expect records of " + *options.expectPath).c_str()
                                    : "each file's own Expect records");
+    if (!key.mayChange.empty()) {
+        std::string permitted;
+        for (const MayChange& m : key.mayChange) permitted += (permitted.empty() ? "" : ", ") + describeAllowed(m);
+        std::printf("Only its MayChange fields may differ from it: %s\n", permitted.c_str());
+    } else if (options.expectPath) {
+        std::printf("It has no MayChange records: submissions may change anything\n");
+    }
     std::vector<GradeRow> rows;
     std::size_t fileWidth = std::string("file").size();
     for (const fs::path& file : files) {
-        rows.push_back(gradeFile(file, options.folder, options.expectPath ? &instructor : nullptr, options.maxSteps));
+        rows.push_back(gradeFile(file, options.folder, options.expectPath ? &key : nullptr, options.maxSteps));
         fileWidth = std::max(fileWidth, rows.back().file.size());
     }
     std::printf("  %-*s  %-6s %-7s %s\n", static_cast<int>(fileWidth), "file", "result", "passed", "first failure");
@@ -230,6 +283,15 @@ int gradeCommand(const GradeOptions& options) {
     }
     std::printf("%zu file(s): %zu passed, %zu failed, %zu could not be run\n", rows.size(), counts[0], counts[1],
                 counts[2]);
+    // Every change, in full: the table shows only the first of each file.
+    bool heading = false;
+    for (const GradeRow& row : rows) {
+        for (const ConfigDiagnostic& change : row.changes) {
+            if (!heading) std::printf("\nChanges that %s does not allow:\n", key.path.c_str());
+            heading = true;
+            std::printf("%s\n", change.message().c_str());
+        }
+    }
     return counts[0] == rows.size() ? kExitOk : kExitExpectationFailed;
 }
 

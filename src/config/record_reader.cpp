@@ -80,6 +80,24 @@ Vec3 RecordValues::triple(std::string_view field, const Vec3& fallback) const {
 
 std::optional<std::string> RecordValues::text(std::string_view field) const { return slot(field).text; }
 
+RecordValues::WrittenPart RecordValues::written(std::size_t field, int component) const {
+    const Slot& s = slots_.at(field);
+    const std::size_t part = component == kWholeField ? 0 : static_cast<std::size_t>(component);
+    WrittenPart written;
+    written.given = s.setAtColumn.at(part) != 0;
+    if (!written.given) return written;
+    if (s.numbers[part] || !s.numberText[part].empty()) {
+        written.number = s.numbers[part];
+        written.text = s.numberText[part];
+        written.column = s.numberColumn[part];
+    } else {
+        written.choice = s.choice;
+        written.text = s.text.value_or("");
+        written.column = s.valueColumn;
+    }
+    return written;
+}
+
 // ---------------------------------------------------------------- RecordReader
 
 /// Reads one line into RecordValues. A class only so that the line, the
@@ -245,6 +263,8 @@ private:
     }
 
     void readComponent(const FieldSpec& field, RecordValues::Slot& slot, std::size_t component, const Token& value) {
+        slot.numberText[component] = std::string(value.text);
+        slot.numberColumn[component] = value.column;
         const Parsed<Real> number = parseNumber(value, field.range);
         if (number.ok()) {
             slot.numbers[component] = number.value();

@@ -82,11 +82,26 @@ public:
     /// @brief The field's text as written (a Name, or the word of a choice field), or nullopt when not given.
     std::optional<std::string> text(std::string_view field) const;
 
+    /// @brief One part of a field as the line gave it: what comparing two files record by record needs.
+    struct WrittenPart {
+        bool given = false;                 ///< Did the line set this part?
+        std::string text;                   ///< As written: "1/60", "Euler", "ball"; "" when not given.
+        int column = 0;                     ///< Column of that text; 0 when not given.
+        std::optional<Real> number;         ///< Number, vector and colour fields: the value.
+        std::optional<std::size_t> choice;  ///< Word fields: the index into the field kind's choice table.
+    };
+
+    /// @brief Field number @p field of the record table; @p component 0–2 for one number of a
+    ///        vector or colour, kWholeField for any other kind.
+    WrittenPart written(std::size_t field, int component) const;
+
 private:
     /// Everything the file said about one field.
     struct Slot {
         std::array<std::optional<Real>, 3> numbers;  ///< [0] for a number; X, Y, Z (or R, G, B) for triples.
         std::array<int, 3> setAtColumn{};            ///< Token column that set each part; 0 = not set yet.
+        std::array<std::string, 3> numberText;       ///< Each number as written, e.g. "1/60".
+        std::array<int, 3> numberColumn{};           ///< Column of each number as written.
         int valueColumn = 0;                         ///< Column of the value where first set.
         std::optional<std::size_t> choice;           ///< Index into the kind's choice table.
         std::optional<std::string> text;             ///< A name's text, or a choice's word, as written.

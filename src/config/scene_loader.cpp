@@ -196,12 +196,14 @@ public:
             case RecordKind::BallJoint: addJoint(values, line, index, JointKind::Ball); break;
             case RecordKind::HingeJoint: addJoint(values, line, index, JointKind::Hinge); break;
             case RecordKind::AngularMotor: addJoint(values, line, index, JointKind::AngularMotor); break;
+            case RecordKind::MayChange: addMayChange(values, line); break;
         }
     }
 
     /// The finished Scene, or ConfigError with every problem found.
     Scene finish() {
         resolveExpectNames();
+        resolveMayChange();
         resolveSprings();
         resolveJoints();
         if (sink_.diagnostics().empty()) {
@@ -530,6 +532,76 @@ private:
             }
             Expectation& e = scene_.expectations[pending.expectation];
             (pending.field == "Object" ? e.object : e.plane) = found->second.name;
+        }
+    }
+
+    /// A MayChange record: the field (or one component of it) that a student
+    /// may edit, of the object named by Object, or of the World record when
+    /// Object is left out. Its object may come later in the file, so the
+    /// names are checked in finish(), by resolveMayChange().
+    void addMayChange(const RecordValues& values, const SceneLine& line) {
+        const std::optional<std::string> field = values.text("Field");
+        if (!values.isSet("Field")) {
+            sink_.report(line.number, line.tokens.front().column, "Field", "the field a student may change",
+                         lineText(line),
+                         "e.g. MayChange, Object=ball, Field=Elasticity, or MayChange, Field=TimeStep for the World "
+                         "record");
+            return;
+        }
+        const std::optional<std::string> object = values.text("Object");
+        if (!field || (values.isSet("Object") && !object)) return;  // a malformed name: reported already
+        pendingChanges_.push_back({line.number, object, values.valueColumn("Object"), *field, values.valueColumn("Field")});
+    }
+
+    /// Each MayChange record's Object must name an object of the file, and its
+    /// Field must be a field of that object's record (of the World record
+    /// without an Object). Name cannot change: grading matches records by it.
+    void resolveMayChange() {
+        for (const PendingChange& pending : pendingChanges_) {
+            const RecordSpec* spec = findRecord("World");
+            std::string object;
+            if (pending.object) {
+                const auto found = names_.find(toLower(*pending.object));
+                if (found == names_.end()) {
+                    std::vector<std::string> known;
+                    for (const auto& [key, use] : names_) known.push_back(use.name);
+                    const auto suggestion = closestMatch(*pending.object, known);
+                    sink_.report(pending.line, pending.objectColumn, "Object", "the name of an object in this file",
+                                 *pending.object,
+                                 suggestion ? "did you mean '" + *suggestion + "'?"
+                                            : "leave Object out for a field of the World record");
+                    continue;
+                }
+                object = found->second.name;
+                spec = findRecord(found->second.record);
+            }
+            const std::optional<FieldRef> ref = findField(*spec, pending.field);
+            if (ref && spec->fields[ref->field].name != "Name") {
+                scene_.mayChange.push_back({pending.line, object, fieldName(spec->fields[ref->field], ref->component)});
+                continue;
+            }
+            std::vector<std::string> spellings;
+            std::string names;
+            for (const FieldSpec& f : spec->fields) {
+                if (f.name == "Name") continue;
+                names += (names.empty() ? "" : ", ") + std::string(f.name);
+            }
+            for (const std::string& spelling : fieldSpellings(*spec)) {
+                if (spelling != "Name") spellings.push_back(spelling);
+            }
+            const std::string owner = object.empty() ? std::string("the World record")
+                                                     : "the " + std::string(spec->name) + " " + quoted(object);
+            std::string hint;
+            if (ref) {
+                hint = "grading finds each object by its name, so the name cannot change";
+            } else if (const auto suggestion = closestMatch(pending.field, spellings)) {
+                hint = "did you mean '" + *suggestion + "'?";
+            } else if (object.empty()) {
+                hint = "without Object, Field is a field of the World record; name the object it belongs to, "
+                       "e.g. Object=ball";
+            }
+            sink_.report(pending.line, pending.fieldColumn, "Field", "a field of " + owner + " (" + names + ")",
+                         pending.field, std::move(hint));
         }
     }
 
@@ -899,6 +971,15 @@ private:
         std::size_t expectation = 0;  ///< Index into Scene::expectations.
     };
 
+    /// A MayChange record as read from its line, before its object is looked up by name.
+    struct PendingChange {
+        int line = 0;                       ///< Line of the record.
+        std::optional<std::string> object;  ///< Object as written; nullopt: the World record.
+        int objectColumn = 0;               ///< Column of the Object's value.
+        std::string field;                  ///< Field as written.
+        int fieldColumn = 0;                ///< Column of the Field's value.
+    };
+
     /// A Spring as read from its line, before its bodies are looked up by name.
     struct PendingSpring {
         Spring spring;                      ///< Everything but the body indices (and maybe the rest length).
@@ -913,6 +994,7 @@ private:
     Scene scene_;
     DiagnosticSink sink_;
     std::vector<PendingName> pendingNames_;  ///< Names used by Expect records.
+    std::vector<PendingChange> pendingChanges_;  ///< MayChange records, resolved by finish().
     std::map<std::string, NameUse> names_;  ///< Lower-cased name → first use.
     std::array<int, kRecordKindCount> counts_{};  ///< Records seen so far, per RecordKind (for default names).
     std::vector<PendingSpring> pendingSprings_;   ///< Springs in file order, resolved by finish().

@@ -218,12 +218,22 @@ constexpr FieldSpec kAngularMotorFields[] = {
     {"CollideConnected", FieldKind::Boolean, kNamedOnly, Range::Any},
 };
 
+/// MayChange: one field an assignment lets students edit (docs/config-format.md#maychange).
+/// `stepwise grade --expect STARTER` compares every other field of every
+/// record of a submission with the starter's; the loader checks that the
+/// object exists and has the field.
+constexpr FieldSpec kMayChangeFields[] = {
+    {"Object",           FieldKind::Name,    kNamedOnly, Range::Any},              // an object's Name; left out: the World record
+    {"Field",            FieldKind::Name,    kNamedOnly, Range::Any},              // one of its fields, or one component: ScaleY
+};
+
 constexpr RecordSpec kRecords[] = {
     {RecordKind::DynamicObject,    "DynamicObject",    kDynamicFields},
     {RecordKind::KinematicsObject, "KinematicsObject", kKinematicFields},
     {RecordKind::CollisionPlane,   "CollisionPlane",   kPlaneFields},
     {RecordKind::World,            "World",            kWorldFields},
     {RecordKind::Expect,           "Expect",           kExpectFields},
+    {RecordKind::MayChange,        "MayChange",        kMayChangeFields},
     {RecordKind::Spring,           "Spring",           kSpringFields},
     {RecordKind::Attractor,        "Attractor",        kAttractorFields},
     {RecordKind::DistanceJoint,    "DistanceJoint",    kTwoAnchorJointFields},

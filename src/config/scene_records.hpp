@@ -63,10 +63,11 @@ enum class RecordKind : std::uint8_t {
     BallJoint,         ///< A shared point.
     HingeJoint,        ///< A shared point and axis; limits, motor.
     AngularMotor,      ///< A torque-limited spin about one axis.
+    MayChange,         ///< A field a student may edit (`stepwise grade --expect` compares the rest with the starter).
 };
 
 /// @brief Number of RecordKind values.
-inline constexpr std::size_t kRecordKindCount = 12;
+inline constexpr std::size_t kRecordKindCount = 13;
 
 /// @brief One record type: its name and its field table.
 struct RecordSpec {

@@ -14,6 +14,18 @@
 
 namespace stepwise {
 
+/// @brief One `MayChange` record: a field an assignment lets students edit.
+///
+/// The World never reads these. `stepwise grade --expect STARTER` does: it
+/// compares every record of a submission with the starter's, field by
+/// field, and fails any change that no MayChange record of the starter
+/// names (docs/config-format.md, section "MayChange").
+struct MayChange {
+    int line = 0;        ///< Line of the record in its file.
+    std::string object;  ///< The object's name, spelled as its own record spells it; "" = the World record.
+    std::string field;   ///< The field's canonical name, or one component of it: "Elasticity", "ScaleY".
+};
+
 /// @brief Everything a scene file describes, before it becomes a World.
 ///
 /// The scene loader fills a Scene completely or throws: there is never a
@@ -29,6 +41,7 @@ struct Scene {
     std::vector<JointDef> joints;            ///< Joints between dynamic bodies (or to the world), in world space.
     std::vector<std::string> warnings;       ///< Things that load but may surprise (e.g. features not yet simulated).
     std::vector<Expectation> expectations;   ///< `Expect` records: what `stepwise run` checks (World ignores them).
+    std::vector<MayChange> mayChange;        ///< `MayChange` records: what `stepwise grade` lets a student edit.
 };
 
 }  // namespace stepwise
