@@ -15,6 +15,7 @@
 #include "precision.hpp"
 #include "stress.hpp"
 #include "scaling_commands.hpp"
+#include "soak.hpp"
 
 namespace {
 
@@ -29,6 +30,7 @@ const char* const kUsage =
     "  scaling       the cost per body from 1k to 64k bodies\n"
     "  stage-costs   the settled rain's cost per body, stage by stage\n"
     "  bullet        the same scene files in Stepwise and in Bullet 3\n"
+    "  soak          random valid scenes of every kind for a million steps\n"
     "  rain-scene    writes a sphere-rain scene file\n"
     "\n"
     "usage: stepwise-bench precision [--quick] [--repeats N] [--csv PATH] [--markdown PATH] [--config DIR]\n"
@@ -101,6 +103,7 @@ int main(int argc, char** argv) {
     if (args.empty() || args[0] == "--help" || args[0] == "-h") {
         std::fputs(kUsage, args.empty() ? stderr : stdout);
         std::fputs(stepwise::bench::kScalingUsage, args.empty() ? stderr : stdout);
+        std::fputs(stepwise::bench::kSoakUsage, args.empty() ? stderr : stdout);
         return args.empty() ? kExitUsage : kExitOk;
     }
     if (args[0] == "stress") return runStressCommand(args);
@@ -108,6 +111,7 @@ int main(int argc, char** argv) {
     if (args[0] == "stage-costs") return stepwise::bench::stageCostsCommand({args.begin() + 1, args.end()});
     if (args[0] == "bullet") return stepwise::bench::bulletCommand({args.begin() + 1, args.end()});
     if (args[0] == "rain-scene") return stepwise::bench::rainSceneCommand({args.begin() + 1, args.end()});
+    if (args[0] == "soak") return stepwise::bench::soakCommand({args.begin() + 1, args.end()});
     if (args[0] != "precision") return usageError("unknown subcommand '" + args[0] + "'");
 
     stepwise::bench::PrecisionOptions options;
