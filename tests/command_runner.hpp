@@ -2,8 +2,11 @@
 #pragma once
 
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <stdexcept>
 #include <string>
 
@@ -26,5 +29,29 @@ inline CommandResult shell(const std::string& command) {
     result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     return result;
 }
+
+#ifdef STEPWISE_CLI_PATH
+/// Runs `stepwise ARGS` (the program built with the tests) and captures what it prints.
+inline CommandResult runStepwise(const std::string& args) {
+    return shell(std::string("'") + STEPWISE_CLI_PATH + "' " + args);
+}
+#endif
+
+/// A scratch file in the system's temporary folder, named after the test process so that
+/// parallel test runs do not share it, and removed at scope exit.
+struct TempFile {
+    std::filesystem::path path;  ///< Where the file is.
+    /// Names the file; writes @p contents into it unless they are empty.
+    explicit TempFile(const std::string& name, const std::string& contents = "")
+        : path(std::filesystem::temp_directory_path() /
+               ("stepwise-test-" + std::to_string(::getpid()) + "-" + name)) {
+        if (!contents.empty()) std::ofstream(path, std::ios::binary) << contents;
+    }
+    ~TempFile() { std::filesystem::remove(path); }
+    TempFile(const TempFile&) = delete;
+    TempFile& operator=(const TempFile&) = delete;
+    /// The path in single quotes, for a shell command line.
+    std::string quoted() const { return "'" + path.string() + "'"; }
+};
 
 }  // namespace stepwise::test

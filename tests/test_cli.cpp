@@ -21,19 +21,8 @@ namespace {
 
 using Result = stepwise::test::CommandResult;
 
-/// Runs `stepwise ARGS` and captures what it prints.
-Result runStepwise(const std::string& args) { return stepwise::test::shell(std::string("'") + STEPWISE_CLI_PATH + "' " + args); }
-
-/// A scratch file in the system's temporary folder, removed at scope exit.
-struct TempFile {
-    std::filesystem::path path;
-    explicit TempFile(const std::string& name, const std::string& contents = "")
-        : path(std::filesystem::temp_directory_path() / ("stepwise-test-" + name)) {
-        if (!contents.empty()) std::ofstream(path) << contents;
-    }
-    ~TempFile() { std::filesystem::remove(path); }
-    std::string quoted() const { return "'" + path.string() + "'"; }
-};
+using stepwise::test::runStepwise;
+using stepwise::test::TempFile;
 
 std::vector<std::string> lines(const std::filesystem::path& path) {
     std::ifstream in(path);

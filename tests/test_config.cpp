@@ -424,3 +424,32 @@ TEST_CASE("The tokenizer keeps vectors whole and reports columns", "[config]") {
     CHECK(named->value.text == "(1, 2, 3)");
     CHECK(named->value.column == 8);
 }
+
+TEST_CASE("Bodies that will press on each other beyond the solver's mass ratio are warned about", "[config]") {
+    // kMaxMassRatio (src/core/limits.hpp) is the ratio the solver holds; the warning names the
+    // lighter body, at its line, and the heavier one.
+    const std::string base = "CollisionPlane\n"
+                             "DynamicObject, Name=light, Shape=Box, Position=(0, 0.5, 0), Mass=1\n";
+    const auto warningsOf = [&](const std::string& more) { return parseScene(base + more, "ratio.scene").warnings; };
+
+    SECTION("a box resting on a much lighter one") {
+        const std::vector<std::string> warnings =
+            warningsOf("DynamicObject, Name=heavy, Shape=Box, Position=(0, 1.5, 0), Mass=1001\n");
+        REQUIRE(warnings.size() == 1);
+        CHECK_THAT(warnings[0], Catch::Matchers::StartsWith("ratio.scene:2: warning: DynamicObject 'light' (1 kg) "
+                                                            "presses on 'heavy' (1001 kg)"));
+    }
+    SECTION("exactly at the ratio, no warning") {
+        CHECK(warningsOf("DynamicObject, Name=heavy, Shape=Box, Position=(0, 1.5, 0), Mass=1000\n").empty());
+    }
+    SECTION("bodies far apart may differ as much as they like") {
+        CHECK(warningsOf("DynamicObject, Name=heavy, Shape=Box, Position=(5, 0.5, 0), Mass=1e6\n").empty());
+    }
+    SECTION("a joint makes them press on each other wherever they start") {
+        const std::vector<std::string> warnings =
+            warningsOf("DynamicObject, Name=heavy, Position=(5, 0.5, 0), Mass=1e6\n"
+                       "BallJoint, BodyA=light, BodyB=heavy, Anchor=(2.5, 0.5, 0)\n");
+        REQUIRE(warnings.size() == 1);
+        CHECK_THAT(warnings[0], Catch::Matchers::Contains("'light' (1 kg) presses on 'heavy'"));
+    }
+}

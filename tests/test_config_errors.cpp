@@ -53,10 +53,11 @@ TEST_CASE("A diagnostic reads file:line:column: error: field: expected, found, a
     const ConfigDiagnostic problem = theProblemIn("DynamicObject, Mass=-2\n");
     //                                              1234567890123456789012
     checkLocation(problem, 1, 21, "Mass");
-    CHECK(problem.expected == "a number > 0");
+    CHECK(problem.expected == "a mass from 1e-12 to 1e12 kg");
     CHECK(problem.found == "-2");
     CHECK(problem.message() ==
-          "test.scene:1:21: error: Mass: expected a number > 0, found '-2'; every simulated body needs a positive "
+          "test.scene:1:21: error: Mass: expected a mass from 1e-12 to 1e12 kg, found '-2'; every simulated body "
+          "needs a positive "
           "mass; for something that never moves, use a KinematicsObject or a CollisionPlane");
 }
 
@@ -123,33 +124,47 @@ TEST_CASE("A missing value is reported as found ''", "[config]") {
 
 // ------------------------------------------------------------------ ranges
 
-TEST_CASE("Mass, Radius, Scale, TimeStep and Duration must be positive", "[config]") {
+TEST_CASE("Mass, Radius, Scale, TimeStep and Duration must be positive and in range", "[config]") {
+    // Sizes and masses have a finite range as well as a sign: a 1e-300 m box or a 1e300 kg
+    // ball loads as a number but overflows (or underflows) the inertia tensor, m (a^2 + b^2) / 12.
+    const std::string mass = "a mass from 1e-12 to 1e12 kg";
+    const std::string radius = "a radius from 5e-7 to 500000 m";
+    const std::string size = "a size from 1e-6 to 1e6 m";
     struct Case {
         std::string text;
         int column;
         std::string field;
         std::string found;
+        std::string expected;
     };
     const std::vector<Case> cases = {
-        {"DynamicObject, Mass=0", 21, "Mass", "0"},
-        {"DynamicObject, Mass=-1", 21, "Mass", "-1"},
-        {"DynamicObject, Radius=-0.5", 23, "Radius", "-0.5"},
-        {"KinematicsObject, Radius=0", 26, "Radius", "0"},
+        {"DynamicObject, Mass=0", 21, "Mass", "0", mass},
+        {"DynamicObject, Mass=-1", 21, "Mass", "-1", mass},
+        {"DynamicObject, Mass=1e13", 21, "Mass", "1e13", mass},
+        {"DynamicObject, Mass=1e-300", 21, "Mass", "1e-300", mass},
+        {"DynamicObject, Radius=-0.5", 23, "Radius", "-0.5", radius},
+        {"KinematicsObject, Radius=0", 26, "Radius", "0", radius},
+        {"DynamicObject, Radius=1e6", 23, "Radius", "1e6", radius},
         //          1234567890123456789012345678
-        {"DynamicObject, Scale=(1, 0, 1)", 26, "ScaleY", "0"},
-        {"KinematicsObject, ScaleZ=-2", 26, "ScaleZ", "-2"},
+        {"DynamicObject, Scale=(1, 0, 1)", 26, "ScaleY", "0", size},
+        {"KinematicsObject, ScaleZ=-2", 26, "ScaleZ", "-2", size},
+        {"DynamicObject, ScaleX=1e-300", 23, "ScaleX", "1e-300", size},
         // Positional: Sphere,1,1,1 (colour),0,0,0 (position),0,0,0 (velocity),0,0,0 (acceleration),1,1,-1 (scale)
-        {"DynamicObject,Sphere,1,1,1,0,0,0,0,0,0,0,0,0,1,1,-1", 50, "ScaleZ", "-1"},
-        {"World, TimeStep=0", 17, "TimeStep", "0"},
-        {"World, Duration=-10", 17, "Duration", "-10"},
+        {"DynamicObject,Sphere,1,1,1,0,0,0,0,0,0,0,0,0,1,1,-1", 50, "ScaleZ", "-1", size},
+        {"World, TimeStep=0", 17, "TimeStep", "0", "a number > 0"},
+        {"World, Duration=-10", 17, "Duration", "-10", "a number > 0"},
     };
     for (const Case& c : cases) {
         INFO(c.text);
         const ConfigDiagnostic problem = theProblemIn(c.text + "\n");
         checkLocation(problem, 1, c.column, c.field);
-        CHECK(problem.expected == "a number > 0");
+        CHECK(problem.expected == c.expected);
         CHECK(problem.found == c.found);
     }
+    // The ends of each range are valid.
+    CHECK_NOTHROW(parseScene("DynamicObject, Mass=1e12\nDynamicObject, Mass=1e-12\n"
+                             "DynamicObject, Shape=Cube, Scale=(1e6, 1e-6, 1)\n",
+                             "edges.scene"));
 }
 
 TEST_CASE("Elasticity must lie in [0, 1] and Friction must not be negative", "[config]") {
@@ -182,7 +197,7 @@ TEST_CASE("Colour channels must lie from 0 to 1, and 0-255 values get a hint", "
 TEST_CASE("A zero or near-zero plane normal is rejected", "[config]") {
     const ConfigDiagnostic whole = theProblemIn("CollisionPlane, Normal=(0, 0, 0)\n");
     checkLocation(whole, 1, 24, "Normal");
-    CHECK(whole.expected == "a non-zero vector");
+    CHECK(whole.expected == "a direction (a vector of length > 0, whose squares do not overflow)");
     CHECK(whole.found == "(0, 0, 0)");
 
     const ConfigDiagnostic tiny = theProblemIn("CollisionPlane, Normal=(1e-10, 0, 0)\n");

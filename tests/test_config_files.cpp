@@ -9,14 +9,19 @@
 
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "config/field_values.hpp"
 #include "config/scene_loader.hpp"
+#include "config/scene_records.hpp"
+#include "core/limits.hpp"
 #include "expectation_runner.hpp"
 
 using namespace stepwise;
+using namespace stepwise::config;
 namespace fs = std::filesystem;
 
 namespace {
@@ -151,6 +156,123 @@ TEST_CASE("Every example in docs/config-format.md behaves as documented", "[conf
     }
     CHECK(scenes >= kMinimumSceneBlocks);
     CHECK(errors >= kMinimumErrorBlocks);
+}
+
+namespace {
+
+/// The lines of @p markdown from the heading that names @p record (e.g. "## DynamicObject {#...}",
+/// "### DistanceJoint and Rope {#...}") to the next heading of the same or a higher level.
+std::vector<std::string> sectionOf(const std::string& markdown, std::string_view record) {
+    std::vector<std::string> section;
+    std::istringstream lines(markdown);
+    std::string line;
+    std::size_t level = 0;
+    const std::regex names("^(#{2,3}) .*\\b" + std::string(record) + "\\b.*\\{#");
+    while (std::getline(lines, line)) {
+        const std::size_t hashes = line.find_first_not_of('#');
+        const bool heading = hashes != std::string::npos && hashes >= 1 && line[hashes] == ' ';
+        if (level == 0) {
+            std::smatch match;
+            if (std::regex_search(line, match, names)) level = match[1].length();
+        } else if (heading && hashes <= level) {
+            break;
+        } else {
+            section.push_back(line);
+        }
+    }
+    return section;
+}
+
+/// The cells of a Markdown table row "| a | b |", trimmed.
+std::vector<std::string> cellsOf(const std::string& row) {
+    std::vector<std::string> cells;
+    std::string cell;
+    for (std::size_t i = 1; i < row.size(); ++i) {
+        if (row[i] == '|') {
+            cells.push_back(trimmed(cell));
+            cell.clear();
+        } else {
+            cell += row[i];
+        }
+    }
+    return cells;
+}
+
+/// What the *Valid* cell of a field of range @p range must say, taken from the words the loader's
+/// diagnostics use (describe()), so that both come from the constants of src/core/limits.hpp.
+std::string documentedRange(Range range) {
+    switch (range) {
+        case Range::Positive: return "> 0";
+        case Range::NonNegative: return "≥ 0";
+        case Range::UnitInterval: return "0–1";
+        default: break;
+    }
+    const std::string words = describe(range);  // "a size from 1e-6 to 1e6 m", "a length of at least 1e-6 m"
+    std::smatch match;
+    if (std::regex_search(words, match, std::regex("from (\\S+ to \\S+)"))) return match[1];
+    if (std::regex_search(words, match, std::regex("at least (\\S+)"))) return "≥ " + match[1].str();
+    FAIL("no documented form for the range described as '" << words << "'");
+    return {};
+}
+
+}  // namespace
+
+TEST_CASE("The Valid column of docs/config-format.md gives every field's range as the loader checks it",
+          "[config]") {
+    const std::string markdown = readText(STEPWISE_SOURCE_DIR "/docs/config-format.md");
+    std::size_t checked = 0;
+    for (const RecordSpec& record : allRecords()) {
+        const std::vector<std::string> section = sectionOf(markdown, record.name);
+        for (const FieldSpec& field : record.fields) {
+            const bool numeric = field.kind == FieldKind::Number || field.kind == FieldKind::Vector || field.kind == FieldKind::Color;
+            if (field.range == Range::Any || !numeric) continue;
+            INFO(record.name << "." << field.name << ": expected '" << documentedRange(field.range) << "'");
+            // Find the field's row: the table's header names the Valid column.
+            int validColumn = -1;
+            std::string validCell;
+            bool found = false;
+            for (const std::string& line : section) {
+                if (line.rfind('|', 0) != 0) continue;
+                const std::vector<std::string> cells = cellsOf(line);
+                for (std::size_t c = 0; c < cells.size(); ++c) {
+                    if (cells[c] == "Valid") validColumn = int(c);
+                }
+                const std::string name = "`" + std::string(field.name) + "`";
+                for (const std::string& cell : cells) {
+                    if (cell.rfind(name, 0) == 0 && validColumn >= 0 && validColumn < int(cells.size())) {
+                        validCell = cells[validColumn];
+                        found = true;
+                    }
+                }
+                if (found) break;
+            }
+            if (!found) {
+                // Expect and MayChange list their fields in prose; the rest must have a table row.
+                if (record.kind == RecordKind::Expect || record.kind == RecordKind::MayChange) continue;
+                FAIL_CHECK("no table row in the record's section");
+                continue;
+            }
+            INFO("Valid cell: '" << validCell << "'");
+            // A count checked as whole elsewhere (Expect's Apex) may say "whole number ≥ 1" for "> 0".
+            const bool wholeCount = field.range == Range::Positive && validCell == "whole number ≥ 1";
+            CHECK((validCell.find(documentedRange(field.range)) != std::string::npos || wholeCount));
+            ++checked;
+        }
+    }
+    // Mass, Radius, Scale, Elasticity, Friction, the World's counts and rates, springs, joints...
+    CHECK(checked >= 40);
+}
+
+TEST_CASE("The mass ratio the docs quote is the solver's kMaxMassRatio", "[config][solver]") {
+    // Prose wraps lines anywhere: compare with runs of white space made one space.
+    const auto flattened = [](const std::string& text) {
+        return std::regex_replace(text, std::regex("\\s+"), " ");
+    };
+    const std::string ratio = std::to_string(static_cast<long long>(kMaxMassRatio));
+    const std::string reference = flattened(readText(STEPWISE_SOURCE_DIR "/docs/config-format.md"));
+    CHECK_THAT(reference, Catch::Matchers::Contains("one more than " + ratio + " times heavier than the other"));
+    const std::string lecture = flattened(readText(STEPWISE_SOURCE_DIR "/lectures/08-constraint-solver.md"));
+    CHECK_THAT(lecture, Catch::Matchers::Contains("at " + ratio + ":1 both overlaps stay under 1 cm"));
 }
 
 TEST_CASE("Every scene shipped in config/ loads", "[config]") {

@@ -63,9 +63,7 @@ struct TempFolder {
     std::string quoted() const { return "'" + path.string() + "'"; }
 };
 
-stepwise::test::CommandResult runStepwise(const std::string& args) {
-    return stepwise::test::shell(std::string("'") + STEPWISE_CLI_PATH + "' " + args);
-}
+using stepwise::test::runStepwise;
 
 }  // namespace
 

@@ -675,9 +675,9 @@ TEST_CASE("Joint records check what spans their fields", "[joints][config]") {
     CHECK_THAT(firstError("DynamicObject, Name=a\nRope, BodyA=a\n"),
                Contains("AnchorB: expected a point (x, y, z)") && Contains("fixed to the world"));
     CHECK_THAT(firstError("DynamicObject, Name=a\nDistanceJoint, BodyA=a, AnchorB=(0, 0, 0)\n"),
-               Contains("Length: expected a length > 0") && Contains("anchors coincide"));
+               Contains("Length: expected a length of at least 1e-6 m") && Contains("anchors (almost) coincide"));
     CHECK_THAT(firstError("DynamicObject, Name=a\nHingeJoint, BodyA=a, Axis=(0, 0, 0)\n"),
-               Contains("Axis: expected a non-zero vector"));
+               Contains("Axis: expected a direction (a vector of length > 0"));
     CHECK_THAT(firstError("DynamicObject, Name=a\nHingeJoint, BodyA=a, LowerAngle=30, UpperAngle=10\n"),
                Contains("UpperAngle: expected an angle >= LowerAngle (30), found '10'"));
     CHECK_THAT(firstError("DynamicObject, Name=a\nHingeJoint, BodyA=a, UpperAngle=270\n"),

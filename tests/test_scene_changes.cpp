@@ -55,9 +55,7 @@ std::string words(const std::vector<SceneChange>& changes) {
     return text.str();
 }
 
-stepwise::test::CommandResult runStepwise(const std::string& args) {
-    return stepwise::test::shell(std::string("'") + STEPWISE_CLI_PATH + "' " + args);
-}
+using stepwise::test::runStepwise;
 
 std::string readText(const std::filesystem::path& path) {
     std::ifstream in(path, std::ios::binary);

@@ -7,9 +7,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "config/scene_loader.hpp"
+#include "core/limits.hpp"
 #include "dynamics/contact_solver.hpp"
 #include "dynamics/impulse_resolver.hpp"
 #include "objects/inertia.hpp"
@@ -93,6 +96,30 @@ TEST_CASE("A 100 kg box stands on a 1 kg box (mass ratio 100:1)", "[solver][stac
     INFO("worst move " << motion.worstMove << " m, worst tilt " << motion.worstTilt / kDegree << " deg");
     CHECK(motion.worstMove < 0.01);
     CHECK(motion.worstTilt < 1 * kDegree);
+}
+
+TEST_CASE("The solver holds a box under one kMaxMassRatio times heavier, and not ten times that", "[solver][stacking]") {
+    // kMaxMassRatio is the ratio the loader's and the run's warnings quote (src/core/limits.hpp).
+    // Held: after 5 s, neither contact of the light box (floor, heavy box) overlaps by more than
+    // 1 cm, the tolerance of the stacking tests. Not held at 10 times the ratio: the light box's
+    // centre ends below the floor, which is why the warnings exist.
+    const auto lightBoxAfter = [](Real ratio) {
+        Scene scene = parseScene("World, Duration=5, Sleep=false\nCollisionPlane\n"
+                                 "DynamicObject, Name=light, Shape=Box, Position=(0, 0.5, 0), Mass=1, Elasticity=0\n"
+                                 "DynamicObject, Name=heavy, Shape=Box, Position=(0, 1.5, 0), Elasticity=0, Mass=" +
+                                     std::to_string(double(ratio)) + "\n",
+                                 "ratio.scene");
+        World world(std::move(scene));
+        while (world.time() < 5 - Real(1e-9)) world.step();
+        return std::pair{world.dynamics()[0].position.y, world.dynamics()[1].position.y};
+    };
+    const auto [light, heavy] = lightBoxAfter(kMaxMassRatio);
+    INFO("at " << kMaxMassRatio << ":1, light box centre " << light << " m, heavy box centre " << heavy << " m");
+    CHECK(0.5 - light < 0.01);            // overlap with the floor: the box's bottom is at y - 0.5
+    CHECK(1.0 - (heavy - light) < 0.01);  // overlap of the two 1 m boxes
+    const auto [crushed, above] = lightBoxAfter(10 * kMaxMassRatio);
+    INFO("at " << 10 * kMaxMassRatio << ":1, light box centre " << crushed << " m");
+    CHECK(crushed < 0);
 }
 
 TEST_CASE("Head-on spheres conserve momentum and exchange velocities with e = 1", "[solver]") {

@@ -17,6 +17,7 @@
 #include "io/output_file.hpp"
 #include "io/trajectory_csv.hpp"
 #include "world/measurements.hpp"
+#include "world/run_watch.hpp"
 #include "world/world.hpp"
 
 namespace stepwise::cli {
@@ -25,6 +26,8 @@ namespace {
 
 /// Objects listed one per line in a summary; beyond this the table would scroll away.
 constexpr std::size_t kMaxListedObjects = 20;
+/// Warnings a run prints as they happen (RunWatch); past these, only their number at the end.
+constexpr std::size_t kMaxRunWarnings = 10;
 /// Runs shorter than this many steps finish before a progress line is worth drawing.
 constexpr std::uint64_t kProgressMinSteps = 2000;
 /// Seconds between progress redraws.
@@ -237,6 +240,15 @@ std::unique_ptr<Scene> loadOrReport(const std::string& path) {
     }
 }
 
+/// Prints @p warnings of a run to stderr as they come, up to kMaxRunWarnings in all.
+void reportWarnings(const RunWatch& watch, const std::vector<std::string>& warnings) {
+    std::size_t index = watch.count() - warnings.size();
+    for (const std::string& warning : warnings) {
+        if (index < kMaxRunWarnings) std::fprintf(stderr, "stepwise: warning: %s\n", warning.c_str());
+        ++index;
+    }
+}
+
 int runCommand(const RunOptions& options) {
     std::unique_ptr<Scene> scene = loadOrReport(options.scenePath);
     if (!scene) return kExitUsageError;
@@ -276,6 +288,7 @@ int runCommand(const RunOptions& options) {
     const Vec3 angularMomentumBefore = angularMomentumOf(world);
     const auto start = Clock::now();
     int exitCode = kExitOk;
+    RunWatch watch(world);
     {
         // Ctrl-C or kill: stop between two steps, with every CSV row whole, and report what ran (interrupt.hpp).
         const InterruptGuard interrupts;
@@ -284,6 +297,7 @@ int runCommand(const RunOptions& options) {
             for (std::uint64_t i = 0; i < steps; ++i) {
                 world.step();
                 monitor.observe(world);
+                reportWarnings(watch, watch.observe(world));
                 if (csv && world.stepCount() % options.every == 0) writeTrajectoryRows(csv, world);
                 progress.update(world.stepCount(), double(world.time()));
                 if (csvFile && csvFile->failed()) break;  // a full disk: no use going on
@@ -305,6 +319,9 @@ int runCommand(const RunOptions& options) {
 
     std::printf("Simulated %.6g s in %llu steps\n", double(world.time()),
                 static_cast<unsigned long long>(world.stepCount()));
+    if (watch.count() > kMaxRunWarnings) {
+        std::fprintf(stderr, "stepwise: %zu warnings in all; the first %zu are above\n", watch.count(), kMaxRunWarnings);
+    }
     printBroadphase(world);
     printFinalState(world);
     printJoints(world);

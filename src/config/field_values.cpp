@@ -6,6 +6,8 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <string>
+#include <cstdio>
 #include <system_error>
 
 #include "config/spelling.hpp"
@@ -79,14 +81,33 @@ std::string hintFor(DecimalStatus status) {
     return "";
 }
 
+/// A limit as a person writes it: 1e-06 as "1e-6", 1000000 as "1e6".
+std::string formatLimit(Real value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", double(value));
+    std::string s = text;
+    if (const std::size_t e = s.find("e"); e != std::string::npos) {
+        std::size_t digits = e + 1;
+        if (s[digits] == '+') s.erase(digits, 1);
+        else if (s[digits] == '-') ++digits;
+        while (digits + 1 < s.size() && s[digits] == '0') s.erase(digits, 1);
+    }
+    return s;
+}
+
 bool inRange(Real value, Range range) {
     switch (range) {
         case Range::Any: return true;
         case Range::Positive: return value > 0;
         case Range::NonNegative: return value >= 0;
         case Range::UnitInterval: return value >= 0 && value <= 1;
-        case Range::Count: return value >= 1 && value == std::floor(value);
-        case Range::WholeNumber: return value >= 0 && value == std::floor(value);
+        case Range::Count: return value >= 1 && value <= kMaxRepetitions && value == std::floor(value);
+        case Range::WholeNumber: return value >= 0 && value <= kMaxRepetitions && value == std::floor(value);
+        case Range::ThreadCount: return value >= 0 && value <= kMaxThreads && value == std::floor(value);
+        case Range::Size: return value >= kMinBodySize && value <= kMaxBodySize;
+        case Range::Radius: return value >= kMinBodySize / 2 && value <= kMaxBodySize / 2;
+        case Range::Mass: return value >= kMinMass && value <= kMaxMass;
+        case Range::JointLength: return value >= kMinJointLength;
     }
     return false;
 }
@@ -112,8 +133,14 @@ std::string describe(Range range) {
         case Range::Positive: return "a number > 0";
         case Range::NonNegative: return "a number >= 0";
         case Range::UnitInterval: return "a number from 0 to 1";
-        case Range::Count: return "a whole number >= 1";
-        case Range::WholeNumber: return "a whole number >= 0";
+        case Range::Count: return "a whole number from 1 to " + std::to_string(kMaxRepetitions);
+        case Range::WholeNumber: return "a whole number from 0 to " + std::to_string(kMaxRepetitions);
+        case Range::ThreadCount: return "a whole number from 0 to " + std::to_string(kMaxThreads);
+        case Range::Size: return "a size from " + formatLimit(kMinBodySize) + " to " + formatLimit(kMaxBodySize) + " m";
+        case Range::Radius:
+            return "a radius from " + formatLimit(kMinBodySize / 2) + " to " + formatLimit(kMaxBodySize / 2) + " m";
+        case Range::Mass: return "a mass from " + formatLimit(kMinMass) + " to " + formatLimit(kMaxMass) + " kg";
+        case Range::JointLength: return "a length of at least " + formatLimit(kMinJointLength) + " m";
     }
     return "a number";
 }

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "config/scene_tokenizer.hpp"
+#include "core/limits.hpp"
 #include "core/types.hpp"
 
 namespace stepwise::config {
@@ -32,8 +33,13 @@ enum class Range : std::uint8_t {
     Positive,      ///< > 0 (mass, radius, scale, time step, duration).
     NonNegative,   ///< ≥ 0 (friction).
     UnitInterval,  ///< 0 to 1 inclusive (elasticity, colour channels).
-    Count,         ///< A whole number ≥ 1 (substeps, iterations).
-    WholeNumber,   ///< A whole number ≥ 0 (relax iterations).
+    Count,         ///< A whole number from 1 to kMaxRepetitions (substeps, iterations).
+    WholeNumber,   ///< A whole number from 0 to kMaxRepetitions (relax iterations).
+    ThreadCount,   ///< A whole number from 0 to kMaxThreads (0: one per hardware thread).
+    Size,          ///< A box's edge or a sphere's diameter: kMinBodySize to kMaxBodySize, m.
+    Radius,        ///< Half of a Size, m.
+    Mass,          ///< kMinMass to kMaxMass, kg.
+    JointLength,   ///< At least kMinJointLength, m.
 };
 
 /// @brief Words for an expected value, e.g. "a number > 0", as used in diagnostics.

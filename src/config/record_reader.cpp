@@ -113,7 +113,9 @@ public:
         const int positionalLimit = positionalCount(spec_);
         int nextPositional = 0;
         const Token* firstNamed = nullptr;
+        const Token* lastPositional = nullptr;
         bool reportedTooMany = false;
+        const std::size_t problemsBefore = sink_.diagnostics().size();
 
         for (std::size_t i = 1; i < line_.tokens.size(); ++i) {
             const Token& token = line_.tokens[i];
@@ -131,7 +133,14 @@ public:
                 reportedTooMany = true;  // once per line: the rest are all "too many" as well
             } else {
                 assign(positionalField(spec_, nextPositional++), token, token);
+                lastPositional = &token;
             }
+        }
+        // A vector cut short is only worth saying about a line that is otherwise well formed: after a
+        // bad positional token, the count of values no longer tells which vector was meant.
+        const bool lineWasClean = sink_.diagnostics().size() == problemsBefore;
+        if (lastPositional != nullptr && nextPositional < positionalLimit && lineWasClean) {
+            reportVectorCutShort(*lastPositional, nextPositional);
         }
         return std::move(values_);
     }
@@ -147,6 +156,23 @@ private:
         } else {
             reportUnknownField(named.name);
         }
+    }
+
+    /// A vector is given whole or not at all: positional values that stop inside one (five numbers for a
+    /// plane's Position and Normal) are almost always a number left out, not a component meant to keep its default.
+    void reportVectorCutShort(const Token& last, int given) {
+        const FieldRef next = positionalField(spec_, given);
+        if (next.component <= 0) return;  // the values stop at the end of a field: nothing cut short
+        const FieldSpec& field = spec_.fields[next.field];
+        std::string missing;
+        for (int c = next.component; c < int(componentCount(field.kind)); ++c) {
+            missing += (missing.empty() ? "" : ", ") + fieldName(field, c);
+        }
+        report(last.column, std::string(field.name), "all " + std::to_string(componentCount(field.kind)) +
+                                                         " components of " + std::string(field.name),
+               last.text, "the positional values stop inside " + std::string(field.name) + ": " + missing +
+                              " is missing; give every component, or name the fields you mean (e.g. " +
+                              fieldName(field, 0) + "=...)");
     }
 
     void reportTooManyPositional(const Token& token, int limit) {
@@ -280,9 +306,11 @@ private:
     std::string rangeHint(const FieldSpec& field, const Token& value) const {
         const Parsed<Real> unchecked = parseNumber(value, Range::Any);
         if (!unchecked.ok()) {
-            // Not a number at all; a whole vector in a positional slot is the usual cause.
+            // Not a number at all. A vector where one number belongs: either the field is a number
+            // (Mass=(1,2,3)), or the value stands in a positional slot, which holds one component.
             if (!value.text.empty() && value.text.front() == '(') {
-                return "a positional value is a single number; give a whole vector by name, e.g. " +
+                if (field.kind == FieldKind::Number) return std::string(field.name) + " is one number, not a vector";
+                return "a positional value is one component; give a whole vector by name, e.g. " +
                        std::string(field.name) + "=" + std::string(value.text);
             }
             return "";

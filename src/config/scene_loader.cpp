@@ -31,6 +31,7 @@
 #include "config/scene_records.hpp"
 #include "config/scene_tokenizer.hpp"
 #include "config/spelling.hpp"
+#include "core/limits.hpp"
 #include "objects/inertia.hpp"
 #include "forces/spring_stability.hpp"
 
@@ -69,7 +70,6 @@ constexpr Real kStaticFriction = 1;
 constexpr Real kRadiusPerDiameter = Real(0.5);
 /// Shorter normals than this are treated as zero: normalising them would
 /// amplify rounding noise into an arbitrary direction.
-constexpr Real kMinNormalLength = Real(1e-9);
 
 /// An Expect record's apex must be one the run can count to; more than this is a typo.
 constexpr Real kMaxApex = 1000;
@@ -102,6 +102,10 @@ constexpr Real kDefaultDamping = 0;
 constexpr Real kTolerableGrowth = 2;
 /// ρ above 1 by more than this is growth (symplectic methods have ρ = 1 exactly, up to rounding).
 constexpr Real kGrowthTolerance = Real(1e-12);
+/// Two bodies whose bounding spheres are apart by less than this fraction of the sum of their
+/// radii count as touching at the start, for the mass-ratio warning: a box set on another box
+/// "at" its top face, written with rounded coordinates, may be a hair above it.
+constexpr Real kTouchingMargin = Real(0.01);
 /// A hinge or motor turns about Z unless told otherwise: a wheel facing the default camera.
 const Vec3 kDefaultJointAxis{0, 0, 1};
 /// Hinge limits are angles of a turn, in degrees: at most half a turn either way.
@@ -208,6 +212,7 @@ public:
         resolveJoints();
         if (sink_.diagnostics().empty()) {
             warnAboutUnstableSprings();
+            warnAboutMassRatios();
             return std::move(scene_);
         }
         std::vector<ConfigDiagnostic> diagnostics = sink_.diagnostics();
@@ -274,14 +279,13 @@ private:
         plane.friction = values.number("Friction", kStaticFriction);
 
         const Vec3 normal = values.triple("Normal", kDefaultNormal);
-        const Real length = glm::length(normal);
-        if (length < kMinNormalLength) {
+        if (!usableDirection(normal)) {  // core/limits.hpp: what World::World requires too
             const std::string& written = values.asWritten("Normal");
-            sink_.report(line.number, values.valueColumn("Normal"), "Normal", "a non-zero vector",
-                         written.empty() ? formatVector(normal) : written,
+            sink_.report(line.number, values.valueColumn("Normal"), "Normal", "a direction (a vector of length > 0, "
+                         "whose squares do not overflow)", written.empty() ? formatVector(normal) : written,
                          "the normal gives the direction the plane faces, e.g. (0, 1, 0) for a floor");
         } else {
-            plane.normal = normal / length;  // the collision code relies on a unit normal
+            plane.normal = normal / glm::length(normal);  // the collision code relies on a unit normal
         }
         scene_.planes.push_back(std::move(plane));
     }
@@ -726,6 +730,74 @@ private:
         }
     }
 
+    /// Adds a warning for each pair of DynamicObjects more than kMaxMassRatio apart in mass that
+    /// will press on each other: joined by a joint or a spring, or touching at the start (their
+    /// bounding spheres overlap). Bodies that never meet may differ as much as they like. The
+    /// warning is at the lighter body's line, since it is the one that would be pushed through.
+    /// `stepwise run` warns again about any such pair that comes into contact later.
+    void warnAboutMassRatios() {
+        const std::vector<DynamicObject>& bodies = scene_.dynamics;
+        if (bodies.size() < 2) return;
+        const auto byMass = [](const DynamicObject& a, const DynamicObject& b) { return a.mass < b.mass; };
+        const auto [lightest, heaviest] = std::minmax_element(bodies.begin(), bodies.end(), byMass);
+        if (heaviest->mass <= kMaxMassRatio * lightest->mass) return;  // the common case: nothing to look for
+
+        std::vector<std::pair<std::size_t, std::size_t>> pairs;
+        for (const JointDef& joint : scene_.joints) {
+            if (joint.bodyB.empty()) continue;
+            pairs.emplace_back(indexOfDynamic(joint.bodyA), indexOfDynamic(joint.bodyB));
+        }
+        for (const Spring& spring : scene_.springs) {
+            if (spring.bodyB != kFixedInWorld) pairs.emplace_back(spring.bodyA, spring.bodyB);
+        }
+        // Touching at the start: sweep along x over the bounding spheres (sort and sweep, Ericson 7.5.1).
+        std::vector<std::size_t> order(bodies.size());
+        for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+        const auto reach = [](const DynamicObject& body) {
+            return body.shape == Shape::Sphere ? body.radius : Real(0.5) * glm::length(body.scale);
+        };
+        std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) {
+            return bodies[i].position.x - reach(bodies[i]) < bodies[j].position.x - reach(bodies[j]);
+        });
+        for (std::size_t k = 0; k < order.size(); ++k) {
+            const DynamicObject& a = bodies[order[k]];
+            for (std::size_t m = k + 1; m < order.size(); ++m) {
+                const DynamicObject& b = bodies[order[m]];
+                if (b.position.x - reach(b) > a.position.x + reach(a)) break;  // no later body reaches back to a
+                const Real apart = glm::length(b.position - a.position);
+                if (apart <= (reach(a) + reach(b)) * (1 + kTouchingMargin)) pairs.emplace_back(order[k], order[m]);
+            }
+        }
+        std::vector<std::size_t> warned;  // each light body once
+        for (auto [i, j] : pairs) {
+            if (i >= bodies.size() || j >= bodies.size()) continue;
+            if (bodies[i].mass > bodies[j].mass) std::swap(i, j);
+            const DynamicObject& light = bodies[i];
+            const DynamicObject& heavy = bodies[j];
+            if (heavy.mass <= kMaxMassRatio * light.mass) continue;
+            if (std::find(warned.begin(), warned.end(), i) != warned.end()) continue;
+            warned.push_back(i);
+            const auto use = names_.find(toLower(light.name));
+            const int line = use != names_.end() ? use->second.line : 0;
+            char text[512];
+            std::snprintf(text, sizeof text,
+                          ": warning: DynamicObject %s (%.6g kg) presses on %s (%.6g kg), %.3g times heavier; the "
+                          "solver holds two bodies apart only up to a mass ratio of %.6g, so the lighter one may "
+                          "be pushed into what it rests on",
+                          quoted(light.name).c_str(), double(light.mass), quoted(heavy.name).c_str(),
+                          double(heavy.mass), double(heavy.mass / light.mass), double(kMaxMassRatio));
+            scene_.warnings.push_back(scene_.sourcePath + ":" + std::to_string(line) + text);
+        }
+    }
+
+    /// Index among scene_.dynamics of the body called @p name (joints are resolved by now).
+    std::size_t indexOfDynamic(const std::string& name) const {
+        for (std::size_t i = 0; i < scene_.dynamics.size(); ++i) {
+            if (toLower(scene_.dynamics[i].name) == toLower(name)) return i;
+        }
+        return scene_.dynamics.size();
+    }
+
     static std::string describeInstability(const SpringStability& s, const WorldSettings& settings,
                                            Real growthOverRun) {
         const Real h = integrationStep(settings);
@@ -856,23 +928,23 @@ private:
         joint.anchorB = values.triple("AnchorB", bodyB ? bodyB->position : kZero);
         if (values.valueColumn("Length") != 0) {
             joint.length = values.number("Length", 0);
-        } else if (glm::length(joint.anchorB - joint.anchorA) < kMinNormalLength) {
-            sink_.report(pending.line, pending.column, "Length", "a length > 0", "",
-                         "the anchors coincide, so the distance at the start is 0: give Length=..., or use a BallJoint");
+        } else if (!(glm::length(joint.anchorB - joint.anchorA) >= kMinJointLength)) {
+            sink_.report(pending.line, pending.column, "Length", describe(Range::JointLength), "",
+                         "the anchors (almost) coincide, so the distance at the start is 0: give Length=..., or "
+                         "use a BallJoint");
         }
     }
 
     Vec3 jointAxis(const PendingJoint& pending) {
         const Vec3 axis = pending.values.triple("Axis", kDefaultJointAxis);
-        const Real length = glm::length(axis);
-        if (length < kMinNormalLength) {
+        if (!usableDirection(axis)) {  // core/limits.hpp: what makeJoints() requires too
             const std::string& written = pending.values.asWritten("Axis");
-            sink_.report(pending.line, pending.values.valueColumn("Axis"), "Axis", "a non-zero vector",
-                         written.empty() ? formatVector(axis) : written,
+            sink_.report(pending.line, pending.values.valueColumn("Axis"), "Axis", "a direction (a vector of length > 0, "
+                         "whose squares do not overflow)", written.empty() ? formatVector(axis) : written,
                          "the axis is the direction the joint turns about, e.g. (0, 0, 1)");
             return kDefaultJointAxis;
         }
-        return axis / length;
+        return axis / glm::length(axis);
     }
 
     /// A hinge limit in degrees → radians; empty when not given.
@@ -1005,13 +1077,47 @@ private:
 
 }  // namespace
 
+namespace {
+
+/// The most characters of a bad value a message quotes: a whole megabyte on one line helps no one.
+constexpr std::size_t kMostQuoted = 60;
+
+/// @p text as a message quotes it: control bytes (a NUL, a tab, a vertical tab, an escape that
+/// would drive the terminal) written as \0, \t, \v, \x1b, and cut after kMostQuoted characters.
+std::string quotable(std::string_view text) {
+    std::string out;
+    std::size_t shown = 0;
+    for (; shown < text.size() && out.size() < kMostQuoted; ++shown) {
+        const unsigned char c = static_cast<unsigned char>(text[shown]);
+        if (c >= 0x20 && c != 0x7f) {
+            out += static_cast<char>(c);
+        } else if (c == 0) {
+            out += "\\0";
+        } else if (c == '\t') {
+            out += "\\t";
+        } else if (c == '\v') {
+            out += "\\v";
+        } else if (c == '\r') {
+            out += "\\r";
+        } else {
+            char escaped[8];
+            std::snprintf(escaped, sizeof escaped, "\\x%02x", c);
+            out += escaped;
+        }
+    }
+    if (shown < text.size()) out += "... (" + std::to_string(text.size() - shown) + " more bytes)";
+    return out;
+}
+
+}  // namespace
+
 std::string ConfigDiagnostic::message() const {
     std::string text = file;
     if (line > 0) text += ":" + std::to_string(line) + ":" + std::to_string(column);
     text += ": error: ";
-    if (!field.empty()) text += field + ": ";
+    if (!field.empty()) text += quotable(field) + ": ";
     if (expected.empty()) return text + hint;  // e.g. a file that could not be opened
-    text += "expected " + expected + ", found '" + found + "'";
+    text += "expected " + expected + ", found '" + quotable(found) + "'";
     if (!hint.empty()) text += "; " + hint;
     return text;
 }

@@ -34,7 +34,7 @@ constexpr std::string_view kMassHint =
 constexpr std::string_view kElasticityHint =
     "0 means the contact absorbs all bounce, 1 means a perfectly elastic bounce";
 constexpr std::string_view kFrictionHint = "0 means frictionless; friction cannot be negative";
-constexpr std::string_view kSizeHint = "sizes are in metres and must be positive";
+constexpr std::string_view kSizeHint = "sizes are in metres, from a micrometre to a thousand kilometres";
 constexpr std::string_view kTimeHint = "times are in seconds and must be positive, e.g. 1/60";
 constexpr std::string_view kMomentHint = "moments are in seconds from the start of the run, 0 or later";
 constexpr std::string_view kToleranceHint = "a tolerance is the allowed difference, in the quantity's unit, 0 or more";
@@ -56,9 +56,9 @@ constexpr FieldSpec kDynamicFields[] = {
     {"Position",        FieldKind::Vector,      4, Range::Any},                      // m
     {"Velocity",        FieldKind::Vector,      7, Range::Any},                      // m/s
     {"Acceleration",    FieldKind::Vector,     10, Range::Any},                      // m/s², added to gravity
-    {"Scale",           FieldKind::Vector,     13, Range::Positive, kSizeHint},      // m, full edge lengths
-    {"Radius",          FieldKind::Number,     16, Range::Positive, kSizeHint},      // m
-    {"Mass",            FieldKind::Number,     17, Range::Positive, kMassHint},      // kg
+    {"Scale",           FieldKind::Vector,     13, Range::Size, kSizeHint},          // m, full edge lengths
+    {"Radius",          FieldKind::Number,     16, Range::Radius, kSizeHint},        // m
+    {"Mass",            FieldKind::Number,     17, Range::Mass, kMassHint},          // kg
     {"Elasticity",      FieldKind::Number,     18, Range::UnitInterval, kElasticityHint},
     {"Name",            FieldKind::Name,       kNamedOnly, Range::Any},
     {"Friction",        FieldKind::Number,     kNamedOnly, Range::NonNegative, kFrictionHint},
@@ -72,12 +72,12 @@ constexpr FieldSpec kKinematicFields[] = {
     {"Shape",           FieldKind::Shape,       0, Range::Any},
     {"Color",           FieldKind::Color,       1, Range::UnitInterval},
     {"Position",        FieldKind::Vector,      4, Range::Any},                      // m
-    {"Scale",           FieldKind::Vector,      7, Range::Positive, kSizeHint},      // m
+    {"Scale",           FieldKind::Vector,      7, Range::Size, kSizeHint},          // m
     {"Name",            FieldKind::Name,       kNamedOnly, Range::Any},
     {"Velocity",        FieldKind::Vector,     kNamedOnly, Range::Any},              // m/s, constant
     {"AngularVelocity", FieldKind::Vector,     kNamedOnly, Range::Any},              // rad/s, constant
     {"Rotation",        FieldKind::Vector,     kNamedOnly, Range::Any},              // degrees
-    {"Radius",          FieldKind::Number,     kNamedOnly, Range::Positive, kSizeHint},
+    {"Radius",          FieldKind::Number,     kNamedOnly, Range::Radius, kSizeHint},
     {"Elasticity",      FieldKind::Number,     kNamedOnly, Range::UnitInterval, kElasticityHint},
     {"Friction",        FieldKind::Number,     kNamedOnly, Range::NonNegative, kFrictionHint},
 };
@@ -122,7 +122,7 @@ constexpr FieldSpec kWorldFields[] = {
     {"StepPlan",            FieldKind::Boolean, kNamedOnly, Range::Any},          // src/world/step_plan.hpp
     {"FastPath",            FieldKind::Boolean, kNamedOnly, Range::Any},          // src/fast/fast_path.hpp
     {"ContinuousCollision", FieldKind::Boolean, kNamedOnly, Range::Any},              // src/collision/continuous.hpp
-    {"Threads",             FieldKind::Number,  kNamedOnly, Range::WholeNumber},      // 0: one per hardware thread
+    {"Threads",             FieldKind::Number,  kNamedOnly, Range::ThreadCount},      // 0: one per hardware thread
 };
 
 /// Expect: one checked outcome (src/world/expectations.hpp), named fields only.
@@ -177,7 +177,7 @@ constexpr FieldSpec kTwoAnchorJointFields[] = {
     {"BodyB",            FieldKind::Name,    kNamedOnly, Range::Any},              // a DynamicObject; omitted: the world
     {"AnchorA",          FieldKind::Vector,  kNamedOnly, Range::Any},              // m, world point on A
     {"AnchorB",          FieldKind::Vector,  kNamedOnly, Range::Any},              // m, world point on B (or fixed)
-    {"Length",           FieldKind::Number,  kNamedOnly, Range::Positive, kLengthHint}, // m
+    {"Length",           FieldKind::Number,  kNamedOnly, Range::JointLength, kLengthHint}, // m
     {"MaxForce",         FieldKind::Number,  kNamedOnly, Range::Positive, kForceHint},  // N
     {"CollideConnected", FieldKind::Boolean, kNamedOnly, Range::Any},
 };

@@ -10,6 +10,7 @@
 
 #include "collision/narrowphase.hpp"
 #include "core/errors.hpp"
+#include "core/limits.hpp"
 #include "dynamics/islands.hpp"
 #include "dynamics/velocity_change_drift.hpp"
 #include "fast/fast_path.hpp"
@@ -63,25 +64,32 @@ World::World(Scene scene)
       attractors_(std::move(scene.attractors)) {
     require(isFinite(settings_.timeStep) && settings_.timeStep > 0, "World", "time step must be > 0 s");
     require(stepwise::isFinite(settings_.gravity), "World", "gravity must be finite");
-    require(settings_.impulseIterations >= 1, "World", "impulse iterations must be at least 1");
-    require(settings_.substeps >= 1, "World", "substeps must be at least 1");
-    require(settings_.velocityIterations >= 1, "World", "iterations must be at least 1");
-    require(settings_.relaxIterations >= 0, "World", "relax iterations must not be negative");
-    require(settings_.threads >= 0, "World", "threads must not be negative (0: one per hardware thread)");
+    // The limits of core/limits.hpp, which the loader reports at their line and column
+    const auto repetitions = [](int n, int least) { return n >= least && n <= kMaxRepetitions; };
+    require(repetitions(settings_.impulseIterations, 1), "World", "impulse iterations must be from 1 to 1024");
+    require(repetitions(settings_.substeps, 1), "World", "substeps must be from 1 to 1024");
+    require(repetitions(settings_.velocityIterations, 1), "World", "iterations must be from 1 to 1024");
+    require(repetitions(settings_.relaxIterations, 0), "World", "relax iterations must be from 0 to 1024");
+    require(settings_.threads >= 0 && settings_.threads <= kMaxThreads, "World",
+            "threads must be from 0 to 256 (0: one per hardware thread)");
     threadPool_ = std::make_unique<ThreadPool>(settings_.threads == kAutoThreads ? autoThreadCount()
                                                                                  : static_cast<unsigned>(settings_.threads));
     for (DynamicObject& body : dynamics_) {
-        require(isFinite(body.mass) && body.mass > 0, body.name, "mass must be > 0 kg");
-        require(isFinite(body.radius) && body.radius > 0, body.name, "radius must be > 0 m");
+        require(body.mass >= kMinMass && body.mass <= kMaxMass, body.name, "mass must be from 1e-12 to 1e12 kg");
+        require(body.radius >= kMinBodySize / 2 && body.radius <= kMaxBodySize / 2, body.name,
+                "radius must be from 5e-7 to 5e5 m");
+        for (int k = 0; k < 3; ++k) {
+            require(body.scale[k] >= kMinBodySize && body.scale[k] <= kMaxBodySize, body.name,
+                    "each edge (Scale) must be from 1e-6 to 1e6 m");
+        }
         require(stepwise::isFinite(body.position) && stepwise::isFinite(body.velocity), body.name,
                 "position and velocity must be finite");
         body.inverseMass = Real(1) / body.mass;
         initialiseMassProperties(body);
     }
     for (CollisionPlane& plane : planes_) {
-        const Real length = glm::length(plane.normal);
-        require(isFinite(length) && length > 0, plane.name, "plane normal must not be zero");
-        plane.normal /= length;
+        require(usableDirection(plane.normal), plane.name, "the plane's normal must be a direction of finite length > 0");
+        plane.normal /= glm::length(plane.normal);
     }
     for (const Spring& spring : springs_) {
         const auto joins = [&](std::size_t index) { return index < dynamics_.size(); };

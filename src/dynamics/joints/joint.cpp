@@ -6,6 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/limits.hpp"
 #include "dynamics/impulse_resolver.hpp"
 #include "objects/inertia.hpp"
 #include "dynamics/joints/joint_parts.hpp"
@@ -15,7 +16,6 @@ namespace stepwise {
 namespace {
 
 /// An axis shorter than this cannot be normalised into a direction.
-constexpr Real kMinAxisLength = Real(1e-9);
 
 void require(bool condition, const JointDef& def, const std::string& what) {
     if (!condition) throw std::invalid_argument("joint '" + def.name + "': " + what);
@@ -51,9 +51,8 @@ Joint makeJoint(const JointDef& def, std::span<const DynamicObject> bodies) {
     joint.localAnchorA = glm::conjugate(a.orientation) * (anchorA - a.position);
     joint.localAnchorB = b ? glm::conjugate(orientationB) * (anchorB - b->position) : anchorB;
     if (def.kind == JointKind::Hinge || def.kind == JointKind::AngularMotor) {
-        const Real axisLength = glm::length(def.axis);
-        require(std::isfinite(axisLength) && axisLength > kMinAxisLength, def, "the axis must not be zero");
-        const Vec3 axis = def.axis / axisLength;
+        require(usableDirection(def.axis), def, "the axis must be a direction of finite length > 0");
+        const Vec3 axis = def.axis / glm::length(def.axis);
         joint.localAxisA = glm::conjugate(a.orientation) * axis;
         joint.localAxisB = glm::conjugate(orientationB) * axis;
         tangentBasis(joint.localAxisB, joint.localPerpendicularB);
@@ -62,8 +61,8 @@ Joint makeJoint(const JointDef& def, std::span<const DynamicObject> bodies) {
 
     if (def.kind == JointKind::Distance || def.kind == JointKind::Rope) {
         joint.length = def.length.value_or(glm::length(anchorB - anchorA));
-        require(std::isfinite(joint.length) && joint.length > kDegenerateJointLength, def,
-                "the length must be > 0 m (the anchors coincide: give a Length, or use a BallJoint)");
+        require(std::isfinite(joint.length) && joint.length >= kMinJointLength, def,
+                "the length must be at least 1e-6 m (the anchors coincide: give a Length, or use a BallJoint)");
     }
     joint.hasLowerLimit = def.lowerAngle.has_value();
     joint.hasUpperLimit = def.upperAngle.has_value();
