@@ -56,11 +56,11 @@ struct IslandWorkspace {
     /// Per dynamic body: its velocity and angular velocity at the end of the last step (zero while
     /// asleep), m/s and rad/s: what the step's velocity change, the equilibrium test, is measured from.
     std::vector<Vec3> lastVelocity;
-    std::vector<Vec3> lastAngularVelocity;
+    std::vector<Vec3> lastAngularVelocity;  ///< The angular velocity of the same, rad/s (see lastVelocity).
     /// Per dynamic body: |Δv|/h and |Δω|/h of the last step, m/s² and rad/s², as the
     /// equilibrium test measured them (for the trace: why a slow body is not yet still).
     std::vector<Real> linearAcceleration;
-    std::vector<Real> angularAcceleration;
+    std::vector<Real> angularAcceleration;  ///< |Δω|/h, rad/s² (see linearAcceleration).
     std::vector<std::uint32_t> parent;   ///< Union–find forest over dynamic bodies.
     std::vector<Real> islandStillTime;   ///< Per root: the least still time of its bodies, s.
     std::vector<std::uint32_t> carried;  ///< Bodies resting on a moving kinematic body this step (never still).
