@@ -229,6 +229,31 @@ TEST_CASE("plot --quantity momentum draws each ball and the whole scene, which o
     CHECK(after > 200);
 }
 
+TEST_CASE("plot draws a run that blows up, up to its last whole step, and exits with code 1", "[plot]") {
+    // config/stress_spring_past.scene: k = 16000 N/m, m = 1 kg, h = 1/60 s, so h w = 2.108, past
+    // symplectic Euler's limit of 2 (lecture 9). Once the swing dwarfs the 1 m rest length the
+    // step is linear again and multiplies it by lambda = -(c + sqrt(c^2 - 1)), c = (h w)^2/2 - 1,
+    // every step, until the numbers overflow and the run stops.
+    TempFile png("blow-up.png");
+    TempFile csv("blow-up.csv");
+    const Result r = runStepwise("plot " + scene("stress_spring_past.scene") + " --quantity position --component x" +
+                                 " --duration 20 --out " + png.quoted() + " --data " + csv.quoted());
+    INFO(r.output);
+    CHECK(r.exitCode == 1);
+    CHECK_THAT(r.output, Contains("simulation failed") && Contains("Plot written to"));
+    CHECK(pngSize(png.path) == std::pair<std::uint32_t, std::uint32_t>(800, 600));
+    const DataTable data = readData(csv.path);
+    REQUIRE(data.rows.size() > 100);
+    CHECK(data.rows.back()[0] < 20);  // it stopped early
+    const double hw = std::sqrt(16000.0) / 60, c = hw * hw / 2 - 1;
+    const double lambda = -(c + std::sqrt(c * c - 1));
+    for (std::size_t n = data.rows.size() - 10; n < data.rows.size(); ++n) {
+        INFO("step " << n << ": x = " << data.rows[n][1]);
+        CHECK(std::isfinite(data.rows[n][1]));
+        CHECK(std::abs(data.rows[n][1] / data.rows[n - 1][1] - lambda) < 1e-6 * std::abs(lambda));
+    }
+}
+
 TEST_CASE("energyOfBody keeps a spring between two bodies out, energyOf(world) counts it", "[plot]") {
     // Two 1 kg balls at rest, no gravity, a spring of k = 100 N/m stretched 0.1 m between them:
     // no body has energy of its own, the pair holds k 0.1^2 / 2 = 0.5 J. A spring fixed in the

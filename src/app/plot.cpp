@@ -43,6 +43,9 @@ constexpr const char* kColours[] = {"#d62728", "#1f77b4", "#2ca02c", "#ff7f0e",
                                     "#9467bd", "#8c564b", "#e377c2", "#17becf"};
 /// The whole scene's line: black and dashed, beside the bodies' colours.
 constexpr const char* kWholeSceneColour = "#000000";
+/// Relative spread below which a panel's numbers count as one value that round-off blurred
+/// (doubles carry about 16 digits; a long run's sums lose a few).
+constexpr double kRoundOff = 1e-9;
 
 /// @p text as a gnuplot single-quoted string: inside one, a quote is written twice.
 std::string quoted(const std::string& text) {
@@ -79,7 +82,7 @@ std::string gnuplotScript(const QuantityTable& table, const PlotOptions& options
     char number[32];
     for (const std::vector<double>& row : table.rows()) {
         for (std::size_t i = 0; i < row.size(); ++i) {
-            std::snprintf(number, sizeof number, i == 0 ? "%.10g" : ",%.10g", row[i]);
+            std::snprintf(number, sizeof number, i == 0 ? "%.17g" : ",%.17g", row[i]);  // as --data writes them
             s += number;
         }
         s += "\n";
@@ -97,8 +100,9 @@ std::string gnuplotScript(const QuantityTable& table, const PlotOptions& options
         s += p + 1 == panels ? "set xlabel 'time t (s)'\nset format x '%g'\n" : "unset xlabel\nset format x ''\n";
         // The key once, beside the top panel: every panel has the same lines.
         if (p == 1) s += "unset key\n";
-        // A panel whose numbers are all one value (a ball's z, a potential of 0) gets a range around it:
-        // gnuplot would otherwise warn that the range is empty.
+        // A panel whose numbers are all one value (a ball's z, a potential of 0), or differ only by
+        // round-off (a conserved energy: 1e-13 J on 110 J), gets a range around it: gnuplot would
+        // otherwise warn that the range is empty, or stretch the round-off over the whole panel.
         double low = HUGE_VAL, high = -HUGE_VAL;
         for (const std::vector<double>& row : table.rows()) {
             for (std::size_t k = 0; k < table.series().size(); ++k) {
@@ -107,9 +111,11 @@ std::string gnuplotScript(const QuantityTable& table, const PlotOptions& options
             }
         }
         char range[96] = "set yrange [*:*]\nset ytics autofreq\n";
-        if (low == high && std::isfinite(low)) {
-            const double pad = low == 0 ? 1.0 : std::abs(low) * 0.1;
-            std::snprintf(range, sizeof range, "set yrange [%.10g:%.10g]\nset ytics autofreq\n", low - pad, high + pad);
+        const double scale = std::max(std::abs(low), std::abs(high));
+        if (std::isfinite(high - low) && high - low <= kRoundOff * scale) {
+            const double middle = 0.5 * (low + high);
+            const double pad = middle == 0 ? 1.0 : std::abs(middle) * 0.1;
+            std::snprintf(range, sizeof range, "set yrange [%.10g:%.10g]\nset ytics autofreq\n", middle - pad, middle + pad);
         } else if (low < high && std::isfinite(high - low)) {
             std::snprintf(range, sizeof range, "set yrange [*:*]\nset ytics %.10g\n", ticStep(low, high));
         }
@@ -219,15 +225,17 @@ int plotCommand(const PlotOptions& options) {
     // Round to the nearest whole step, as `run` does: 10 s at 1/60 s is 600 steps.
     const std::uint64_t steps = options.steps.value_or(static_cast<std::uint64_t>(std::llround(duration / h)));
     table->sample(world);
+    // A run that fails (a non-finite state) is still drawn up to the last whole step: a blow-up is
+    // worth seeing. The exit code says it failed.
+    int exitCode = kExitOk;
     try {
         for (std::uint64_t i = 0; i < steps; ++i) {
             world.step();
             if (world.stepCount() % options.every == 0) table->sample(world);
         }
     } catch (const SimulationError& error) {
-        std::fprintf(stderr, "stepwise: simulation failed: %s\n", error.what());
-        if (options.outPath) std::remove(options.outPath->c_str());  // the empty file opened above
-        return kExitSimulationError;
+        std::fprintf(stderr, "stepwise: simulation failed: %s; plotting the steps before it\n", error.what());
+        exitCode = kExitSimulationError;
     }
 
     if (data) {
@@ -252,10 +260,10 @@ int plotCommand(const PlotOptions& options) {
     // Standard output may be the data itself (--data -): then the report goes to stderr.
     std::FILE* report = options.dataPath && *options.dataPath == "-" ? stderr : stdout;
     std::fprintf(report, "Sampled %s of %zu series at %zu times, t = 0 to %.6g s\n", toString(options.quantity),
-                 table->series().size(), table->rows().size(), double(world.time()));
+                 table->series().size(), table->rows().size(), table->rows().back().front());
     if (options.dataPath && *options.dataPath != "-") std::fprintf(report, "Data written to %s\n", options.dataPath->c_str());
     if (options.outPath) std::fprintf(report, "Plot written to %s\n", options.outPath->c_str());
-    return kExitOk;
+    return exitCode;
 }
 
 }  // namespace stepwise::cli
