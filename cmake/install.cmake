@@ -67,14 +67,16 @@ set(CPACK_DEBIAN_PACKAGE_SECTION "science")
 # CPack puts the summary above it and indents each line by one space.
 set(CPACK_PACKAGE_DESCRIPTION "Stepwise simulates scenes of spheres, boxes and planes one stage of the step
 at a time, for a course on physics engines. This package holds the stepwise
-program (run, check, view, grade and trace scenes), the lecture and reference
-scenes in /usr/share/stepwise/config, and the engine as a static library with
-its headers and a CMake package: a course's own project links it with
-find_package(Stepwise) and the target Stepwise::engine.")
+program (run, check, view, grade, trace and plot scenes), the lecture and
+reference scenes in /usr/share/stepwise/config, and the engine as a static
+library with its headers and a CMake package: a course's own project links it
+with find_package(Stepwise) and the target Stepwise::engine.")
 # The libraries the program loads (libc, libstdc++, freeglut and OpenGL when the viewer is built
 # in) come from dpkg-shlibdeps. The headers include GLM's, and the CMake package looks for it,
 # so libglm-dev too; a course's own project also needs a C++20 compiler and CMake.
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 set(CPACK_DEBIAN_PACKAGE_DEPENDS "libglm-dev")
 set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "cmake (>= 3.20), g++ (>= 4:12)")
+# `stepwise plot` draws with gnuplot, which it runs as a program: without it, plot says how to get it.
+set(CPACK_DEBIAN_PACKAGE_SUGGESTS "gnuplot-nox")
 include(CPack)

@@ -2,8 +2,8 @@
 // lectures/README.md names, the README's reading order names every page (the
 // appendices as optional), its map of the step lists each solver's stages in
 // the order World::step() runs them, links lead somewhere, code a page quotes
-// is in the file it names, and no page points at code by a line number.
-// Tag: [lectures].
+// is in the file it names, no page points at code by a line number, and every
+// page shows a figure that scripts/figures.sh draws. Tag: [lectures].
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "command_runner.hpp"
 #include "core/stages.hpp"
 #include "world/step_plan.hpp"
 
@@ -453,4 +454,47 @@ TEST_CASE("Lectures point at code by function and quoted text, not by line numbe
         }
     }
     CHECK(scanned >= 2000);
+}
+
+TEST_CASE("Every lecture shows a figure scripts/figures.sh draws, with a caption, and the script draws every image", "[lectures]") {
+    // What the script makes, by its own list: a figure not on it would be drawn by hand.
+    const stepwise::test::CommandResult listed = stepwise::test::shell("bash '" + (kRoot / "scripts/figures.sh").string() + "' --list");
+    INFO(listed.output);
+    REQUIRE(listed.exitCode == 0);
+    std::set<std::string> made;
+    std::istringstream names(listed.output);
+    for (std::string name; std::getline(names, name);) made.insert(name);
+    std::set<std::string> present;
+    for (const fs::directory_entry& entry : fs::directory_iterator(kLectures / "images")) present.insert(entry.path().filename().string());
+    CHECK(made.size() >= 12);
+    CHECK(present == made);
+
+    // <img src="images/NAME.png" …> or ![…](images/NAME.png): the page's own figures.
+    const std::regex image(R"re(<img src="([^"]+)"|!\[[^\]]*\]\(([^)\s]+\.png)\))re");
+    std::set<std::string> shown;
+    for (const fs::path& page : lecturePages()) {
+        const std::vector<std::string> lines = readLines(page);
+        int figures = 0;
+        bool code = false;
+        for (std::size_t i = 0; i < lines.size(); ++i) {
+            if (isFence(lines[i])) code = !code;
+            if (code) continue;
+            for (auto m = std::sregex_iterator(lines[i].begin(), lines[i].end(), image); m != std::sregex_iterator(); ++m) {
+                const std::string source = (*m)[1].matched ? (*m)[1].str() : (*m)[2].str();
+                INFO("lectures/" << page.filename().string() << ":" << i + 1 << ": " << source);
+                CHECK(fs::exists(page.parent_path() / source));  // every image a page shows exists
+                if (!startsWith(source, "images/")) continue;
+                shown.insert(source.substr(7));
+                // The caption: the next line that is not blank is an italic sentence saying what it shows.
+                std::size_t next = i + 1;
+                while (next < lines.size() && trim(lines[next]).empty()) ++next;
+                INFO("the line after it must begin a caption in *italics*");
+                CHECK((next < lines.size() && startsWith(trim(lines[next]), "*")));
+                ++figures;
+            }
+        }
+        INFO("lectures/" << page.filename().string() << " shows no figure of lectures/images/");
+        CHECK(figures >= 1);
+    }
+    CHECK(shown == present);  // and no image there is shown nowhere
 }

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/exit_codes.hpp"
+#include "io/quantity_table.hpp"
 #include "viewer/view_options.hpp"
 #include "world/expectations.hpp"
 #include "world/scene.hpp"
@@ -88,6 +89,28 @@ int benchCommand(const std::vector<std::string>& args);
 /// [--digits D]`: stage-by-stage lines of what each stage took in and produced (src/io/trace_writer.hpp).
 /// @param args the arguments after `trace`. @throws UsageError. Returns the exit code.
 int traceCommand(const std::vector<std::string>& args);
+
+/// @brief Options of `stepwise plot`.
+struct PlotOptions {
+    std::string scenePath;                       ///< Scene file; the default scene when not given.
+    PlotQuantity quantity = PlotQuantity::Position;  ///< --quantity Q: what to draw against time.
+    std::vector<std::string> objects;            ///< --object NAME (repeatable, or a,b): the bodies; empty: every dynamic one.
+    std::vector<std::string> components;         ///< --component C (repeatable, or x,y): the panels; empty: the defaults.
+    std::optional<double> duration;              ///< --duration S: simulated seconds (overrides the scene's Duration).
+    std::optional<std::uint64_t> steps;          ///< --steps N: number of steps (alternative to --duration).
+    std::uint64_t every = 1;                     ///< --every K: a sample every K steps.
+    std::optional<std::string> outPath;          ///< --out FILE.png: the picture, drawn by gnuplot.
+    std::optional<std::string> dataPath;         ///< --data FILE: the numbers plotted, as CSV ('-': standard output).
+    int width = 800;                             ///< --size WxH: the picture's width, pixels.
+    int height = 600;                            ///< --size WxH: the picture's height, pixels.
+};
+
+/// @brief Parses the arguments after `plot`. @throws UsageError.
+PlotOptions parsePlotOptions(const std::vector<std::string>& args, const std::string& defaultScene);
+
+/// @brief `stepwise plot`: simulate, sample one quantity of chosen bodies, write its numbers and/or
+/// draw them with gnuplot. Returns the exit code (1 when gnuplot cannot run or fails).
+int plotCommand(const PlotOptions& options);
 
 /// @brief The usage text printed by `stepwise` and `stepwise --help`.
 const char* usageText();

@@ -105,8 +105,9 @@ int runCommandLine(const std::vector<std::string>& args) {
         if (command == "generate") return generateCommand(rest);
         if (command == "bench") return benchCommand(rest);
         if (command == "trace") return traceCommand(rest);
+        if (command == "plot") return plotCommand(parsePlotOptions(rest, defaultScenePath()));
         throw UsageError("unknown command '" + command +
-                         "' (commands: run, check, view, grade, raycast, generate, bench, trace)");
+                         "' (commands: run, check, view, grade, raycast, generate, bench, trace, plot)");
     } catch (const UsageError& error) {
         std::fprintf(stderr, "stepwise: error: %s\nRun 'stepwise --help' for usage.\n", error.what());
         return stepwise::kExitUsageError;
@@ -121,7 +122,7 @@ int runCommandLine(const std::vector<std::string>& args) {
 }  // namespace
 
 /// @brief Runs the command named by the first argument (`run`, `check`, `view`, `grade`, `raycast`, `generate`,
-/// `bench`, `trace`, `--help`).
+/// `bench`, `trace`, `plot`, `--help`).
 /// @return the exit code: 0 success, 1 simulation failure, 2 bad command line or scene,
 ///         3 an expectation failed (`run`) or a graded file did not pass (`grade`).
 int main(int argc, char** argv) {

@@ -72,6 +72,17 @@ const char* usageText() {
            "      NAME only lines about that body (repeatable); --substeps all every\n"
            "      substep, not only the first; --digits D decimals (default 4).\n"
            "      Lines are described in docs/trace.md.\n"
+           "  stepwise plot [FILE] --quantity Q [--object NAME]... [--component C]...\n"
+           "                [--duration S | --steps N] [--every K] [--out FILE.png]\n"
+           "                [--data FILE.csv] [--size WxH]\n"
+           "      Simulate the scene and draw one quantity against time with gnuplot, one\n"
+           "      panel per component, one line per body. Q: position, velocity,\n"
+           "      angular-velocity, momentum or energy. --object NAME the bodies (default:\n"
+           "      every dynamic body, and for momentum and energy the whole scene too);\n"
+           "      --component C the panels (x, y, z, norm; for energy translational,\n"
+           "      rotational, kinetic, potential, total); --every K a sample every K\n"
+           "      steps (default 1); --out the PNG picture (--size, default 800x600);\n"
+           "      --data the numbers plotted, as CSV. Give --out, --data or both.\n"
            "  stepwise --help\n"
            "\n"
            "Exit codes: 0 success, 1 the simulation failed (non-finite state),\n"
@@ -191,6 +202,87 @@ viewer::ViewOptions parseViewOptions(const std::vector<std::string>& args, const
     }
     if (options.screenshotPath && options.logEventsPath) {
         throw UsageError("--log-events records what the mouse does in the window; a --screenshot has no mouse");
+    }
+    if (!sceneGiven) options.scenePath = defaultScene;
+    return options;
+}
+
+namespace {
+
+/// "a,b,c" appended to @p list, each part non-empty.
+void appendCommaList(const std::string& option, const std::string& text, std::vector<std::string>& list) {
+    std::size_t start = 0;
+    while (true) {
+        const std::size_t comma = text.find(',', start);
+        const std::string part = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+        if (part.empty()) throw UsageError(option + " expects a name or a comma-separated list of names, found '" + text + "'");
+        list.push_back(part);
+        if (comma == std::string::npos) return;
+        start = comma + 1;
+    }
+}
+
+bool endsWith(const std::string& text, const std::string& suffix) {
+    return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+}  // namespace
+
+PlotOptions parsePlotOptions(const std::vector<std::string>& args, const std::string& defaultScene) {
+    PlotOptions options;
+    bool sceneGiven = false;
+    bool quantityGiven = false;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        const std::string& arg = args[i];
+        auto value = [&]() -> const std::string& {
+            if (i + 1 >= args.size()) throw UsageError(arg + " needs a value");
+            return args[++i];
+        };
+        if (arg == "--quantity") {
+            const std::string& text = value();
+            if (quantityGiven) throw UsageError("--quantity is given twice: one plot draws one quantity");
+            if (!parsePlotQuantity(text, options.quantity)) {
+                throw UsageError("--quantity expects one of " + plotQuantityWords() + ", found '" + text + "'");
+            }
+            quantityGiven = true;
+        } else if (arg == "--object") {
+            appendCommaList(arg, value(), options.objects);
+        } else if (arg == "--component") {
+            appendCommaList(arg, value(), options.components);
+        } else if (arg == "--duration") {
+            options.duration = parsePositiveSeconds(arg, value());
+        } else if (arg == "--steps") {
+            options.steps = parsePositiveCount(arg, value());
+        } else if (arg == "--every") {
+            options.every = parsePositiveCount(arg, value());
+        } else if (arg == "--out") {
+            const std::string& path = value();
+            if (!endsWith(path, ".png") || path.size() == 4) {
+                throw UsageError("--out expects the name of a .png file (gnuplot draws a PNG), found '" + path + "'");
+            }
+            options.outPath = path;
+        } else if (arg == "--data") {
+            const std::string& path = value();
+            if (path.empty()) throw UsageError("--data expects a file name ('-': standard output)");
+            options.dataPath = path;
+        } else if (arg == "--size") {
+            parseSize(value(), options.width, options.height);
+        } else if (arg.size() > 1 && arg[0] == '-') {
+            throw UsageError("unknown option '" + arg + "' for 'plot'");
+        } else if (sceneGiven) {
+            throw UsageError("'plot' takes one scene file, got '" + options.scenePath + "' and '" + arg + "'");
+        } else {
+            options.scenePath = arg;
+            sceneGiven = true;
+        }
+    }
+    if (!quantityGiven) throw UsageError("'plot' needs --quantity Q, one of " + plotQuantityWords());
+    if (!options.outPath && !options.dataPath) {
+        throw UsageError("'plot' needs --out FILE.png (the picture), --data FILE.csv (the numbers), or both");
+    }
+    if (options.duration && options.steps) throw UsageError("give --duration or --steps, not both");
+    if (options.outPath && options.dataPath && *options.outPath == *options.dataPath) {
+        throw UsageError("--out and --data name the same file, '" + *options.outPath + "'");
     }
     if (!sceneGiven) options.scenePath = defaultScene;
     return options;

@@ -30,6 +30,20 @@ Energy energyOf(const World& world) {
     return energy;
 }
 
+Energy energyOfBody(const World& world, std::size_t index) {
+    const DynamicObject& body = world.dynamics()[index];
+    Energy energy = energyOf(body, world.settings().gravity);
+    for (const Attractor& attractor : world.attractors()) {
+        energy.potential += attractorPotentialEnergy(attractor, body.mass, body.position);
+    }
+    for (const Spring& spring : world.springs()) {
+        if (spring.bodyA == index && spring.bodyB == kFixedInWorld) {
+            energy.potential += springPotentialEnergy(spring, world.dynamics());
+        }
+    }
+    return energy;
+}
+
 Vec3 linearMomentumOf(const World& world) {
     Vec3 momentum(0);
     for (const DynamicObject& body : world.dynamics()) momentum += body.mass * body.velocity;

@@ -31,6 +31,16 @@ Energy energyOf(const World& world);
 /// @brief The same energies for one body in a uniform field @p gravity (energyOf(world) sums these).
 Energy energyOf(const DynamicObject& body, const Vec3& gravity);
 
+/// @brief The energy that belongs to the dynamic body number @p index alone, J.
+///
+/// Its kinetic energy and its potential energy in the uniform fields (energyOf(body, gravity)),
+/// plus −μ·m/r for each attractor and ½·k·(l − L₀)² for each spring whose other end is fixed in
+/// the world: those springs and attractors act on this body only. A spring between two bodies
+/// belongs to the pair, not to either body: energyOf(world) counts it, this does not. So the
+/// sum of energyOfBody() over the bodies is energyOf(world) less the springs between bodies.
+/// `stepwise plot FILE --quantity energy` draws it per body.
+Energy energyOfBody(const World& world, std::size_t index);
+
 /// @brief Total linear momentum Σ m·v of the dynamic bodies, kg·m/s.
 Vec3 linearMomentumOf(const World& world);
 

@@ -1,4 +1,4 @@
-// libFuzzer target: the `stepwise` command line's parsers of src/app/options.cpp (run, view).
+// libFuzzer target: the `stepwise` command line's parsers of src/app/options.cpp (run, view, plot).
 //
 // The input is a command line: its arguments separated by NUL bytes, the first one the command.
 // A bad command line must end in a UsageError, whose message main() prints with exit code 2;
@@ -23,6 +23,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     try {
         if (command == "run") parseRunOptions(rest, "default.scene");
         else if (command == "view") parseViewOptions(rest, "default.scene");
+        else if (command == "plot") parsePlotOptions(rest, "default.scene");
     } catch (const UsageError&) {
         // refused with a message: what a bad command line should get
     }

@@ -1,0 +1,450 @@
+/// @file main.cpp
+/// @brief stepwise-figures: the numbers behind the lectures' geometric figures, computed by the engine.
+///
+/// scripts/figures.sh draws every figure of lectures/images/ with gnuplot. Most
+/// of them plot what `stepwise run --csv` or `stepwise plot --data` writes; the
+/// ones that show geometry inside a stage (the separating axes, a face being
+/// clipped, the impulse at a contact, the waves of the fast path) need numbers
+/// the command line does not print. This program runs a lecture's scene with a
+/// StepObserver, stops at the stage the lecture looks at, and prints what the
+/// stage saw or produced, as whitespace-separated columns for gnuplot (blocks
+/// separated by two blank lines: gnuplot's `index`). Each command checks its
+/// numbers against what the engine itself reported (the narrowphase's normal and
+/// depth, the impulse stage's j), and fails rather than print a figure that
+/// disagrees with the engine.
+///
+///   stepwise-figures impulse-geometry   lecture 3: the off-centre impact of `small` and `big`
+///   stepwise-figures bounce-impulses    appendix 3a: height and normal impulse of every step of the bounce
+///   stepwise-figures sat-axes           lecture 5: both boxes' shadows on each of the 15 axes
+///   stepwise-figures clipping           lecture 6: the incident face clipped by each side plane in turn
+///   stepwise-figures waves              appendix 8a: the waves and batches of the 1000-ball rain
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "collision/box_features.hpp"
+#include "collision/clip_polygon.hpp"
+#include "collision/contact.hpp"
+#include "config/scene_loader.hpp"
+#include "dynamics/contact_solver.hpp"
+#include "fast/fast_workspace.hpp"
+#include "fast/round_contact_lanes.hpp"
+#include "world/object_name.hpp"
+#include "world/world.hpp"
+
+using namespace stepwise;
+
+namespace {
+
+/// Thrown when a figure's numbers would disagree with the engine: the figure is not drawn.
+struct FigureError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+World loadWorld(const std::string& name) { return World(loadSceneFile(std::string(STEPWISE_CONFIG_DIR) + "/" + name)); }
+
+/// Index of the dynamic body called @p name.
+std::size_t dynamicIndex(const World& world, const std::string& name) {
+    for (std::size_t i = 0; i < world.dynamics().size(); ++i)
+        if (world.dynamics()[i].name == name) return i;
+    throw FigureError("no dynamic body '" + name + "'");
+}
+
+/// Calls @p onStage after every run of @p stage, until it returns true.
+class StageWatcher : public StepObserver {
+public:
+    StageWatcher(Stage stage, std::function<bool(const StageEvent&, const World&)> onStage, Stage before = Stage::ApplyForces,
+                 std::function<void(const World&)> beforeStage = {})
+        : stage_(stage), before_(before), onStage_(std::move(onStage)), beforeStage_(std::move(beforeStage)) {}
+    void beforeStage(const StageEvent& event, const World& world) override {
+        if (!done_ && beforeStage_ && event.stage == before_) beforeStage_(world);
+    }
+    void afterStage(const StageEvent& event, const World& world) override {
+        if (!done_ && event.stage == stage_) done_ = onStage_(event, world);
+    }
+    bool done() const { return done_; }
+
+private:
+    Stage stage_;
+    Stage before_;
+    std::function<bool(const StageEvent&, const World&)> onStage_;
+    std::function<void(const World&)> beforeStage_;
+    bool done_ = false;
+};
+
+/// Steps @p world with @p watcher until the watcher is done; at most @p maxSteps steps.
+void stepUntil(World& world, StageWatcher& watcher, std::uint64_t maxSteps) {
+    world.setObserver(&watcher);
+    for (std::uint64_t i = 0; i < maxSteps && !watcher.done(); ++i) world.step();
+    world.setObserver(nullptr);
+    if (!watcher.done()) throw FigureError("the stage the figure looks at never came");
+}
+
+/// The first contact between dynamic bodies @p a and @p b in the last narrowphase, or nullptr.
+const Contact* contactBetween(const World& world, std::size_t a, std::size_t b) {
+    for (const Contact& c : world.contacts()) {
+        if (c.b.kind != BodyKind::Dynamic) continue;
+        if ((c.a == a && c.b.index == b) || (c.a == b && c.b.index == a)) return &c;
+    }
+    return nullptr;
+}
+
+// ------------------------------------------------------------------ lecture 3
+
+/// The off-centre impact of lesson03_collisions.scene, in the plane z = 4 the two balls move in:
+/// both circles where the narrowphase found them, the contact point and normal, the velocities
+/// before and after the impulses, and the impulse on B split into its normal and friction parts.
+int impulseGeometry() {
+    World world = loadWorld("lesson03_collisions.scene");
+    const std::size_t small = dynamicIndex(world, "small"), big = dynamicIndex(world, "big");
+    std::vector<DynamicObject> before;
+    Contact contact;
+    std::vector<DynamicObject> after;
+    ImpulseReport report;
+    StageWatcher watcher(
+        Stage::ResolveImpulses,
+        [&](const StageEvent&, const World& w) {
+            const Contact* c = contactBetween(w, small, big);
+            if (!c) return false;
+            contact = *c;
+            report = w.impulses()[static_cast<std::size_t>(c - w.contacts().data())];
+            after = w.dynamics();
+            return true;
+        },
+        Stage::ResolveImpulses, [&](const World& w) { before = w.dynamics(); });
+    stepUntil(world, watcher, 1000);
+
+    const DynamicObject& a = before[contact.a];
+    const std::size_t bIndex = contact.b.index;
+    const DynamicObject& b = before[bIndex];
+    // The impulse on B is the change of its momentum; on A the opposite (Newton's third law).
+    const Vec3 impulse = b.mass * (after[bIndex].velocity - b.velocity);
+    const Vec3 impulseOnA = a.mass * (after[contact.a].velocity - a.velocity);
+    const Vec3 normalPart = glm::dot(impulse, contact.normal) * contact.normal;
+    const Vec3 frictionPart = impulse - normalPart;
+    if (glm::length(impulse + impulseOnA) > 1e-9 || std::abs(double(glm::dot(impulse, contact.normal) - report.normalImpulse)) > 1e-9 ||
+        std::abs(double(glm::length(frictionPart) - report.frictionImpulse)) > 1e-9) {
+        throw FigureError("the momentum changes disagree with the impulse stage's report");
+    }
+    std::printf("# lesson03_collisions.scene, the impact of %s (A) and %s (B), t = %.6f s\n", a.name.c_str(),
+                b.name.c_str(), double(world.time()) - double(world.settings().timeStep));
+    std::printf("# j = %.6f N*s along n, friction %.6f N*s, e = %.4f, approach %.6f m/s\n", double(report.normalImpulse),
+                double(report.frictionImpulse), double(report.restitution), double(report.approachSpeed));
+    std::printf("# circles: x y radius name\n");
+    std::printf("%.9f %.9f %.9f %s\n", double(a.position.x), double(a.position.y), double(a.radius), a.name.c_str());
+    std::printf("%.9f %.9f %.9f %s\n", double(b.position.x), double(b.position.y), double(b.radius), b.name.c_str());
+    std::printf("\n\n# arrows: x y dx dy what (velocities in m/s, impulses in N*s, from where they act)\n");
+    const auto arrow = [](const Vec3& from, const Vec3& d, const char* what) {
+        std::printf("%.9f %.9f %.9f %.9f %s\n", double(from.x), double(from.y), double(d.x), double(d.y), what);
+    };
+    arrow(a.position, a.velocity, "v_A-before");
+    arrow(b.position, b.velocity, "v_B-before");
+    arrow(a.position, after[contact.a].velocity, "v_A-after");
+    arrow(b.position, after[bIndex].velocity, "v_B-after");
+    arrow(contact.point, normalPart, "j*n-on-B");
+    arrow(contact.point, frictionPart, "friction-on-B");
+    arrow(contact.point, -impulse, "-J-on-A");
+    std::printf("\n\n# contact point: x y, and the unit normal n (from A to B)\n");
+    std::printf("%.9f %.9f %.9f %.9f\n", double(contact.point.x), double(contact.point.y), double(contact.normal.x),
+                double(contact.normal.y));
+    return 0;
+}
+
+// ------------------------------------------------------------------ appendix 3a
+
+/// lesson03_bounce.scene, every step: the time at its end, the ball's height and the normal
+/// impulse of the floor contact in that step (0 when there was none).
+int bounceImpulses() {
+    World world = loadWorld("lesson03_bounce.scene");
+    const std::size_t ball = dynamicIndex(world, "ball");
+    std::printf("# lesson03_bounce.scene: t (s, end of the step)  y (m)  j (N*s)  resting (1/0)\n");
+    std::printf("# m g h = %.9f N*s: the impulse that stops one step of falling\n",
+                double(world.dynamics()[ball].mass * -world.settings().gravity.y * world.settings().timeStep));
+    Real j = 0;
+    bool resting = false;
+    StageWatcher watcher(Stage::ResolveImpulses, [&](const StageEvent&, const World& w) {
+        for (std::size_t i = 0; i < w.contacts().size(); ++i) {
+            if (w.contacts()[i].a == ball) {
+                j = w.impulses()[i].normalImpulse;
+                resting = w.impulses()[i].resting;
+            }
+        }
+        return false;
+    });
+    world.setObserver(&watcher);
+    std::printf("%.9f %.9f %.9f %d\n", 0.0, double(world.dynamics()[ball].position.y), 0.0, 0);
+    const auto steps = static_cast<std::uint64_t>(std::llround(world.settings().duration / world.settings().timeStep));
+    for (std::uint64_t i = 0; i < steps; ++i) {
+        j = 0;
+        resting = false;
+        world.step();
+        std::printf("%.9f %.9f %.9f %d\n", double(world.time()), double(world.dynamics()[ball].position.y), double(j),
+                    resting ? 1 : 0);
+    }
+    world.setObserver(nullptr);
+    return 0;
+}
+
+// ------------------------------------------------------------------ lecture 5
+
+/// One box of a pair, as the separating-axis test sees it.
+OrientedBox boxOf(const World& world, const BodyRef& ref) {
+    const Geometry g = ref.kind == BodyKind::Dynamic ? geometryOf(world.dynamics()[ref.index])
+                                                     : geometryOf(world.kinematics()[ref.index]);
+    if (g.type != GeometryType::Box) throw FigureError("not a box: " + objectName(world, ref));
+    return orientedBoxOf(g);
+}
+
+/// The shadow of @p box on the unit axis @p axis: the smallest and largest projection of its 8 corners.
+std::pair<double, double> shadow(const OrientedBox& box, const Vec3& axis) {
+    double low = 1e300, high = -1e300;
+    for (int corner = 0; corner < 8; ++corner) {
+        const double p = double(glm::dot(cornerOf(box, corner), axis));
+        low = std::min(low, p);
+        high = std::max(high, p);
+    }
+    return {low, high};
+}
+
+/// The row (0–14) of the axis the narrowphase chose, from the feature id of its contact:
+/// a face of A (rows 0–2), a face of B (3–5), or the cross of an edge of each (6 + 3i + j).
+int chosenRow(std::uint32_t featureId) {
+    switch (featureKind(featureId)) {
+        case BoxContactKind::FaceOfA: return static_cast<int>(featureId & 7u) / 2;
+        case BoxContactKind::FaceOfB: return 3 + static_cast<int>(featureId & 7u) / 2;
+        case BoxContactKind::EdgeEdge:
+            return 6 + 3 * (static_cast<int>(featureId & 15u) / 4) + static_cast<int>((featureId >> 4) & 15u) / 4;
+    }
+    throw FigureError("not a box-box feature id");
+}
+
+/// The 15 candidate axes of one pair on the first step it touches: both shadows on each axis,
+/// measured from A's centre, and the separation. The last column is 2 on the axis the narrowphase
+/// chose (its contact's feature id says which), 1 on the others along the same line. The chosen
+/// axis must lie along the contact normal, and its overlap must be the contact's depth.
+void printAxes(const World& world, const Contact& contact) {
+    const BodyRef a{BodyKind::Dynamic, contact.a};  // A is always dynamic
+    const OrientedBox boxA = boxOf(world, a), boxB = boxOf(world, contact.b);
+    std::printf("# %s (A) and %s (B), step %llu: contact normal (%.6f, %.6f, %.6f), depth %.6f m\n",
+                objectName(world, a).c_str(), objectName(world, contact.b).c_str(),
+                static_cast<unsigned long long>(world.stepCount() + 1), double(contact.normal.x), double(contact.normal.y),
+                double(contact.normal.z), double(contact.depth));
+    std::printf("# row label lowA highA lowB highB separation chosen (projections in m, from A's centre)\n");
+    int row = 0;
+    const int chosenAxis = chosenRow(contact.featureId);
+    bool matched = false;
+    const auto axis = [&](const Vec3& raw, const std::string& label) {
+        const double length = double(glm::length(raw));
+        if (length < 1e-3) {  // parallel edges: no axis (box_box.cpp, kParallelEdgeSine)
+            std::printf("%d \"%s\" nan nan nan nan nan 0\n", row++, (label + " (parallel)").c_str());
+            if (row - 1 == chosenAxis) throw FigureError("the narrowphase chose an axis of two parallel edges");
+            return;
+        }
+        const Vec3 unit = raw / Real(length);
+        const double origin = double(glm::dot(boxA.centre, unit));
+        auto [lowA, highA] = shadow(boxA, unit);
+        auto [lowB, highB] = shadow(boxB, unit);
+        const double separation = std::max(lowB - highA, lowA - highB);
+        const bool alongNormal = std::abs(std::abs(double(glm::dot(unit, contact.normal))) - 1) < 1e-9;
+        const bool chosen = row == chosenAxis;
+        if (chosen && alongNormal && std::abs(-separation - double(contact.depth)) < 1e-9) matched = true;
+        std::printf("%d \"%s\" %.9f %.9f %.9f %.9f %.9f %d\n", row, label.c_str(), lowA - origin, highA - origin,
+                    lowB - origin, highB - origin, separation, chosen ? 2 : alongNormal ? 1 : 0);
+        ++row;
+    };
+    const char* names[3] = {"x", "y", "z"};
+    for (int i = 0; i < 3; ++i) axis(boxA.axes[i], std::string("a") + names[i]);
+    for (int j = 0; j < 3; ++j) axis(boxB.axes[j], std::string("b") + names[j]);
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            axis(glm::cross(boxA.axes[i], boxB.axes[j]), std::string("a") + names[i] + " x b" + names[j]);
+    if (!matched) throw FigureError("the axis the narrowphase chose does not have its normal and depth");
+}
+
+/// lesson05_sat.scene: crate on table (a face, step 6), wedge on ridge (two edges, step 9).
+int satAxes() {
+    World world = loadWorld("lesson05_sat.scene");
+    int printed = 0;
+    for (const char* name : {"crate", "wedge"}) {
+        const std::size_t body = dynamicIndex(world, name);
+        StageWatcher watcher(Stage::Narrowphase, [&](const StageEvent&, const World& w) {
+            for (const Contact& c : w.contacts()) {
+                if (c.a != body || c.b.kind != BodyKind::Kinematic) continue;
+                if (printed++ > 0) std::printf("\n\n");
+                printAxes(w, c);
+                return true;
+            }
+            return false;
+        });
+        stepUntil(world, watcher, 100);
+    }
+    return 0;
+}
+
+// ------------------------------------------------------------------ lecture 6
+
+/// lesson05_sat.scene's crate on the table, step 6: the incident face and what is left of it after
+/// each side plane of the reference face, in the reference face's own coordinates (u, v), as
+/// faceContact() in box_box.cpp builds them, clipped by the engine's clipPolygon(). Then the
+/// reference face, each side plane's line, and the narrowphase's contact points.
+int clipping() {
+    World world = loadWorld("lesson05_sat.scene");
+    const std::size_t crate = dynamicIndex(world, "crate");
+    StageWatcher watcher(Stage::Narrowphase, [&](const StageEvent&, const World& w) {
+        std::vector<Contact> points;
+        for (const Contact& c : w.contacts())
+            if (c.a == crate && c.b.kind == BodyKind::Kinematic) points.push_back(c);
+        if (points.empty()) return false;
+        const Contact& first = points.front();
+        const BoxContactKind kind = featureKind(first.featureId);
+        if (kind == BoxContactKind::EdgeEdge) throw FigureError("an edge contact: nothing is clipped");
+        const int referenceFace = static_cast<int>(first.featureId & 7u);
+        const int incidentFace = static_cast<int>((first.featureId >> 3) & 7u);
+        const OrientedBox boxA = boxOf(w, {BodyKind::Dynamic, static_cast<std::uint32_t>(crate)}), boxB = boxOf(w, first.b);
+        const OrientedBox& reference = kind == BoxContactKind::FaceOfA ? boxA : boxB;
+        const OrientedBox& incident = kind == BoxContactKind::FaceOfA ? boxB : boxA;
+        const int referenceAxis = referenceFace / 2, incidentAxis = incidentFace / 2;
+        const Real referenceSign = referenceFace % 2 ? Real(-1) : Real(1);
+        const Real incidentSign = incidentFace % 2 ? Real(-1) : Real(1);
+        const Vec3 referenceNormal = reference.axes[referenceAxis] * referenceSign;
+        const int u = (referenceAxis + 1) % 3, v = (referenceAxis + 2) % 3;
+        const Vec3 faceCentre = reference.centre + referenceNormal * reference.halfExtents[referenceAxis];
+        const auto print = [&](const Vec3& p) {
+            std::printf("%.9f %.9f\n", double(glm::dot(p - faceCentre, reference.axes[u])),
+                        double(glm::dot(p - faceCentre, reference.axes[v])));
+        };
+        std::printf("# lesson05_sat.scene, step %llu: reference face %d of %s, incident face %d of %s\n",
+                    static_cast<unsigned long long>(w.stepCount() + 1), referenceFace,
+                    kind == BoxContactKind::FaceOfA ? "crate" : "table", incidentFace,
+                    kind == BoxContactKind::FaceOfA ? "table" : "crate");
+        std::printf("# coordinates (m) along the reference box's axes %d and %d, from the reference face's centre\n", u, v);
+
+        // The incident face's corners, in faceContact()'s order: (−,−), (+,−), (+,+), (−,+).
+        const int p = (incidentAxis + 1) % 3, q = (incidentAxis + 2) % 3;
+        const Vec3 incidentCentre = incident.centre + incident.axes[incidentAxis] * (incidentSign * incident.halfExtents[incidentAxis]);
+        constexpr Real kSignP[4] = {-1, 1, 1, -1};
+        constexpr Real kSignQ[4] = {-1, -1, 1, 1};
+        ClipVertex polygon[kMaxClipVertices], clipped[kMaxClipVertices];
+        int count = 4;
+        for (int m = 0; m < 4; ++m) {
+            polygon[m].position = incidentCentre + incident.axes[p] * (kSignP[m] * incident.halfExtents[p]) +
+                                  incident.axes[q] * (kSignQ[m] * incident.halfExtents[q]);
+        }
+        const auto printPolygon = [&](const char* title) {
+            std::printf("# %s: %d vertices\n", title, count);
+            for (int i = 0; i <= count; ++i) print(polygon[i % count].position);  // closed
+            std::printf("\n\n");
+        };
+        printPolygon("the incident face");
+        const int sideAxes[4] = {u, u, v, v};
+        const Real sideSigns[4] = {1, -1, 1, -1};
+        const char* sideNames[4] = {"after the +u side plane", "after the -u side plane", "after the +v side plane",
+                                    "after the -v side plane"};
+        for (int side = 0; side < 4 && count > 0; ++side) {
+            const Vec3 planeNormal = reference.axes[sideAxes[side]] * sideSigns[side];
+            const Real offset = glm::dot(planeNormal, reference.centre) + reference.halfExtents[sideAxes[side]];
+            count = clipPolygon(polygon, count, planeNormal, offset, static_cast<std::uint8_t>(4 + side), kTouchTolerance, clipped);
+            std::copy(clipped, clipped + count, polygon);
+            printPolygon(sideNames[side]);
+        }
+        // The reference face: its four corners, closed.
+        std::printf("# the reference face\n");
+        const Real eu = reference.halfExtents[u], ev = reference.halfExtents[v];
+        for (const auto& [su, sv] : {std::pair{-1, -1}, {1, -1}, {1, 1}, {-1, 1}, {-1, -1}}) {
+            std::printf("%.9f %.9f\n", double(su * eu), double(sv * ev));
+        }
+        std::printf("\n\n# the narrowphase's contact points (depth in m as the third column)\n");
+        int kept = 0;
+        for (int i = 0; i < count; ++i) {
+            if (glm::dot(polygon[i].position - faceCentre, referenceNormal) <= kSpeculativeDistance) ++kept;
+        }
+        for (const Contact& c : points) {
+            std::printf("%.9f %.9f %.9f\n", double(glm::dot(c.point - faceCentre, reference.axes[u])),
+                        double(glm::dot(c.point - faceCentre, reference.axes[v])), double(c.depth));
+        }
+        if (kept != static_cast<int>(points.size())) {
+            throw FigureError("the clipped face keeps " + std::to_string(kept) + " points, the narrowphase reported " +
+                              std::to_string(points.size()));
+        }
+        return true;
+    });
+    stepUntil(world, watcher, 100);
+    return 0;
+}
+
+// ------------------------------------------------------------------ appendix 8a
+
+/// bench_sphere_rain_1k.scene at step @p step: the round contacts of the step put in waves and
+/// batches by the fast path's own batchRoundContacts(): per wave, its contacts and batches.
+int waves(std::uint64_t step) {
+    World world = loadWorld("bench_sphere_rain_1k.scene");
+    for (std::uint64_t i = 1; i < step; ++i) world.step();
+    SolverWorkspace solver;
+    StageWatcher watcher(Stage::PrepareConstraints, [&](const StageEvent&, const World& w) {
+        solver.contacts = w.solverContacts();
+        std::uint32_t records = 1;
+        for (std::uint32_t k = 0; k < solver.contacts.size(); ++k) {
+            const SolverContact& c = solver.contacts[k];
+            if (c.rows == kRoundContact) solver.roundContacts.push_back(k);
+            records = std::max({records, c.bodyA + 1, c.bodyB + 1});
+        }
+        solver.bodies.resize(records);
+        return true;
+    });
+    stepUntil(world, watcher, 1);
+    FastWorkspace fast;
+    batchRoundContacts(solver, fast);
+    std::printf("# bench_sphere_rain_1k.scene, step %llu: %zu round contacts in %u waves, %zu batches of %d lanes\n",
+                static_cast<unsigned long long>(step), solver.roundContacts.size(), fast.waves, fast.roundBatches.size(),
+                kLanes);
+    std::printf("# wave contacts batches full-batches\n");
+    std::size_t contacts = 0;
+    for (std::uint32_t wave = 0; wave < fast.waves; ++wave) {
+        std::size_t inWave = 0, batches = 0, full = 0;
+        for (const RoundBatch& batch : fast.roundBatches) {
+            if (batch.wave != wave) continue;
+            ++batches;
+            int lanes = 0;
+            for (int lane = 0; lane < kLanes; ++lane) lanes += batch.contact[lane] != kEmptyLane ? 1 : 0;
+            inWave += static_cast<std::size_t>(lanes);
+            full += lanes == kLanes ? 1 : 0;
+        }
+        contacts += inWave;
+        std::printf("%u %zu %zu %zu\n", wave, inWave, batches, full);
+    }
+    if (contacts != solver.roundContacts.size()) throw FigureError("the batches do not hold every round contact");
+    return 0;
+}
+
+int usage() {
+    std::fprintf(stderr, "usage: stepwise-figures impulse-geometry | bounce-impulses | sat-axes | clipping | "
+                         "waves [STEP]\n");
+    return 2;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc < 2) return usage();
+    const std::string command = argv[1];
+    try {
+        if (command == "impulse-geometry" && argc == 2) return impulseGeometry();
+        if (command == "bounce-impulses" && argc == 2) return bounceImpulses();
+        if (command == "sat-axes" && argc == 2) return satAxes();
+        if (command == "clipping" && argc == 2) return clipping();
+        if (command == "waves" && argc <= 3) {
+            const long step = argc == 3 ? std::strtol(argv[2], nullptr, 10) : 120;
+            if (step < 1) return usage();
+            return waves(static_cast<std::uint64_t>(step));
+        }
+    } catch (const std::exception& error) {
+        std::fprintf(stderr, "stepwise-figures %s: %s\n", command.c_str(), error.what());
+        return 1;
+    }
+    return usage();
+}
