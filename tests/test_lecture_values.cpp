@@ -16,9 +16,13 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
+#include <regex>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -177,7 +181,111 @@ int checkLecture(const fs::path& lecture) {
     return checked;
 }
 
+/// A step number gdb shows in a lecture: `(gdb) p stepCount_` answered `$N = K`, or a breakpoint
+/// condition `if stepCount_ == K`. K counts the steps completed, so the step is K + 1.
+struct GdbStepCount {
+    std::size_t line = 0;  ///< Where the transcript shows it (from 0).
+    long count = 0;        ///< K, World::stepCount_.
+};
+
+/// The steps each trace-check block names, by the block's first line (from 0).
+std::map<std::size_t, std::set<long>> traceCheckSteps(const std::vector<std::string>& lines) {
+    std::map<std::size_t, std::set<long>> blocks;
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+        if (trim(lines[i]).rfind(kBlockStart, 0) != 0) continue;
+        std::set<long>& steps = blocks[i];
+        for (std::size_t k = i + 1; k < lines.size() && trim(lines[k]) != "-->"; ++k) {
+            const std::vector<std::string> w = test::words(trim(lines[k]));
+            if (w.size() >= 2 && w[0] == "step") steps.insert(std::strtol(w[1].c_str(), nullptr, 10));
+        }
+    }
+    return blocks;
+}
+
+std::vector<GdbStepCount> gdbStepCounts(const std::vector<std::string>& lines) {
+    std::vector<GdbStepCount> found;
+    const std::regex printed(R"(^\$\d+ = (\d+)$)");
+    const std::regex condition(R"(^(?:\(gdb\) |\+)t?break-at .* if stepCount_ == (\d+)$)");
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+        const std::string text = trim(lines[i]);
+        std::smatch match;
+        const std::string next = i + 1 < lines.size() ? trim(lines[i + 1]) : "";
+        if (text == "(gdb) p stepCount_" && std::regex_match(next, match, printed)) {
+            found.push_back({i, std::stol(match[1])});
+        } else if (std::regex_match(text, match, condition)) {
+            found.push_back({i, std::stol(match[1])});
+        }
+    }
+    return found;
+}
+
 }  // namespace
+
+TEST_CASE("A trace shown in full in the lectures or docs/trace.md is what stepwise trace prints", "[lectures]") {
+    // A ```sh block whose one line is `[build/PRESET/]stepwise trace config/SCENE [options]`, then
+    // (after blank lines) a plain ``` block: that block is the command's output, line for line.
+    std::vector<fs::path> pages = lectureFiles();
+    pages.push_back(kRoot / "docs" / "trace.md");
+    const std::regex command(R"(^(?:build/\w+/)?stepwise trace (config/\S+\.scene)((?: \S+)*)$)");
+    int shown = 0;
+    for (const fs::path& page : pages) {
+        std::ifstream in(page);
+        std::vector<std::string> lines;
+        for (std::string line; std::getline(in, line);) lines.push_back(line);
+        for (std::size_t i = 0; i + 3 < lines.size(); ++i) {
+            std::smatch match;
+            const std::string commandLine = trim(lines[i + 1]);
+            if (trim(lines[i]) != "```sh" || trim(lines[i + 2]) != "```" || !std::regex_match(commandLine, match, command)) {
+                continue;
+            }
+            std::size_t open = i + 3;
+            while (open < lines.size() && trim(lines[open]).empty()) ++open;
+            if (open >= lines.size() || trim(lines[open]) != "```") continue;  // the command alone, no output shown
+            std::vector<std::string> quoted;
+            std::size_t k = open + 1;
+            for (; k < lines.size() && trim(lines[k]) != "```"; ++k) quoted.push_back(trim(lines[k]));
+            const std::string where = page.lexically_relative(kRoot).generic_string() + ":" + std::to_string(open + 2);
+            INFO(where << ": the output of " << commandLine);
+            const std::vector<std::string> args = test::words(match[2]);
+            const std::vector<std::string> printed =
+                test::textLines(test::traceOf(loadSceneFile((kRoot / match[1].str()).string()), args));
+            CHECK(quoted.size() == printed.size());
+            for (std::size_t n = 0; n < quoted.size() && n < printed.size(); ++n) {
+                INFO("line " << n + 1 << " of the block");
+                CHECK(quoted[n] == printed[n]);
+            }
+            ++shown;
+            i = k;
+        }
+    }
+    CHECK(shown >= 2);  // docs/trace.md's example and appendix 3a's end of the bouncing
+}
+
+TEST_CASE("Every step number gdb shows in a lecture is the trace's step number minus one", "[lectures]") {
+    // One convention everywhere: step 1 is the first step. The trace and a SimulationError name
+    // the step being taken; gdb's World::stepCount_ counts the steps completed before it, so a
+    // transcript that prints stepCount_ = K (or breaks "if stepCount_ == K") is in step K + 1.
+    // The first trace-check block after it (the last one before it, when none follows) must name
+    // step K + 1: then the lecture's gdb numbers and its trace numbers, both checked, cannot drift apart.
+    int counts = 0;
+    for (const fs::path& lecture : lectureFiles()) {
+        std::ifstream in(lecture);
+        std::vector<std::string> lines;
+        for (std::string line; std::getline(in, line);) lines.push_back(line);
+        const auto blocks = traceCheckSteps(lines);
+        for (const GdbStepCount& shown : gdbStepCounts(lines)) {
+            ++counts;
+            INFO("lectures/" << lecture.filename().string() << ":" << shown.line + 1 << ": stepCount_ = " << shown.count
+                             << ", so step " << shown.count + 1);
+            REQUIRE_FALSE(blocks.empty());
+            auto block = blocks.upper_bound(shown.line);  // the first block after the transcript line
+            if (block == blocks.end()) block = std::prev(blocks.end());
+            INFO("its trace-check block: line " << block->first + 1);
+            CHECK(block->second.count(shown.count + 1) == 1);
+        }
+    }
+    CHECK(counts >= 10);  // the lectures show stepCount_ in many transcripts
+}
 
 TEST_CASE("The breakpoint values the lectures quote are what stepwise trace prints", "[lectures]") {
     const std::vector<fs::path> lectures = lectureFiles();

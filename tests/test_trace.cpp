@@ -4,11 +4,14 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <limits>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "command_runner.hpp"
+#include "core/errors.hpp"
 #include "test_support.hpp"
 #include "trace_values.hpp"
 
@@ -34,6 +37,26 @@ Scene droppedBall(SolverKind solver, IntegratorKind integrator = IntegratorKind:
 
 /// The number after "step" in a trace line.
 std::uint64_t stepOf(const std::string& line) { return std::stoull(test::words(line).at(1)); }
+
+/// Writes down the step number of every stage event, and stepCount() while the stage runs.
+struct StepNumbers : StepObserver {
+    std::uint64_t lastEventStep = 0;
+    std::uint64_t countDuringStage = 0;
+    void beforeStage(const StageEvent& event, const World& world) override {
+        lastEventStep = event.step;
+        countDuringStage = world.stepCount();
+    }
+};
+
+/// Per stage of one step: the feature id of each contact index, as World::contacts() holds it.
+struct ContactFeatures : StepObserver {
+    std::vector<std::uint32_t> features;
+    void afterStage(const StageEvent& event, const World& world) override {
+        if (event.stage != Stage::Narrowphase) return;
+        features.clear();
+        for (const Contact& c : world.contacts()) features.push_back(c.featureId);
+    }
+};
 
 /// Writes down what the broadphase and narrowphase produced.
 struct PairCounter : StepObserver {
@@ -218,7 +241,7 @@ TEST_CASE("stepwise trace on the command line", "[trace]") {
     const std::string scene = std::string("'") + STEPWISE_SOURCE_DIR + "/config/lesson03_bounce.scene' ";
     const test::CommandResult ok = test::shell(cli + scene + "--from 28 --stage resolve-impulses");
     CHECK(ok.exitCode == 0);
-    CHECK_THAT(ok.output, Contains("step 28  resolve-impulses  ball|floor  m_eff"));
+    CHECK_THAT(ok.output, Contains("step 28  resolve-impulses  ball|floor  contact 0  feature 0  m_eff"));
     const test::CommandResult stage = test::shell(cli + scene + "--stage bounce");
     CHECK(stage.exitCode == 2);
     CHECK_THAT(stage.output, Contains("unknown stage 'bounce'") && Contains("resolve-impulses"));
@@ -227,4 +250,73 @@ TEST_CASE("stepwise trace on the command line", "[trace]") {
     CHECK_THAT(object.output, Contains("no object named 'bal'"));
     CHECK(test::shell(cli).exitCode == 2);
     CHECK(test::shell(cli + scene + "--steps").exitCode == 2);
+}
+
+TEST_CASE("The trace, a SimulationError and stepCount() number the same step", "[trace]") {
+    // One convention: step 1 is the first step, from t = 0 to h; step N runs from (N - 1)h to Nh,
+    // and while it runs World::stepCount() (gdb's stepCount_) is N - 1, the steps completed.
+    // A NaN planted just before step N is found in step N: the trace's "step N", the error's
+    // "step N" and the observer's StageEvent::step must all say N.
+    const Scene scene = droppedBall(SolverKind::Impulse);
+    const Real h = scene.settings.timeStep;
+    for (const std::uint64_t n : {std::uint64_t(1), std::uint64_t(5)}) {
+        INFO("step " << n);
+        const std::string trace = test::traceOf(scene, {"--from", std::to_string(n), "--stage", "integrate", "--digits", "12"});
+        const std::vector<std::string> timeLine = test::words(test::textLines(trace).at(0));
+        REQUIRE(timeLine.size() >= 4);
+        CHECK(timeLine[0] == "step");
+        CHECK(stepOf(test::textLines(trace).at(0)) == n);
+        CHECK(std::stod(timeLine[3]) == Approx(double(n - 1) * double(h)).margin(1e-12));  // "step N  t T0 s -> ..."
+
+        World world(scene);
+        while (world.stepCount() < n - 1) world.step();
+        StepNumbers seen;
+        world.setObserver(&seen);
+        world.dynamics()[0].velocity = Vec3(std::numeric_limits<Real>::quiet_NaN(), 0, 0);
+        try {
+            world.step();
+            FAIL("no SimulationError");
+        } catch (const SimulationError& error) {
+            CHECK(error.step() == n);
+            CHECK_THAT(error.what(), Contains("step " + std::to_string(n) + " (t = ") && Contains("'ball'"));
+        }
+        CHECK(seen.lastEventStep == n);
+        CHECK(seen.countDuringStage == n - 1);
+    }
+}
+
+TEST_CASE("Each contact line names its index in the step's contacts and its feature id", "[trace]") {
+    // A 100 kg box on a 1 kg box on the ground: four corners of each face touch, so eight contacts,
+    // four of them light|heavy. Without an index and a feature id their lines would look alike.
+    Scene scene = test::emptyScene();
+    scene.planes.push_back(test::ground());
+    scene.dynamics.push_back(test::dynamicBox("light", Vec3(0, 0.5, 0), Vec3(1), 1, 0.6));
+    scene.dynamics.push_back(test::dynamicBox("heavy", Vec3(0, 1.5, 0), Vec3(1), 100, 0.6));
+    World world(scene);
+    ContactFeatures features;
+    world.setObserver(&features);
+    world.step();
+    REQUIRE(features.features.size() == 8);
+    const std::string trace = test::traceOf(scene, {});
+    for (const char* stage : {"narrowphase", "prepare-constraints", "solve-constraints", "relax-constraints",
+                              "restitution"}) {
+        INFO(stage);
+        std::vector<std::string> rows;
+        for (const std::string& line : test::linesWith(trace, stage)) {
+            if (line.find("|") != std::string::npos) rows.push_back(line);
+        }
+        REQUIRE(rows.size() == features.features.size());
+        std::set<std::string> distinct;
+        for (std::size_t i = 0; i < rows.size(); ++i) {
+            INFO(rows[i]);
+            // The rows come in the contacts' order, each with its own index and the World's feature id.
+            CHECK(test::traceValue(rows[i], "contact") == std::vector<double>{double(i)});
+            CHECK(test::traceValue(rows[i], "feature") == std::vector<double>{double(features.features[i])});
+            for (const std::string& word : test::words(rows[i])) {
+                if (word.find('|') != std::string::npos) distinct.insert(word + " " + std::to_string(features.features[i]));
+            }
+        }
+        // A corner's feature id is unique among the contacts of its pair: two boxes, four corners each.
+        CHECK(distinct.size() == rows.size());
+    }
 }

@@ -136,12 +136,14 @@ TEST_CASE("On the packed substeps a non-finite number is named by the ball whose
     const SimulationError packed = errorOf(scene);
     CHECK(packed.objectName() == "spinner");
     CHECK(packed.stageName() == "solve-constraints");
-    CHECK_THAT(packed.what(), Contains("orientation") && Contains("step 0"));  // the first step (counted from 0)
+    CHECK_THAT(packed.what(), Contains("orientation") && Contains("step 1 (t = 0 s)"));  // the first step is step 1
+    CHECK(packed.step() == 1);
     Scene objects = scene;
     objects.settings.fastPath = false;  // the plain path
     const SimulationError unpacked = errorOf(objects);
     CHECK(unpacked.objectName() == "spinner");
     CHECK(unpacked.stageName() == "integrate");
+    CHECK(unpacked.step() == packed.step());  // the plain and the fast path name the same step
 }
 
 TEST_CASE("A World refuses impossible objects by name", "[world]") {

@@ -1,6 +1,6 @@
 # Appendix 7a, session B: the sticky box's four corners after one pass of the first step. Run it on a copy of the
 # scene whose World line says ImpulseIterations=1:
-#   sed 's/^World, \(.*\)$/World, \1, ImpulseIterations=1/' config/lesson07_incline.scene > /tmp/incline_1pass.scene
+#   scene copy:  sed 's/^World, \(.*\)$/World, \1, ImpulseIterations=1/' config/lesson07_incline.scene > /tmp/incline_1pass.scene
 # Breakpoints inside a function are named by the code at the line (break-at FILE "TEXT", from
 # lectures/gdb/stepwise.py), so they follow the code when lines move; run from the repository root.
 #   interactive:  gdb -x lectures/gdb/07a-one-pass.gdb --args build/debug/stepwise run /tmp/incline_1pass.scene --steps 1

@@ -6,15 +6,16 @@
 # Contact 0 is a corner of the light box's top face against the heavy box (A = light, B = heavy,
 # normal +y); contact 4 is a corner of the light box's bottom face on the ground (normal -y).
 set pagination off
-set $step = -1
-set $sub = 0
+# Steps and substeps count from 1, as stepwise trace counts them ("step 1 [1/16]").
+set $step = 0
+set $sub = 1
 
 # Stage 4, once a step: contacts -> SolverContact (what a pass reads) and ContactStart (where it came from), warm-started from the impulses kept last step.
 break stepwise::prepareContacts
 commands
 silent
 set $step = $step + 1
-set $sub = 0
+set $sub = 1
 printf "--- step %d, prepareContacts: %d contacts, %d impulses kept from the last step\n", $step, contacts._M_extent._M_extent_value, workspace.previousImpulses._M_impl._M_finish - workspace.previousImpulses._M_impl._M_start
 continue
 end
@@ -29,7 +30,7 @@ set $c4 = &workspace.contacts._M_impl._M_start[4]
 set $s0 = &workspace.starts._M_impl._M_start[0]
 set $s4 = &workspace.starts._M_impl._M_start[4]
 if useBias
-  if $sub == 0
+  if $sub == 1
     printf "contact 0: normalMass %.6f kg, startSeparation %+.3e m; contact 4: normalMass %.6f kg, startSeparation %+.3e m\n", $c0->normalMass, $s0->startSeparation, $c4->normalMass, $s4->startSeparation
     printf "substep  lambda0 in -> after solve    lambda4 in -> after solve   (N s)\n"
   end

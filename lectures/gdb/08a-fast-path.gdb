@@ -1,12 +1,13 @@
 # Appendix to lecture 8: the fast path on the three-ball stacks, one step
 # (lectures/08a-appendix-the-fast-path.md, "Step through it in gdb").
 # The debug build takes the plain path unless the scene says FastPath=true, so run it on a copy that does:
-#   sed 's/Sleep=false/FastPath=true, Sleep=false/' config/lesson08_three_balls.scene > /tmp/three_balls_fast.scene
+#   scene copy:  sed 's/Sleep=false/FastPath=true, Sleep=false/' config/lesson08_three_balls.scene > /tmp/three_balls_fast.scene
 #   interactive:  gdb -x lectures/gdb/08a-fast-path.gdb --args build/debug/stepwise run /tmp/three_balls_fast.scene --steps 1
 #   all at once:  gdb -q -batch -x lectures/gdb/08a-fast-path.gdb --args build/debug/stepwise run /tmp/three_balls_fast.scene --steps 1
 # Breakpoints by function name, so they do not move when lines do.
 set pagination off
-set $sub = 0
+# Substeps count from 1, as stepwise trace counts them ("step 1 [1/16]").
+set $sub = 1
 
 # solveRoundContacts() is built three times (AVX-512, AVX2, any x86-64), and a small "resolver"
 # picks one copy when the program starts. Stop in main first, so that the resolver has run

@@ -18,12 +18,15 @@ class SimulationError : public std::runtime_error {
 public:
     /// @brief Builds the error and its message
     ///        "step N (t = T s), stage 'S': object 'O': what".
+    ///
+    /// @p step is the step being taken, counted from 1 as `stepwise trace` counts
+    /// (World::stepCount() + 1), and @p time the time at its start, (N − 1)·h.
     SimulationError(std::string objectName, std::string stageName, std::uint64_t step,
                     double time, const std::string& what);
 
     const std::string& objectName() const { return object_; }  ///< Object whose state is bad.
     const std::string& stageName() const { return stage_; }    ///< Stage that produced it.
-    std::uint64_t step() const { return step_; }               ///< 0-based index of the step being taken.
+    std::uint64_t step() const { return step_; }               ///< The step being taken; the first step is step 1.
 
 private:
     std::string object_;

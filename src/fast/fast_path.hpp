@@ -67,7 +67,7 @@ struct FastSubsteps {
     bool canTurn = true;                          ///< The plan: a body can start to turn.
     bool packedSubsteps = false;                  ///< The plan: a step of balls may run on packed records.
     StageRecords& records;                        ///< Where each stage's time goes (World::stageRecords()).
-    std::uint64_t step = 0;                       ///< Steps taken before this one, to name in an error.
+    std::uint64_t step = 0;                       ///< The step being taken, from 1 (StageAtStep::step), to name in an error.
     double time = 0;                              ///< Simulated time at the step's start, s.
 };
 

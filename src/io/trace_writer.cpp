@@ -54,6 +54,18 @@ Vec3 pointVelocity(const World& world, const BodyRef& ref, const Vec3& point) {
     return Vec3(0);
 }
 
+/// The first fields of every contact's line: `contact I  feature F`. I is the contact's index in the
+/// step's list (World::contacts(), in the narrowphase's order; the solver's records and the impulse
+/// reports share it, so it is the index gdb shows in `contacts_[I]` and `workspace.contacts[I]`). F is
+/// its feature id, which names the features of A and B that touch. A box on a box has up to four
+/// contacts between the same two bodies: the index tells their lines apart, and the feature id
+/// follows one corner from step to step (it is the warm-start key).
+std::string contactFields(const World& world, std::size_t index) {
+    std::string fields = "contact " + std::to_string(index);
+    if (index < world.contacts().size()) fields += "  feature " + std::to_string(world.contacts()[index].featureId);
+    return fields + "  ";
+}
+
 /// Which bound held the impulses of a contact: "no", "j>=0" (a pass would have pulled), "cone" (sliding).
 const char* clampText(const ImpulseReport& r) {
     if (r.normalClamped && r.frictionClamped) return "j>=0,cone";
@@ -297,12 +309,14 @@ void TraceObserver::writePairs(const std::string& head, const World& world) {
 
 void TraceObserver::writeContacts(const std::string& head, const World& world) {
     line(head, "all", "contacts " + std::to_string(world.contacts().size()));
-    for (const Contact& c : world.contacts()) {
+    for (std::size_t i = 0; i < world.contacts().size(); ++i) {
+        const Contact& c = world.contacts()[i];
         const std::string& a = world.dynamics()[c.a].name;
         const std::string& b = objectName(world, c.b);
         if (!objectSelected(a) && !objectSelected(b)) continue;
-        line(head, a + "|" + b, "point " + vec(c.point) + " m  normal " + vec(c.normal) + "  depth " + num(c.depth) +
-                                    " m  feature " + std::to_string(c.featureId));
+        line(head, a + "|" + b,
+             contactFields(world, i) + "point " + vec(c.point) + " m  normal " + vec(c.normal) + "  depth " +
+                 num(c.depth) + " m");
     }
 }
 
@@ -329,7 +343,7 @@ void TraceObserver::writeImpulses(const std::string& head, const World& world) {
         const Real vn0 = glm::dot(vB0 - vA0, c.normal);
         const Real vn1 = glm::dot(pointVelocity(world, c.b, c.point) - vA1, c.normal);
         line(head, a + "|" + b,
-             "m_eff " + num(r.normalMass) + " kg  v_n " + num(vn0) + " m/s -> " + num(vn1) + " m/s  v_c " +
+             contactFields(world, i) + "m_eff " + num(r.normalMass) + " kg  v_n " + num(vn0) + " m/s -> " + num(vn1) + " m/s  v_c " +
                  num(r.approachAtTouch) + " m/s  e " + num(r.restitution) + (r.resting ? " (resting)" : " (impact)") +
                  "  j " + num(r.normalImpulse) + " N*s  j_t " + num(r.frictionImpulse) + " N*s  clamped " +
                  clampText(r));
@@ -363,7 +377,7 @@ void TraceObserver::writePreparedConstraints(const std::string& head, const Worl
         const std::string& b = objectName(world, start.refB);
         if (!objectSelected(a) && !objectSelected(b)) continue;
         line(head, a + "|" + b,
-             "m_eff " + num(c.normalMass) + " kg  C0 " + num(start.startSeparation) + " m  v_c " +
+             contactFields(world, i) + "m_eff " + num(c.normalMass) + " kg  C0 " + num(start.startSeparation) + " m  v_c " +
                  num(start.approachAtTouch) + " m/s  e " + num(start.restitution) + "  warm j " +
                  num(c.normalImpulse) + " N*s");
     }
@@ -398,7 +412,7 @@ void TraceObserver::writeSolve(const std::string& head, const World& world) {
         const std::string& b = objectName(world, start.refB);
         if (!objectSelected(a) && !objectSelected(b)) continue;
         line(head, a + "|" + b,
-             "j " + num(c.normalImpulse) + " N*s  j_t " + num(std::hypot(c.tangentImpulse[0], c.tangentImpulse[1])) +
+             contactFields(world, i) + "j " + num(c.normalImpulse) + " N*s  j_t " + num(std::hypot(c.tangentImpulse[0], c.tangentImpulse[1])) +
                  " N*s  j_max " + num(c.maxNormalImpulse) + " N*s  v_n " + num(normalVelocityNow(world, c, start)) + " m/s");
     }
     writeMotion(head, world);
@@ -427,7 +441,8 @@ void TraceObserver::writeRestitution(const std::string& head, const World& world
                                : start.restitution <= 0 ? "no (resting, or e = 0)"
                                                         : "yes";
         line(head, a + "|" + b,
-             "v_c " + num(start.approachAtTouch) + " m/s  e " + num(start.restitution) + "  bounce " + decision + "  j " +
+             contactFields(world, i) + "v_c " + num(start.approachAtTouch) + " m/s  e " + num(start.restitution) +
+                 "  bounce " + decision + "  j " +
                  num(c.normalImpulse) + " N*s  j_max " + num(c.maxNormalImpulse) + " N*s  v_n " + num(normalVelocityNow(world, c, start)) + " m/s");
     }
     for (std::size_t i = 0; i < world.joints().size(); ++i) {

@@ -13,6 +13,11 @@
 /// `step N [s/S] STAGE OBJECT`, then `label value unit` fields; a value that
 /// a stage changed reads `label before unit -> after unit`. OBJECT is a body's
 /// name, `A|B` for a contact or pair, `joint:NAME`, or `all` for a count.
+/// A contact's line goes on `contact I  feature F`: its index in the step's
+/// contact list (World::contacts(); gdb's `contacts_[I]`) and its feature id,
+/// so the four corners of a box on a box are four different lines.
+/// Steps count from 1: step N runs from t = (N − 1)·h to N·h, and while it
+/// runs World::stepCount() is N − 1 (docs/architecture.md, "Step numbers").
 /// docs/trace.md lists every line; the lectures' trace-check blocks select
 /// lines by their header (tests/test_lecture_values.cpp).
 #pragma once

@@ -28,7 +28,7 @@ enum StateParts : unsigned {
 /// @brief Where a check runs, to name it when it fails: the stage, and the step being taken.
 struct StageAtStep {
     Stage stage = Stage::Count;  ///< The stage that just ran.
-    std::uint64_t step = 0;      ///< Steps taken before this one (World::stepCount()).
+    std::uint64_t step = 0;      ///< The step being taken, from 1: World::stepCount() + 1.
     double time = 0;             ///< Simulated time at the step's start, s.
 };
 

@@ -130,6 +130,8 @@ std::vector<std::string> hudLines(const Simulation& simulation, const OverlaySta
     const FixedStepClock& clock = simulation.clock();
     std::vector<std::string> lines;
 
+    // "step N" is the last step taken: steps count from 1, so after N steps stepCount() is N and
+    // t = N·h, and the S panel's "step N" (StageEvent::step) is the same step (architecture.md, "Step numbers").
     std::string first = std::filesystem::path(simulation.scenePath()).filename().string() +
                         format("  t = %.3f s  step %.0f  h = %.4g s", double(world.time()),
                                double(world.stepCount()), double(world.settings().timeStep));

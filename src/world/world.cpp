@@ -404,7 +404,7 @@ void World::runFastPath(const AccelerationFunction& forces, const ContactSolverS
                             .canTurn = plan_.rotation.runs,
                             .packedSubsteps = plan_.packedSubsteps.runs,
                             .records = stageRecords_,
-                            .step = stepCount_,
+                            .step = stepCount_ + 1,
                             .time = static_cast<double>(time_)};
     runFastSubsteps(step, *fastWorkspace_);
 }
@@ -444,7 +444,7 @@ void StepObserver::afterStep(const World&) {}
 /// contact or a joint (prepareContacts()): only those are read after them, so a stage is never
 /// named for a number it did not write.
 void World::checkFinite(Stage stage) const {
-    const StageAtStep where{stage, stepCount_, static_cast<double>(time_)};
+    const StageAtStep where{stage, stepCount_ + 1, static_cast<double>(time_)};  // step 1 is the first
     const unsigned parts = statePartsWrittenBy(stage, settings_.integrator);
     const bool constraintStage = settings_.solver == SolverKind::SequentialImpulse &&
                                  (stage == Stage::SolveConstraints || stage == Stage::RelaxConstraints ||

@@ -55,7 +55,7 @@ public:
 
     const WorldSettings& settings() const { return settings_; }  ///< The scene's World record.
     Real time() const { return time_; }                           ///< Simulated time, s.
-    std::uint64_t stepCount() const { return stepCount_; }        ///< Steps taken so far.
+    std::uint64_t stepCount() const { return stepCount_; }        ///< Steps completed: N − 1 while step N runs.
 
     /// @brief Simulated bodies, to change: the step plan is rebuilt before the next step.
     std::vector<DynamicObject>& dynamics() {
@@ -167,6 +167,9 @@ private:
     StepObserver* observer_ = nullptr;
     int substep_ = -1;  ///< Substep being run, −1 outside the substep loop (for StageEvent).
     Real time_ = 0;
+    /// Steps completed before the one now running. Steps count from 1, so while step N runs
+    /// (from t = (N − 1)·h) this is N − 1: in gdb, `p stepCount_` prints 27 inside step 28, the
+    /// step `stepwise trace` prints as "step 28" and a SimulationError names "step 28".
     std::uint64_t stepCount_ = 0;
 };
 

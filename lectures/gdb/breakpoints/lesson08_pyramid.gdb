@@ -3,6 +3,7 @@
 # By function name, so they do not move when lines do. From the command line
 # (after cmake --preset debug && cmake --build --preset debug):
 #   gdb -x lectures/gdb/breakpoints/lesson08_pyramid.gdb --args build/debug/stepwise run config/lesson08_pyramid.scene --steps 10
+#   (or scripts/debug.sh config/lesson08_pyramid.scene -- --steps 10, which builds the debug preset first and runs that)
 # then (gdb) run, and (gdb) continue from one stop to the next.
 # Pending: VS Code sources this before the program is loaded.
 set breakpoint pending on

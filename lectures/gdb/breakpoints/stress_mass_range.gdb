@@ -1,0 +1,13 @@
+# Breakpoints for config/stress_mass_range.scene (lecture 9, lectures/09-accuracy-and-stability.md).
+# The same breakpoints as its entry in .vscode/launch.json, which sources this file.
+# By function name, so they do not move when lines do. From the command line:
+#   scripts/debug.sh config/stress_mass_range.scene
+# (it builds the debug preset, then runs
+#   gdb -x lectures/gdb/breakpoints/stress_mass_range.gdb --args build/debug/stepwise run config/stress_mass_range.scene)
+# then (gdb) run, and (gdb) continue from one stop to the next.
+# Pending: VS Code sources this before the program is loaded.
+set breakpoint pending on
+# stage 4: effective masses from 1 g to 10 t
+break stepwise::prepareContacts
+# stage 6, every substep: one soft pass over the contacts
+break stepwise::solveContacts
