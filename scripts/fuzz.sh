@@ -7,11 +7,12 @@
 #   scripts/fuzz.sh --no-build 60
 #
 # Seeds: every shipped scene (config/, lectures/) for the loader, tests/fuzz/seeds/cli/ for the
-# command line; the loader also gets a dictionary of the record and field names found in them.
+# command line, and the inputs that once broke them (tests/fuzz/regressions/); the loader also gets a dictionary of the record and field names found in them.
 # What a run adds to the corpus stays in build/fuzz/corpus/ for the next run. A crash, a leak,
 # undefined behaviour or a hang (over 10 s on one input) stops the fuzzer: its input is saved in
-# build/fuzz/artifacts/, the script says how to reproduce it, and exits 1. Turn the input into a
-# regression test in tests/ (tests/test_fuzz_regressions.cpp) when it is fixed.
+# build/fuzz/artifacts/, the script says how to reproduce it, and exits 1. Once it is fixed, copy
+# the input into tests/fuzz/regressions/scenes/ or cli/: tests/test_fuzz_regressions.cpp replays
+# every file there through the same oracles (tests/fuzz/fuzz_oracles.hpp).
 set -euo pipefail
 
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -34,7 +35,7 @@ fi
 bin=build/fuzz/tests/fuzz
 work=build/fuzz
 mkdir -p "$work/artifacts" "$work/corpus/scenes" "$work/corpus/cli" "$work/seeds/scenes"
-find config lectures -name '*.scene' -exec cp {} "$work/seeds/scenes/" \;
+find config lectures tests/fuzz/regressions/scenes -name '*.scene' -exec cp {} "$work/seeds/scenes/" \;
 # The dictionary: record names and "Field=" words of the shipped scenes.
 {
     find config lectures -name '*.scene' -exec cat {} + |
@@ -58,5 +59,5 @@ run() {
     grep -E '^stat::(number_of_executed_units|new_units_added)' "$work/$target.log" | sed "s/^/fuzz.sh: $target: /" >&2
 }
 run fuzz_scene_loader -dict="$work/scene.dict" "$work/corpus/scenes" "$work/seeds/scenes"
-run fuzz_command_line "$work/corpus/cli" tests/fuzz/seeds/cli
+run fuzz_command_line "$work/corpus/cli" tests/fuzz/seeds/cli tests/fuzz/regressions/cli
 exit $status

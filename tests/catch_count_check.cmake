@@ -2,7 +2,8 @@
 #
 # catch_discover_tests (tests/CMakeLists.txt) makes one CTest test per test case, with the test
 # case's name as its filter. A name CTest treats specially (a ';' cuts it in two) would register a
-# test that runs nothing; --warn NoTests makes such a test fail, and this check makes sure the two
+# test that runs nothing, and one that starts with '-' is read as an option; --warn NoTests makes
+# such a test fail, and this check refuses both names and makes sure the two
 # counts agree, so no test case is left out either.
 #
 #   cmake -D TEST_EXECUTABLE=<stepwise_tests> -D CTEST=<ctest> -D BUILD_DIR=<build> -P catch_count_check.cmake
@@ -17,6 +18,9 @@ list(LENGTH cases catch_count)
 foreach(name IN LISTS cases)
   if(name MATCHES ";")
     message(FATAL_ERROR "catch2-count: the test case \"${name}\" has a ';' in its name, which CTest cuts in two: rename it")
+  endif()
+  if(name MATCHES "^-")
+    message(FATAL_ERROR "catch2-count: the test case \"${name}\" starts with '-', which the test program reads as an option: rename it")
   endif()
 endforeach()
 

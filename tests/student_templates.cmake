@@ -76,7 +76,7 @@ function(stepwise_student_stage file)
       $<TARGET_OBJECTS:${name}_object>)
     target_link_libraries(${name}_engine INTERFACE stepwise_engine_objects)
     add_executable(${name}_tests EXCLUDE_FROM_ALL $<TARGET_OBJECTS:stepwise_tests_objects>)
-    target_link_libraries(${name}_tests PRIVATE ${name}_engine stepwise_options Catch2::Catch2)
+    target_link_libraries(${name}_tests PRIVATE stepwise_command_line ${name}_engine stepwise_options Catch2::Catch2)
     add_test(NAME student-${kind}:${file}
       COMMAND "${CMAKE_COMMAND}" -D "BUILD_DIR=${PROJECT_BINARY_DIR}" -D "TARGET=${name}_tests"
               -D "EXECUTABLE=$<TARGET_FILE:${name}_tests>" -D "SOURCE_DIR=${PROJECT_SOURCE_DIR}"

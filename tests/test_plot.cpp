@@ -292,7 +292,7 @@ TEST_CASE("plot refuses a bad command line with exit code 2 and names the cause"
         {"plot " + bounce + " --quantity velocity --component x,x" + out, "component 'x' is asked for twice"},
         {"plot " + scene("bench_sphere_rain_1k.scene") + " --quantity position" + out, "choose up to 8 with --object"},
         {"plot " + bounce + " --quantity position --size 5x5" + out, "--size expects WIDTHxHEIGHT"},
-        {"plot " + bounce + " --quantity position --every 0" + out, "--every expects a whole number > 0"},
+        {"plot " + bounce + " --quantity position --every 0" + out, "--every expects a whole number from 1 to"},
         {"plot " + bounce + " --quantity position --duration 1 --steps 3" + out, "give --duration or --steps"},
         {"plot " + bounce + " --quantity position --out a.png --data a.png", "name the same file"},
         {"plot " + bounce + " --quantity position --colour red" + out, "unknown option '--colour' for 'plot'"},

@@ -217,9 +217,11 @@ TEST_CASE("The observer sees the broadphase's pairs and the narrowphase's depth"
 
 TEST_CASE("Bad trace arguments say what is wrong", "[trace]") {
     const auto messageOf = [](const std::vector<std::string>& args) {
+        std::vector<std::string> line{"scene.scene"};
+        line.insert(line.end(), args.begin(), args.end());
         try {
-            parseTraceOptions(args);
-        } catch (const std::invalid_argument& error) {
+            cli::parseTraceOptions(line);
+        } catch (const cli::UsageError& error) {
             return std::string(error.what());
         }
         return std::string("no error");

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "app/cli.hpp"
 #include "io/trace_writer.hpp"
 
 namespace stepwise::test {
@@ -93,7 +94,10 @@ inline std::vector<double> traceValue(const std::string& line, std::string label
 /// The trace of @p scene for the arguments @p args (as on the command line, after the scene file).
 inline std::string traceOf(const Scene& scene, const std::vector<std::string>& args) {
     std::ostringstream out;
-    writeTrace(scene, parseTraceOptions(args), out);
+    // The command line's own parser (src/app/options.cpp), given a placeholder for the scene file.
+    std::vector<std::string> line{"scene.scene"};
+    line.insert(line.end(), args.begin(), args.end());
+    writeTrace(scene, cli::parseTraceOptions(line).trace, out);
     return out.str();
 }
 

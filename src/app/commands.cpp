@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <new>
 #include <optional>
 #include <string>
 
@@ -240,6 +241,21 @@ std::unique_ptr<Scene> loadOrReport(const std::string& path) {
     }
 }
 
+std::string outOfMemoryMessage(const World& world) {
+    // What grows without bound is the contacts: n bodies that all overlap (dropped on one spot)
+    // make a candidate pair and a contact for every pair, n(n - 1)/2 of them, each with its
+    // manifold and solver record.
+    const double n = double(world.dynamics().size());
+    char text[320];
+    std::snprintf(text, sizeof text,
+                  "out of memory in step %llu (t = %.6g s) of a scene of %.0f dynamic bodies, with %zu contacts "
+                  "found. Bodies that overlap all at once make a contact for every pair, n(n-1)/2 = %.3g "
+                  "here: spread them out",
+                  static_cast<unsigned long long>(world.stepCount() + 1), double(world.time()), n,
+                  world.contacts().size(), n * (n - 1) / 2);
+    return text;
+}
+
 /// Prints @p warnings of a run to stderr as they come, up to kMaxRunWarnings in all.
 void reportWarnings(const RunWatch& watch, const std::vector<std::string>& warnings) {
     std::size_t index = watch.count() - warnings.size();
@@ -290,8 +306,11 @@ int runCommand(const RunOptions& options) {
     int exitCode = kExitOk;
     RunWatch watch(world);
     {
-        // Ctrl-C or kill: stop between two steps, with every CSV row whole, and report what ran (interrupt.hpp).
+        // Ctrl-C, kill or the time budget: stop between two steps, with every CSV row whole, and
+        // report what ran (interrupt.hpp).
         const InterruptGuard interrupts;
+        const Deadline deadline(options.maxSeconds);
+        bool outOfTime = false;
         Progress progress(steps);
         try {
             for (std::uint64_t i = 0; i < steps; ++i) {
@@ -302,9 +321,22 @@ int runCommand(const RunOptions& options) {
                 progress.update(world.stepCount(), double(world.time()));
                 if (csvFile && csvFile->failed()) break;  // a full disk: no use going on
                 if (InterruptGuard::signalReceived() != 0) break;
+                if (i + 1 < steps && deadline.passed()) {
+                    outOfTime = true;
+                    break;
+                }
             }
         } catch (const SimulationError& error) {
             std::fprintf(stderr, "stepwise: simulation failed: %s\n", error.what());
+            exitCode = kExitSimulationError;
+        } catch (const std::bad_alloc&) {
+            std::fprintf(stderr, "stepwise: error: %s\n", outOfMemoryMessage(world).c_str());
+            exitCode = kExitSimulationError;
+        }
+        if (outOfTime) {
+            std::fprintf(stderr, "stepwise: stopped after --max-seconds %g of wall-clock time: %llu of %llu steps\n",
+                         deadline.seconds(), static_cast<unsigned long long>(world.stepCount()),
+                         static_cast<unsigned long long>(steps));
             exitCode = kExitSimulationError;
         }
         if (const int signal = InterruptGuard::signalReceived(); signal != 0) {

@@ -14,17 +14,18 @@
 #include <fnmatch.h>
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <new>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "app/cli.hpp"
+#include "app/interrupt.hpp"
 #include "config/scene_changes.hpp"
 #include "config/scene_loader.hpp"
 #include "core/errors.hpp"
@@ -104,7 +105,8 @@ std::vector<fs::path> sceneFiles(const fs::path& folder, const std::string& glob
 }
 
 /// Loads, simulates and checks one file; every way it can go wrong becomes the row's note.
-GradeRow gradeFile(const fs::path& path, const fs::path& folder, const AnswerKey* key, std::uint64_t maxSteps) {
+GradeRow gradeFile(const fs::path& path, const fs::path& folder, const AnswerKey* key, const GradeOptions& options) {
+    const std::uint64_t maxSteps = options.maxSteps;
     GradeRow row;
     row.file = path.lexically_relative(folder).generic_string();
     std::unique_ptr<Scene> scene;
@@ -145,13 +147,28 @@ GradeRow gradeFile(const fs::path& path, const fs::path& folder, const AnswerKey
         ExpectationMonitor monitor(world, expectations);
         monitor.observe(world);
         std::string failure;
+        // One submission that never ends must not stall the class: past its budget, the file fails.
+        const Deadline deadline(options.maxSecondsPerFile);
         try {
             for (std::uint64_t i = 0; i < static_cast<std::uint64_t>(steps); ++i) {
                 world.step();
                 monitor.observe(world);
+                if (InterruptGuard::signalReceived() != 0) {
+                    failure = "stopped by a signal";
+                    break;
+                }
+                if (i + 1 < static_cast<std::uint64_t>(steps) && deadline.passed()) {
+                    char text[160];
+                    std::snprintf(text, sizeof text, "took longer than --max-seconds %g: %llu of %.0f steps", deadline.seconds(),
+                                  static_cast<unsigned long long>(world.stepCount()), steps);
+                    failure = text;
+                    break;
+                }
             }
         } catch (const SimulationError& error) {
             failure = std::string("simulation failed: ") + error.what();
+        } catch (const std::bad_alloc&) {
+            failure = outOfMemoryMessage(world);
         }
         const std::vector<ExpectationResult> results = monitor.results(world);
         for (std::size_t i = 0; i < results.size(); ++i) {
@@ -163,7 +180,10 @@ GradeRow gradeFile(const fs::path& path, const fs::path& folder, const AnswerKey
         }
         if (!failure.empty()) row.note = failure;
         row.outcome = row.passed == row.total && failure.empty() ? Outcome::Pass : Outcome::Fail;
-    } catch (const std::invalid_argument& error) {
+    } catch (const std::bad_alloc&) {
+        row.note = "out of memory building the scene's world";
+        return row;
+    } catch (const std::exception& error) {
         row.note = std::string("the scene cannot be simulated: ") + error.what();
         return row;
     }
@@ -190,38 +210,6 @@ bool printExpectationTable(const std::vector<Expectation>& expectations, const s
                     describeMeasurement(expectations[i], results[i]).c_str());
     }
     return passed == expectations.size();
-}
-
-GradeOptions parseGradeOptions(const std::vector<std::string>& args) {
-    GradeOptions options;
-    bool folderGiven = false;
-    for (std::size_t i = 0; i < args.size(); ++i) {
-        const std::string& arg = args[i];
-        auto value = [&]() -> const std::string& {
-            if (i + 1 >= args.size()) throw UsageError(arg + " needs a value");
-            return args[++i];
-        };
-        if (arg == "--scene-glob") {
-            options.glob = value();
-        } else if (arg == "--expect") {
-            options.expectPath = value();
-        } else if (arg == "--max-steps") {
-            const std::string& text = value();
-            const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), options.maxSteps);
-            if (text.empty() || error != std::errc() || end != text.data() + text.size() || options.maxSteps == 0) {
-                throw UsageError("--max-steps expects a whole number > 0, found '" + text + "'");
-            }
-        } else if (arg.size() > 1 && arg[0] == '-') {
-            throw UsageError("unknown option '" + arg + "' for 'grade'");
-        } else if (folderGiven) {
-            throw UsageError("'grade' takes one folder, got '" + options.folder + "' and '" + arg + "'");
-        } else {
-            options.folder = arg;
-            folderGiven = true;
-        }
-    }
-    if (!folderGiven) throw UsageError("'grade' needs a folder of scene files, e.g. stepwise grade submissions/");
-    return options;
 }
 
 int gradeCommand(const GradeOptions& options) {
@@ -265,21 +253,26 @@ int gradeCommand(const GradeOptions& options) {
     } else if (options.expectPath) {
         std::printf("It has no MayChange records: submissions may change anything\n");
     }
-    std::vector<GradeRow> rows;
+    // Each row is printed as its file finishes, so a long grading shows its progress, and a
+    // grading stopped by Ctrl-C has printed every row it finished.
     std::size_t fileWidth = std::string("file").size();
-    for (const fs::path& file : files) {
-        rows.push_back(gradeFile(file, options.folder, options.expectPath ? &key : nullptr, options.maxSteps));
-        fileWidth = std::max(fileWidth, rows.back().file.size());
-    }
+    for (const fs::path& file : files) fileWidth = std::max(fileWidth, file.lexically_relative(options.folder).generic_string().size());
     std::printf("  %-*s  %-6s %-7s %s\n", static_cast<int>(fileWidth), "file", "result", "passed", "first failure");
+    std::fflush(stdout);
+    std::vector<GradeRow> rows;
     std::size_t counts[3] = {0, 0, 0};
-    for (const GradeRow& row : rows) {
+    const InterruptGuard interrupts;
+    for (const fs::path& file : files) {
+        rows.push_back(gradeFile(file, options.folder, options.expectPath ? &key : nullptr, options));
+        const GradeRow& row = rows.back();
         ++counts[static_cast<int>(row.outcome)];
         const std::string passed =
             row.total > 0 && row.outcome != Outcome::Error ? std::to_string(row.passed) + "/" + std::to_string(row.total)
                                                            : "-";
         std::printf("  %-*s  %-6s %-7s %s\n", static_cast<int>(fileWidth), row.file.c_str(), outcomeText(row.outcome),
                     passed.c_str(), cut(row.note).c_str());
+        std::fflush(stdout);
+        if (InterruptGuard::signalReceived() != 0) break;
     }
     std::printf("%zu file(s): %zu passed, %zu failed, %zu could not be run\n", rows.size(), counts[0], counts[1],
                 counts[2]);
@@ -291,6 +284,11 @@ int gradeCommand(const GradeOptions& options) {
             heading = true;
             std::printf("%s\n", change.message().c_str());
         }
+    }
+    if (const int signal = InterruptGuard::signalReceived(); signal != 0) {
+        std::fprintf(stderr, "stepwise: grading stopped by signal %d after %zu of %zu file(s)\n", signal, rows.size(),
+                     files.size());
+        return exitCodeForSignal(signal);
     }
     return counts[0] == rows.size() ? kExitOk : kExitExpectationFailed;
 }

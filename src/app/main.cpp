@@ -5,10 +5,12 @@
 #include <cstring>
 #include <exception>
 #include <filesystem>
+#include <new>
 #include <string>
 #include <system_error>
 #include <vector>
 
+#include "app/arguments.hpp"
 #include "app/cli.hpp"
 #ifdef STEPWISE_HAVE_VIEWER
 #include "viewer/viewer.hpp"
@@ -63,10 +65,6 @@ std::string defaultScenePath() {
 int viewCommand(const std::vector<std::string>& args) {
     using namespace stepwise::cli;
     const stepwise::viewer::ViewOptions options = parseViewOptions(args, defaultScenePath());
-    if (options.help) {
-        std::fputs(viewUsageText().c_str(), stdout);
-        return stepwise::kExitOk;
-    }
 #ifdef STEPWISE_HAVE_VIEWER
     return stepwise::viewer::runViewer(options);
 #else
@@ -87,11 +85,16 @@ namespace {
 int runCommandLine(const std::vector<std::string>& args) {
     using namespace stepwise::cli;
     if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
-        std::fputs(usageText(), stdout);
+        std::fputs(usageText().c_str(), stdout);
         return stepwise::kExitOk;
     }
     const std::string& command = args[0];
     const std::vector<std::string> rest(args.begin() + 1, args.end());
+    // `stepwise COMMAND --help`: that command's usage, whatever else the line holds.
+    if (const std::string usage = commandUsageText(command); !usage.empty() && asksForHelp(rest)) {
+        std::fputs(usage.c_str(), stdout);
+        return stepwise::kExitOk;
+    }
     try {
         if (command == "run") return runCommand(parseRunOptions(rest, defaultScenePath()));
         if (command == "check") {
@@ -101,16 +104,20 @@ int runCommandLine(const std::vector<std::string>& args) {
         }
         if (command == "view") return viewCommand(rest);
         if (command == "grade") return gradeCommand(parseGradeOptions(rest));
-        if (command == "raycast") return raycastCommand(rest);
-        if (command == "generate") return generateCommand(rest);
-        if (command == "bench") return benchCommand(rest);
-        if (command == "trace") return traceCommand(rest);
+        if (command == "raycast") return raycastCommand(parseRaycastOptions(rest));
+        if (command == "generate") return generateCommand(parseGenerateOptions(rest));
+        if (command == "bench") return benchCommand(parseBenchOptions(rest));
+        if (command == "trace") return traceCommand(parseTraceOptions(rest));
         if (command == "plot") return plotCommand(parsePlotOptions(rest, defaultScenePath()));
         throw UsageError("unknown command '" + command +
                          "' (commands: run, check, view, grade, raycast, generate, bench, trace, plot)");
     } catch (const UsageError& error) {
         std::fprintf(stderr, "stepwise: error: %s\nRun 'stepwise --help' for usage.\n", error.what());
         return stepwise::kExitUsageError;
+    } catch (const std::bad_alloc&) {
+        // The commands name what they were building when they can (World::step's stages); this is the rest.
+        std::fprintf(stderr, "stepwise: error: out of memory running '%s'\n", command.c_str());
+        return stepwise::kExitSimulationError;
     } catch (const std::exception& error) {
         // Whatever a command did not report itself (an unwritten student stage, memory that ran out):
         // one line naming it, never an abort. The commands report the simulation's own errors.

@@ -6,37 +6,40 @@
 #include <stdexcept>
 
 #include "app/cli.hpp"
+#include "app/interrupt.hpp"
 #include "core/errors.hpp"
 #include "io/trace_writer.hpp"
 
 namespace stepwise::cli {
 
-int traceCommand(const std::vector<std::string>& args) {
-    if (args.empty() || (!args[0].empty() && args[0][0] == '-')) {
-        throw UsageError("'trace' needs a scene file first: stepwise trace FILE [--steps N] [--from STEP] "
-                         "[--stage NAME] [--object NAME] [--substeps all] [--digits D]");
-    }
-    TraceOptions options;
-    try {
-        options = parseTraceOptions(std::vector<std::string>(args.begin() + 1, args.end()));
-    } catch (const std::invalid_argument& error) {
-        throw UsageError(error.what());
-    }
-    std::unique_ptr<Scene> scene = loadOrReport(args[0]);
+int traceCommand(const TraceCommandOptions& options) {
+    std::unique_ptr<Scene> scene = loadOrReport(options.scenePath);
     if (!scene) return kExitUsageError;
     try {
-        checkTraceObjects(options, *scene);
+        checkTraceObjects(options.trace, *scene);
     } catch (const std::invalid_argument& error) {
         throw UsageError(error.what());
     }
+    // Ctrl-C, kill or the time budget: stop between two steps, with every line whole.
+    const InterruptGuard interrupts;
+    const Deadline deadline(options.maxSeconds);
+    bool finished = true;
     try {
-        writeTrace(*scene, options, std::cout);
+        finished = writeTrace(*scene, options.trace, std::cout,
+                              [&] { return InterruptGuard::signalReceived() != 0 || deadline.passed(); });
     } catch (const SimulationError& error) {
         std::cout.flush();
         std::fprintf(stderr, "stepwise: simulation failed: %s\n", error.what());
         return kExitSimulationError;
     }
-    return kExitOk;
+    std::cout.flush();
+    if (finished) return kExitOk;
+    if (const int signal = InterruptGuard::signalReceived(); signal != 0) {
+        std::fprintf(stderr, "stepwise: trace stopped by signal %d\n", signal);
+        return exitCodeForSignal(signal);
+    }
+    std::fprintf(stderr, "stepwise: trace stopped: --max-seconds %g of wall-clock time ran out\n", deadline.seconds());
+    return kExitSimulationError;
 }
 
 }  // namespace stepwise::cli

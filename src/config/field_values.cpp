@@ -81,20 +81,6 @@ std::string hintFor(DecimalStatus status) {
     return "";
 }
 
-/// A limit as a person writes it: 1e-06 as "1e-6", 1000000 as "1e6".
-std::string formatLimit(Real value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", double(value));
-    std::string s = text;
-    if (const std::size_t e = s.find("e"); e != std::string::npos) {
-        std::size_t digits = e + 1;
-        if (s[digits] == '+') s.erase(digits, 1);
-        else if (s[digits] == '-') ++digits;
-        while (digits + 1 < s.size() && s[digits] == '0') s.erase(digits, 1);
-    }
-    return s;
-}
-
 bool inRange(Real value, Range range) {
     switch (range) {
         case Range::Any: return true;
@@ -126,6 +112,19 @@ std::string joinWords(const std::vector<std::string_view>& words) {
 }
 
 }  // namespace
+
+std::string formatLimit(Real value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", double(value));
+    std::string s = text;
+    if (const std::size_t e = s.find("e"); e != std::string::npos) {
+        std::size_t digits = e + 1;
+        if (s[digits] == '+') s.erase(digits, 1);
+        else if (s[digits] == '-') ++digits;
+        while (digits + 1 < s.size() && s[digits] == '0') s.erase(digits, 1);
+    }
+    return s;
+}
 
 std::string describe(Range range) {
     switch (range) {

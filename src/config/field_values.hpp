@@ -42,6 +42,9 @@ enum class Range : std::uint8_t {
     JointLength,   ///< At least kMinJointLength, m.
 };
 
+/// @brief A limit as a person writes it: 1e-06 as "1e-6", 1000000 as "1e6".
+std::string formatLimit(Real value);
+
 /// @brief Words for an expected value, e.g. "a number > 0", as used in diagnostics.
 std::string describe(Range range);
 

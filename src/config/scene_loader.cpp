@@ -32,6 +32,7 @@
 #include "config/scene_tokenizer.hpp"
 #include "config/spelling.hpp"
 #include "core/limits.hpp"
+#include "core/quoted_text.hpp"
 #include "objects/inertia.hpp"
 #include "forces/spring_stability.hpp"
 
@@ -1079,36 +1080,6 @@ private:
 
 namespace {
 
-/// The most characters of a bad value a message quotes: a whole megabyte on one line helps no one.
-constexpr std::size_t kMostQuoted = 60;
-
-/// @p text as a message quotes it: control bytes (a NUL, a tab, a vertical tab, an escape that
-/// would drive the terminal) written as \0, \t, \v, \x1b, and cut after kMostQuoted characters.
-std::string quotable(std::string_view text) {
-    std::string out;
-    std::size_t shown = 0;
-    for (; shown < text.size() && out.size() < kMostQuoted; ++shown) {
-        const unsigned char c = static_cast<unsigned char>(text[shown]);
-        if (c >= 0x20 && c != 0x7f) {
-            out += static_cast<char>(c);
-        } else if (c == 0) {
-            out += "\\0";
-        } else if (c == '\t') {
-            out += "\\t";
-        } else if (c == '\v') {
-            out += "\\v";
-        } else if (c == '\r') {
-            out += "\\r";
-        } else {
-            char escaped[8];
-            std::snprintf(escaped, sizeof escaped, "\\x%02x", c);
-            out += escaped;
-        }
-    }
-    if (shown < text.size()) out += "... (" + std::to_string(text.size() - shown) + " more bytes)";
-    return out;
-}
-
 }  // namespace
 
 std::string ConfigDiagnostic::message() const {
@@ -1140,7 +1111,18 @@ Scene loadSceneFile(const std::string& path) {
         return ConfigError({diagnostic});
     };
     std::error_code status;
-    if (std::filesystem::is_directory(path, status)) throw cannotOpen("it is a directory");
+    const std::filesystem::file_status type = std::filesystem::status(path, status);
+    if (std::filesystem::is_directory(type)) throw cannotOpen("it is a directory");
+    // A FIFO or a device would block the read forever (a FIFO no one writes) or never end
+    // (/dev/zero): a scene is a file on disk.
+    if (std::filesystem::exists(type) && !std::filesystem::is_regular_file(type)) {
+        const char* kind = std::filesystem::is_fifo(type)             ? "a FIFO"
+                           : std::filesystem::is_character_file(type) ? "a character device"
+                           : std::filesystem::is_block_file(type)     ? "a block device"
+                           : std::filesystem::is_socket(type)         ? "a socket"
+                                                                      : "not a regular file";
+        throw cannotOpen(std::string("it is ") + kind + ", not a regular file");
+    }
 
     errno = 0;
     std::ifstream in(path, std::ios::binary);

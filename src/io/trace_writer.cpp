@@ -3,9 +3,9 @@
 #include "io/trace_writer.hpp"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <stdexcept>
 
 #include "world/world.hpp"
@@ -17,16 +17,6 @@ namespace {
 
 /// Longest formatted number: sign, 15 integer digits, point, kMaxTraceDigits decimals.
 constexpr std::size_t kNumberBuffer = 48;
-
-std::uint64_t parseCount(const std::string& option, const std::string& text, std::uint64_t least) {
-    std::uint64_t value = 0;
-    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (text.empty() || error != std::errc() || end != text.data() + text.size() || value < least) {
-        throw std::invalid_argument(option + " expects a whole number >= " + std::to_string(least) + ", found '" +
-                                    text + "'");
-    }
-    return value;
-}
 
 std::string validStageNames() {
     std::string names;
@@ -80,51 +70,6 @@ Stage stageFromName(const std::string& name) {
         if (name == stageName(static_cast<Stage>(i))) return static_cast<Stage>(i);
     }
     throw std::invalid_argument("unknown stage '" + name + "' (stages: " + validStageNames() + ")");
-}
-
-TraceOptions parseTraceOptions(const std::vector<std::string>& args) {
-    TraceOptions options;
-    for (std::size_t i = 0; i < args.size(); ++i) {
-        const std::string& arg = args[i];
-        auto value = [&]() -> const std::string& {
-            if (i + 1 >= args.size()) throw std::invalid_argument(arg + " needs a value");
-            return args[++i];
-        };
-        if (arg == "--steps") {
-            options.steps = parseCount(arg, value(), 1);
-        } else if (arg == "--from") {
-            options.from = parseCount(arg, value(), 1);
-        } else if (arg == "--stage") {
-            const std::string& list = value();
-            std::size_t start = 0;
-            while (start <= list.size()) {
-                const std::size_t comma = std::min(list.find(',', start), list.size());
-                options.stages.push_back(stageFromName(list.substr(start, comma - start)));
-                start = comma + 1;
-            }
-        } else if (arg == "--object") {
-            options.objects.push_back(value());
-        } else if (arg == "--substeps") {
-            const std::string& which = value();
-            if (which != "all" && which != "first") {
-                throw std::invalid_argument("--substeps expects 'first' (the default) or 'all', found '" + which + "'");
-            }
-            options.allSubsteps = which == "all";
-        } else if (arg == "--digits") {
-            const std::string& text = value();
-            const std::uint64_t digits = parseCount(arg, text, 0);
-            if (digits > std::uint64_t(kMaxTraceDigits)) {
-                throw std::invalid_argument("--digits expects 0 to " + std::to_string(kMaxTraceDigits) + ", found '" +
-                                            text + "'");
-            }
-            options.digits = int(digits);
-        } else {
-            throw std::invalid_argument("unknown option '" + arg +
-                                        "' for 'trace' (options: --steps, --from, --stage, --object, --substeps, "
-                                        "--digits)");
-        }
-    }
-    return options;
 }
 
 void checkTraceObjects(const TraceOptions& options, const Scene& scene) {
@@ -482,14 +427,23 @@ void TraceObserver::writeSleep(const std::string& head, const World& world) {
     }
 }
 
-void writeTrace(const Scene& scene, const TraceOptions& options, std::ostream& out) {
+bool writeTrace(const Scene& scene, const TraceOptions& options, std::ostream& out,
+                const std::function<bool()>& stopNow) {
     checkTraceObjects(options, scene);
     World world(scene);
     TraceObserver observer(out, options);
     world.setObserver(&observer);
     const std::uint64_t last = options.from - 1 + options.steps;
-    while (world.stepCount() < last) world.step();
+    bool finished = true;
+    while (world.stepCount() < last) {
+        if (stopNow && stopNow()) {
+            finished = false;
+            break;
+        }
+        world.step();
+    }
     world.setObserver(nullptr);
+    return finished;
 }
 
 }  // namespace stepwise

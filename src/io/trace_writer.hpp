@@ -23,6 +23,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -48,14 +49,6 @@ struct TraceOptions {
     bool allSubsteps = false;          ///< --substeps all: every substep's lines, not only the first's.
     int digits = kDefaultTraceDigits;  ///< --digits D: decimals of every number (0 … kMaxTraceDigits).
 };
-
-/// @brief Parses the arguments of `stepwise trace` after the scene file.
-///
-/// Stage names are those of stageName(); an unknown one is an error that
-/// lists the valid names. Object names are checked later, against the scene
-/// (checkTraceObjects()).
-/// @throws std::invalid_argument with a message saying what is wrong and how to fix it.
-TraceOptions parseTraceOptions(const std::vector<std::string>& args);
 
 /// @brief Throws std::invalid_argument naming the first object of @p options that @p scene does not have.
 void checkTraceObjects(const TraceOptions& options, const Scene& scene);
@@ -113,7 +106,10 @@ private:
 };
 
 /// @brief Simulates a copy of @p scene up to the last selected step, writing the trace to @p out.
+/// @param stopNow asked before every step; when it answers true the trace ends there (a time
+///        budget, Ctrl-C). @return false when it stopped early.
 /// @throws std::invalid_argument for an object name the scene lacks; SimulationError when a step fails.
-void writeTrace(const Scene& scene, const TraceOptions& options, std::ostream& out);
+bool writeTrace(const Scene& scene, const TraceOptions& options, std::ostream& out,
+                const std::function<bool()>& stopNow = {});
 
 }  // namespace stepwise
