@@ -70,7 +70,15 @@ TEST_CASE("README.md's tag paragraph names every test tag, and only those", "[do
         INFO("the tag [" << tag << "] is on a test case, and the paragraph does not name it");
         CHECK(named.count(tag) == 1);
     }
+    // Tests a build leaves out: the sanitizer build has no [allocations] tests (they count
+    // operator new, which AddressSanitizer replaces: tests/test_step_allocations.cpp).
+#if defined(__SANITIZE_ADDRESS__)
+    const std::set<std::string> notInThisBuild = {"allocations"};
+#else
+    const std::set<std::string> notInThisBuild;
+#endif
     for (const std::string& tag : named) {
+        if (notInThisBuild.count(tag) == 1) continue;
         INFO("the paragraph names the tag [" << tag << "], which no test case has");
         CHECK(tagged.count(tag) == 1);
     }
