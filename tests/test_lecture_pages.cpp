@@ -507,6 +507,34 @@ TEST_CASE("Lectures point at code by function and quoted text, not by line numbe
     CHECK(transcripts >= 1000);
 }
 
+TEST_CASE("Lectures quote no count of tests or assertions, and name only test cases that exist", "[lectures]") {
+    // A count grows as tests are added, so what a test run prints is quoted with "…" for its
+    // numbers (`--list-tests "[tag]"` lists a tag's test cases). The names a CTest summary lists
+    // as failed are test cases of the program.
+    const std::regex count(
+        R"((\d+ (matching )?test cases?)|(\d+ assertions?)|(tests? failed out of \d+)|(test cases?: +\d)|(assertions?: +\d))");
+    const std::regex failed(R"(^\s*\S+ - (.+) \(Failed\)$)");
+    std::set<std::string> names;
+    for (const Catch::TestCase& test : Catch::getRegistryHub().getTestCaseRegistry().getAllTests()) names.insert(test.name);
+    int runs = 0;
+    int named = 0;
+    for (const fs::path& page : lectureMarkdown()) {
+        const std::vector<std::string> lines = readLines(page);
+        for (std::size_t i = 0; i < lines.size(); ++i) {
+            const std::string where = shown(page) + ":" + std::to_string(i + 1);
+            if (lines[i].find("tests passed") != std::string::npos) ++runs;
+            if (std::regex_search(lines[i], count)) FAIL_CHECK(where << " quotes a count of tests: " << lines[i]);
+            std::smatch match;
+            if (!std::regex_search(lines[i], match, failed)) continue;
+            ++named;
+            INFO(where << ": no test case is named \"" << match[1] << "\"");
+            CHECK(names.count(match[1]) == 1);
+        }
+    }
+    CHECK(runs >= 5);
+    CHECK(named >= 3);
+}
+
 TEST_CASE("Every lecture shows a figure scripts/figures.sh draws, with a caption, and the script draws every image", "[lectures]") {
     // What the script makes, by its own list: a figure not on it would be drawn by hand.
     const stepwise::test::CommandResult listed = stepwise::test::shell("bash '" + (kRoot / "scripts/figures.sh").string() + "' --list");
