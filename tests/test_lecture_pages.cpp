@@ -65,6 +65,26 @@ std::vector<fs::path> lecturePages() {
     return pages;
 }
 
+/// Every markdown file under lectures/, at any depth: the pages, the READMEs of assignments/,
+/// student-template/, instructors/ and the rest.
+std::vector<fs::path> lectureMarkdown() {
+    std::vector<fs::path> files;
+    for (const fs::directory_entry& entry : fs::recursive_directory_iterator(kLectures)) {
+        if (entry.is_regular_file() && entry.path().extension() == ".md") files.push_back(entry.path());
+    }
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+/// A page's path as the failure messages name it, from the repository root.
+std::string shown(const fs::path& page) { return page.lexically_relative(kRoot).generic_string(); }
+
+/// The language word of a fence line ("cpp" of ```cpp), "" for a plain fence.
+std::string fenceLanguage(const std::string& line) { return trim(trim(line).substr(3)); }
+
+/// A line of a quoted listing that stands for lines left out: `...` or `…`.
+bool isElision(const std::string& line) { return trim(line) == "..." || trim(line) == "…"; }
+
 /// An appendix's file name has a letter after the lecture's number: 03a-appendix-….md.
 bool isAppendix(const fs::path& page) {
     const std::string name = page.filename().string();
@@ -356,15 +376,16 @@ TEST_CASE("Links in the lectures lead to files and headings that exist", "[lectu
 TEST_CASE("Code a lecture quotes is in the file it names, on exactly one line", "[lectures]") {
     // <!-- code-quotes: FILE --> before a table: each `span` of its "code" column is on exactly
     // one line of FILE (as break-at needs). Without ": FILE", each row names its file in a
-    // "file" column. Before a ```cpp block: each of the block's lines is a line of FILE, in order.
+    // "file" column. Before a ```cpp block: each of the block's lines is a line of FILE, in order;
+    // a line `...` stands for lines left out.
     int blocks = 0;
     int quotes = 0;
-    for (const fs::path& page : lecturePages()) {
+    for (const fs::path& page : lectureMarkdown()) {
         const std::vector<std::string> lines = readLines(page);
         for (std::size_t i = 0; i < lines.size(); ++i) {
             const std::string marker = trim(lines[i]);
             if (!startsWith(marker, "<!-- code-quotes")) continue;
-            const std::string where = "lectures/" + page.filename().string() + ":" + std::to_string(i + 1);
+            const std::string where = shown(page) + ":" + std::to_string(i + 1);
             INFO(where);
             std::string named;
             const std::size_t colon = marker.find(':');
@@ -381,7 +402,7 @@ TEST_CASE("Code a lecture quotes is in the file it names, on exactly one line", 
                 std::size_t from = 0;
                 for (std::size_t k = next + 1; k < lines.size() && !isFence(lines[k]); ++k) {
                     const std::string quoted = trim(lines[k]);
-                    if (quoted.empty()) continue;
+                    if (quoted.empty() || isElision(quoted)) continue;
                     INFO(where << ": line " << k + 1 << " quotes `" << quoted << "`, not the next line of " << named << " that holds it");
                     const auto found = std::find_if(source.begin() + static_cast<std::ptrdiff_t>(from), source.end(),
                                                     [&](const std::string& line) { return trim(line) == quoted; });
@@ -420,40 +441,98 @@ TEST_CASE("Code a lecture quotes is in the file it names, on exactly one line", 
     CHECK(quotes >= 40);
 }
 
-TEST_CASE("Lectures point at code by function and quoted text, not by line number", "[lectures]") {
-    // What a program prints (a gdb transcript, a test's failure) is quoted in code blocks and
-    // keeps its line numbers; the prose around it names a line by its code (break-at FILE "TEXT").
-    const std::regex lineNumber(R"((\b[Ll]ines? \d+)|(\.(cpp|hpp|py|gdb):\d+))");
-    // Lectures whose prose still names lines by number. A page leaves the list once it names
-    // them by their code, and the check then says to take it off.
-    const std::set<std::string> notYet = {"01-explicit-euler.md", "02-verlet-and-symplectic-euler.md",
-                                          "04-inertia-and-rotation.md", "05-separating-axis-theorem.md",
-                                          "06-contact-points-and-manifolds.md"};
-    std::vector<fs::path> pages = lecturePages();
-    pages.push_back(kLectures / "README.md");
-    int scanned = 0;
-    for (const fs::path& page : pages) {
-        const std::string name = page.filename().string();
+TEST_CASE("Every C++ block of the lectures quotes the source, or is code the reader writes", "[lectures]") {
+    // A ```cpp block that shows the engine's code goes under <!-- code-quotes: FILE -->, so the
+    // test above holds it to the file; one that shows code the reader writes (a test, an
+    // exercise's change, a template's answer) says so with <!-- new code -->.
+    int quoted = 0;
+    int written = 0;
+    for (const fs::path& page : lectureMarkdown()) {
         const std::vector<std::string> lines = readLines(page);
         bool code = false;
-        int found = 0;
+        for (std::size_t i = 0; i < lines.size(); ++i) {
+            if (!isFence(lines[i])) continue;
+            code = !code;
+            if (!code || fenceLanguage(lines[i]) != "cpp") continue;
+            std::size_t above = i;
+            while (above > 0 && trim(lines[above - 1]).empty()) --above;
+            const std::string marker = above > 0 ? trim(lines[above - 1]) : "";
+            if (startsWith(marker, "<!-- code-quotes:")) {
+                ++quoted;
+            } else if (marker == "<!-- new code -->") {
+                ++written;
+            } else {
+                FAIL_CHECK(shown(page) << ":" << i + 1
+                                       << ": a ```cpp block needs <!-- code-quotes: FILE --> (it quotes the source) "
+                                          "or <!-- new code --> (the reader writes it) on the line above");
+            }
+        }
+    }
+    CHECK(quoted >= 10);
+    CHECK(written >= 3);
+}
+
+TEST_CASE("Lectures point at code by function and quoted text, not by line number", "[lectures]") {
+    // What a program prints (a gdb transcript, a test's failure) is quoted in plain ``` blocks and
+    // keeps its line numbers. Everything the page says itself names a line by its code
+    // (break-at FILE "TEXT"): the prose, the code it writes (```cpp, ```sh, ```scene), and the
+    // gdb commands a transcript has the reader type.
+    const std::regex lineNumber(R"((\b[Ll]ines? \d+)|(\.(cpp|hpp|py|gdb):\d+))");
+    const std::regex typedAtLine(R"(^\(gdb\) (break|b|tbreak|until|u|advance|dprintf|list|l|jump|clear) \S+:\d+)");
+    int scanned = 0;
+    int transcripts = 0;
+    for (const fs::path& page : lectureMarkdown()) {
+        const std::vector<std::string> lines = readLines(page);
+        bool code = false;
+        bool output = false;  // a plain ``` or ```text block: what a program printed
         for (std::size_t i = 0; i < lines.size(); ++i) {
             if (isFence(lines[i])) {
                 code = !code;
+                const std::string language = fenceLanguage(lines[i]);
+                output = code && (language.empty() || language == "text");
                 continue;
             }
-            if (code) continue;
             ++scanned;
-            if (!std::regex_search(lines[i], lineNumber)) continue;
-            ++found;
-            if (notYet.count(name) == 0) FAIL_CHECK("lectures/" << name << ":" << i + 1 << " names a line by its number: " << lines[i]);
-        }
-        if (notYet.count(name) == 1) {
-            INFO("lectures/" << name << " names no line by number any more: take it off the list");
-            CHECK(found > 0);
+            const std::string where = shown(page) + ":" + std::to_string(i + 1);
+            if (code && output) {
+                ++transcripts;
+                if (std::regex_search(trim(lines[i]), typedAtLine))
+                    FAIL_CHECK(where << " has the reader type a line number into gdb (use break-at FILE \"TEXT\"): " << lines[i]);
+                continue;
+            }
+            if (std::regex_search(lines[i], lineNumber)) FAIL_CHECK(where << " names a line by its number: " << lines[i]);
         }
     }
-    CHECK(scanned >= 2000);
+    CHECK(scanned >= 8000);
+    CHECK(transcripts >= 1000);
+}
+
+TEST_CASE("Lectures quote no count of tests or assertions, and name only test cases that exist", "[lectures]") {
+    // A count grows as tests are added, so what a test run prints is quoted with "…" for its
+    // numbers (`--list-tests "[tag]"` lists a tag's test cases). The names a CTest summary lists
+    // as failed are test cases of the program.
+    const std::regex count(
+        R"((\d+ (matching )?test cases?)|(\d+ assertions?)|(tests? failed out of \d+)|(test cases?: +\d)|(assertions?: +\d))");
+    const std::regex failed(R"(^\s*\S+ - (.+) \(Failed\)$)");
+    std::set<std::string> names;
+    for (const Catch::TestCase& test : Catch::getRegistryHub().getTestCaseRegistry().getAllTests()) names.insert(test.name);
+    int runs = 0;
+    int named = 0;
+    for (const fs::path& page : lectureMarkdown()) {
+        const std::vector<std::string> lines = readLines(page);
+        for (std::size_t i = 0; i < lines.size(); ++i) {
+            const std::string where = shown(page) + ":" + std::to_string(i + 1);
+            if (lines[i].find("tests passed") != std::string::npos) ++runs;
+            if (std::regex_search(lines[i], count)) FAIL_CHECK(where << " quotes a count of tests: " << lines[i]);
+            std::smatch match;
+            if (!std::regex_search(lines[i], match, failed)) continue;
+            ++named;
+            INFO(where << ": no test case is named \"" << match[1] << "\"");
+            CHECK(names.count(match[1]) == 1);
+        }
+    }
+    CHECK(runs >= 5);
+    CHECK(named >= 3);
 }
 
 TEST_CASE("Every lecture shows a figure scripts/figures.sh draws, with a caption, and the script draws every image", "[lectures]") {
