@@ -2,6 +2,7 @@
 /// @brief The sequential-impulse solver's contacts (the math is in contact_solver.hpp).
 #include "dynamics/contact_solver.hpp"
 
+
 #include <algorithm>
 #include <cmath>
 
@@ -199,7 +200,16 @@ SolverContact prepareOne(const BodySet& bodies, const Contact& contact, Real h, 
     const Real stepAcceleration = std::max({std::abs(approachAcceleration), std::abs(glm::dot(a.acceleration, c.normal)),
                                             std::abs(glm::dot(other.acceleration, c.normal))});
     const bool resting = start.approachAtTouch <= kRestingContactSteps * stepAcceleration * h;
-    start.restitution = resting ? Real(0) : combineElasticity(a.elasticity, other.elasticity);
+    start.elasticity = combineElasticity(a.elasticity, other.elasticity);
+    start.restitution = resting ? Real(0) : start.elasticity;
+    // Where the compression starts (applyRestitution()): the approach at touch for an impact, the
+    // separation speed for bodies already parting, nothing for two that merely touch. A contact
+    // an acceleration presses shut (a box's weight on the floor) carries a load, not an impact:
+    // it is left out of the compression.
+    start.carriesLoad = resting && stepAcceleration > Real(0);
+    start.touchVelocity = vn >= 0 ? vn : resting ? Real(0) : -start.approachAtTouch;
+    start.compression = 0;
+    start.bounceImpulse = 0;
     return c;
 }
 
@@ -272,7 +282,7 @@ void prepareContacts(const BodySet& bodies, std::span<const Contact> contacts, s
         SolverContact& c = workspace.contacts[i];
         c = prepareOne(bodies, contacts[i], h, workspace, workspace.starts[i]);
         (c.rows == kRoundContact ? workspace.roundContacts : workspace.otherContacts).push_back(i);
-        if (workspace.starts[i].restitution != Real(0)) workspace.bouncing.push_back(i);
+        if (workspace.starts[i].touchVelocity < Real(0)) workspace.bouncing.push_back(i);
         if (!warmStart) continue;
         if (const CachedImpulse* cached = findCachedImpulse(workspace.previousImpulses, keyOf(contacts[i]), nextCached)) {
             c.normalImpulse = cached->normalImpulse;
@@ -411,21 +421,81 @@ void solveContact(SolverWorkspace& workspace, std::uint32_t index, const Contact
 }
 
 bool applyRestitution(SolverWorkspace& workspace) {
-    bool bounced = false;
-    for (const std::uint32_t i : workspace.bouncing) {  // the contacts with e ≠ 0, in order
-        SolverContact& c = workspace.contacts[i];
-        const ContactStart& start = workspace.starts[i];
-        if (c.maxNormalImpulse == Real(0)) continue;
-        bounced = true;
-        // Drive v_n to e·v_c (separating), never pulling: the accumulated λ stays ≥ 0.
-        SolverBody& a = workspace.bodies[c.bodyA];
-        SolverBody& b = workspace.bodies[c.bodyB];
-        withRows(c, workspace, [&](const auto& rows) {
-            const Real impulse = c.normalMass * (start.restitution * start.approachAtTouch - rows.normalVelocity(a, b));
-            const Real total = std::max(c.normalImpulse + impulse, Real(0));
-            rows.applyNormal(a, b, total - c.normalImpulse);
-            c.normalImpulse = total;
+    // 1. The impacts: contacts that approached faster than resting and pushed. None: no bounce.
+    Real fastest = 0;
+    for (const std::uint32_t i : workspace.bouncing) {
+        if (workspace.contacts[i].maxNormalImpulse > Real(0)) fastest = std::max(fastest, -workspace.starts[i].touchVelocity);
+    }
+    if (fastest == Real(0)) return false;
+
+    // 2. The compression: every contact that pushed this step takes part, for an impact's impulse
+    //    passes on through bodies in touch (a ball into a row of balls); those that carry a load
+    //    (a stack's weight) do not, as they never bounce: a pile hit by a ball is not a gas. The passes work on each
+    //    record's velocity change, from zero; a static record keeps its zero inverse mass.
+    std::vector<std::uint32_t>& pressed = workspace.pressed;
+    pressed.clear();
+    for (std::uint32_t i = 0; i < workspace.contacts.size(); ++i) {
+        if (workspace.contacts[i].maxNormalImpulse > Real(0) && !workspace.starts[i].carriesLoad) pressed.push_back(i);
+    }
+    std::vector<SolverBody>& change = workspace.impactBodies;
+    change = workspace.bodies;
+    for (SolverBody& record : change) record.velocity = record.angularVelocity = Vec3(0);
+    const Real tolerance = kCompressionTolerance * fastest;
+    for (int pass = 0; pass < kMaxCompressionPasses; ++pass) {
+        Real largest = 0;  // the largest change of a normal velocity in this pass, m/s
+        for (const std::uint32_t i : pressed) {
+            const SolverContact& c = workspace.contacts[i];
+            ContactStart& start = workspace.starts[i];
+            withRows(c, workspace, [&](const auto& rows) {
+                SolverBody& a = change[c.bodyA];
+                SolverBody& b = change[c.bodyB];
+                // w + J·Δu; a kinematic surface's speed is in w already, so it comes out of J·Δu.
+                const Real vn = start.touchVelocity + rows.normalVelocity(a, b) - rows.normalVelocity(change[0], change[0]);
+                const Real total = std::max(start.compression - c.normalMass * vn, Real(0));
+                const Real impulse = total - start.compression;
+                rows.applyNormal(a, b, impulse);
+                start.compression = total;
+                largest = std::max(largest, std::abs(impulse) / c.normalMass);
+            });
+        }
+        if (largest <= tolerance) break;
+    }
+
+    // 3. The restitution. Poisson's law says where the impact ends: every contact that pushed in
+    //    the compression parts at v_n = e·(J·Δu) (for one contact, e·v_c). The substeps have done
+    //    the compression on the real velocities, softly: a soft contact springs back a little of
+    //    its overlap, gravity and joints act too. So the bounce is not e·P added blindly, but the
+    //    impulse that brings each such contact to its Poisson velocity, by the same passes.
+    for (const std::uint32_t i : pressed) {
+        const SolverContact& c = workspace.contacts[i];
+        ContactStart& start = workspace.starts[i];
+        start.bounceVelocity = withRows(c, workspace, [&](const auto& rows) {
+            return start.elasticity * (rows.normalVelocity(change[c.bodyA], change[c.bodyB]) -
+                                       rows.normalVelocity(change[0], change[0]));
         });
+    }
+    bool bounced = false;
+    for (int pass = 0; pass < kMaxCompressionPasses; ++pass) {
+        Real largest = 0;
+        for (const std::uint32_t i : pressed) {
+            SolverContact& c = workspace.contacts[i];
+            ContactStart& start = workspace.starts[i];
+            if (start.compression == Real(0) || start.elasticity == Real(0)) continue;
+            withRows(c, workspace, [&](const auto& rows) {
+                SolverBody& a = workspace.bodies[c.bodyA];
+                SolverBody& b = workspace.bodies[c.bodyB];
+                const Real impulse = c.normalMass * (start.bounceVelocity - rows.normalVelocity(a, b));
+                // It may take back what the soft solve sprang back beyond the compression, never
+                // more than the step pushed: the impact's impulses together never pull.
+                const Real total = std::max(start.bounceImpulse + impulse, -(start.compression + c.maxNormalImpulse));
+                rows.applyNormal(a, b, total - start.bounceImpulse);
+                largest = std::max(largest, std::abs(total - start.bounceImpulse) / c.normalMass);
+                c.normalImpulse += total - start.bounceImpulse;
+                start.bounceImpulse = total;
+            });
+            bounced = true;
+        }
+        if (largest <= tolerance) break;
     }
     return bounced;
 }

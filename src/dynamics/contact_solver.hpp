@@ -54,10 +54,8 @@
 /// biased (position) iterations (`PxSceneFlag::eENABLE_FRICTION_EVERY_ITERATION`
 /// turns it on in all).
 ///
-/// **Restitution** is applied once, after all substeps, from the approach
-/// speed at the moment of touching v_c (reconstructed from the pre-solve
-/// velocity and the gap, see prepareContacts()). A contact that never
-/// pushed during the step (its largest normal impulse was zero) does not bounce.
+/// **Restitution** is applied once, after all substeps, by Poisson's law:
+/// each contact gets e times its compression impulse again (applyRestitution()).
 ///
 /// **Warm starting.** Each point found again (same ContactKey) starts from
 /// last step's impulses; they are applied at the start of every substep.
@@ -180,8 +178,18 @@ struct ContactStart {
     Vec3 rB{0, 0, 0};                ///< The same from B's centre (zero for a plane), m.
     Vec3 startPoint{0, 0, 0};        ///< The contact point at the start of the step, where both anchors were, m.
     Real startSeparation = 0;        ///< C₀, the gap at the start of the step: −Contact::depth, m (> 0: a gap).
-    Real restitution = 0;            ///< e of the pair (0 when the contact is resting).
+    Real restitution = 0;            ///< e of the pair (0 when the contact is resting): an impact's, for reports.
+    Real elasticity = 0;             ///< e of the pair, resting or not: what the compression impulse is multiplied by.
     Real approachAtTouch = 0;        ///< v_c: approach speed when the surfaces meet, m/s (≥ 0).
+    /// The normal velocity the compression starts from, m/s: −v_c for an impact, 0 for a resting
+    /// contact (its approach is gravity's, not an impact's), v_n for a separating one.
+    Real touchVelocity = 0;
+    /// Pressed shut by an acceleration (gravity along n) and approaching no faster than it makes
+    /// them: a load, not an impact. Left out of the compression, so it never bounces.
+    bool carriesLoad = false;
+    Real compression = 0;            ///< P: the compression impulse applyRestitution() found, N·s (0 until then).
+    Real bounceVelocity = 0;         ///< e·(J·Δu): the normal velocity Poisson's law parts the contact at, m/s.
+    Real bounceImpulse = 0;          ///< What applyRestitution() applied to bring the contact there, N·s.
     Vec3 staticVelocity{0, 0, 0};    ///< Velocity of a kinematic B's surface at the point, m/s (zero for a plane or a dynamic B).
 };
 
@@ -232,9 +240,11 @@ struct SolverWorkspace {
     std::vector<TurningAnchors> turningAnchors;  ///< Anchors of the contacts with a turning anchor (boxes).
     std::vector<std::uint32_t> roundContacts;    ///< The round contacts, in order: a pass solves these first.
     std::vector<std::uint32_t> otherContacts;    ///< The contacts with stored rows, in order: a pass solves these next.
-    /// The contacts that may bounce (ContactStart::restitution ≠ 0), in order: all that
-    /// applyRestitution() visits (in a pile at rest they are few).
+    /// The impacts of the step (ContactStart::touchVelocity < 0), in order: without one that
+    /// pushed, applyRestitution() has nothing to do (in a pile at rest there is none).
     std::vector<std::uint32_t> bouncing;
+    std::vector<std::uint32_t> pressed;          ///< applyRestitution(): the contacts that pushed this step.
+    std::vector<SolverBody> impactBodies;        ///< applyRestitution(): each record's velocity change in the compression.
     std::vector<SolverBody> bodies;              ///< Record 0 static, then one per dynamic body in a contact or a joint (solver_body.hpp).
     std::vector<SolverBodyInertia> inertias;     ///< The same records' inertia (read by prepare and a box's write-back).
     std::vector<std::uint32_t> recordBody;       ///< Per record: its body's index in the World's dynamic array (the copies in and out).
@@ -387,7 +397,36 @@ void solveContacts(SolverWorkspace& workspace, const ContactSolverSettings& sett
 /// @brief Contact @p index solved once: its normal row, then its friction rows if this pass solves them.
 void solveContact(SolverWorkspace& workspace, std::uint32_t index, const ContactSolverSettings& settings, bool useBias);
 
-/// @brief After the substeps: the bounce, e·v_c along n, for contacts that pushed and are not resting.
+/// @brief Most passes of the compression's projected Gauss–Seidel (applyRestitution()). A row of
+/// touching balls passes the impulse on one ball per pass, so it is as long a row as converges
+/// exactly; a pile hit by a ball is left where the passes got to.
+inline constexpr int kMaxCompressionPasses = 32;
+
+/// @brief The compression has converged when no pass changes a contact's normal velocity by
+/// more than this fraction of the fastest impact's approach speed.
+inline constexpr Real kCompressionTolerance = Real(1e-6);
+
+/// @brief After the substeps: the bounce, by Poisson's law of restitution.
+///
+/// An impact has two phases. In the *compression* the bodies stop approaching: the normal
+/// impulses P_i ≥ 0 are those of a perfectly inelastic impact, the complementarity problem
+/// \f[ w_i + (J M^{-1} J^T P)_i \ge 0, \quad P_i \ge 0, \quad P_i \,(w_i + (J M^{-1} J^T P)_i) = 0, \f]
+/// over every contact that pushed during the step and does not carry a load (ContactStart::carriesLoad:
+/// a stack's weight), where w_i is ContactStart::touchVelocity (−v_c for an impact, 0 for bodies
+/// that merely touch). It is solved here by projected Gauss–Seidel
+/// passes on the velocity *changes* Δu = M⁻¹JᵀP, from zero, until they stop changing
+/// (kMaxCompressionPasses, kCompressionTolerance). In the *restitution* each contact pushes back
+/// e_i·P_i, all at once, so the contacts that pushed part at v_n = e_i·(J Δu)_i
+/// (ContactStart::bounceVelocity); the stage drives them there with the same kind of passes.
+///
+/// For one contact this is Newton's law: the bounce leaves at v_n = e·v_c. For several at once,
+/// a ball into a row of touching balls, a crowded gas, Poisson's impulses keep the energy when
+/// e = 1: the energy before the impact is ½(u_c − Δu)ᵀM(u_c − Δu) and after it
+/// ½(u_c + Δu)ᵀM(u_c + Δu), where u_c is the velocity at the end of the compression; they differ
+/// by 2·(J u_c)ᵀP = 0, since every contact that pushes ends the compression at (J u_c)_i = 0
+/// (Stronge, "Impact Mechanics", 2000, ch. 4; Mirtich, PhD thesis, 1996, ch. 3). Driving each
+/// contact to v_n = e·v_c one after the other does not: the last one driven undoes the others,
+/// and a gas of 1000 balls loses most of its energy in seconds.
 /// @return true if any contact bounced (only then did a solver body's velocity change).
 bool applyRestitution(SolverWorkspace& workspace);
 

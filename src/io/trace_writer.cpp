@@ -382,12 +382,14 @@ void TraceObserver::writeRestitution(const std::string& head, const World& world
         const std::string& a = bodies[start.indexA].name;
         const std::string& b = objectName(world, start.refB);
         if (!objectSelected(a) && !objectSelected(b)) continue;
-        const char* decision = c.maxNormalImpulse <= 0  ? "no (never pushed)"
-                               : start.restitution <= 0 ? "no (resting, or e = 0)"
-                                                        : "yes";
+        const char* decision = c.maxNormalImpulse <= 0                     ? "no (never pushed)"
+                               : start.compression <= 0                     ? "no (no compression)"
+                               : start.elasticity <= 0                      ? "no (e = 0)"
+                                                                            : "yes";
         line(head, a + "|" + b,
-             contactFields(world, i) + "v_c " + num(start.approachAtTouch) + " m/s  e " + num(start.restitution) +
-                 "  bounce " + decision + "  j " +
+             contactFields(world, i) + "v_c " + num(start.approachAtTouch) + " m/s  e " + num(start.elasticity) +
+                 "  compression P " + num(start.compression) + " N*s  bounce " + decision + "  e*P " +
+                 num(start.elasticity * start.compression) + " N*s  j " +
                  num(c.normalImpulse) + " N*s  j_max " + num(c.maxNormalImpulse) + " N*s  v_n " + num(normalVelocityNow(world, c, start)) + " m/s");
     }
     for (std::size_t i = 0; i < world.joints().size(); ++i) {
