@@ -43,7 +43,9 @@
 /// contact solver, which already holds it. Planes are not swept against: a
 /// plane bounds a solid half-space, so a body carried however deep behind it
 /// is pushed back out along its normal (lecture 3's bounce at h = 1/15 s
-/// relies on it).
+/// relies on it); with the sequential-impulse solver a body's contacts with
+/// a plane are found as far ahead as it can move (below), so it stops at the
+/// plane instead.
 ///
 /// **With the sequential-impulse solver.** Its narrowphase finds a sphere's
 /// contacts as far ahead as the sphere can move (GameObject::sweep:
@@ -53,7 +55,9 @@
 /// collision*, Catto, GDC 2013). With this stage on, a sphere's reach towards
 /// another body is capped at kFastMotionFraction × its radius
 /// (findContacts(), narrowphase.cpp) and this stage follows the rest of the
-/// path with the exact shapes; towards a plane the full sweep is kept.
+/// path with the exact shapes; towards a plane the full sweep is kept, for a
+/// sphere and a box alike (a box's corners are tested against the plane
+/// moved towards it by the sweep).
 ///
 /// **Cost.** One pass over the bodies comparing |Δ| with their size. In a
 /// step with a fast body, the bodies' boxes are sorted along one axis

@@ -140,12 +140,20 @@ void collidePair(const BodySet& bodies, const CandidatePair& pair, bool continuo
 
     // Sweep: a sphere's test reaches as far as the two bodies can close
     // this step, found by testing a sphere grown by that much; depths and
-    // points are then given back for the real one.
+    // points are then given back for the real one. A box falling onto a
+    // plane reaches as far too: the plane is moved towards it by the reach
+    // (box_plane.cpp's corners within kSpeculativeDistance of the moved plane
+    // are within reach of the real one). Without it a box faster than
+    // kSpeculativeDistance per step sinks into a floor before its contact is
+    // found, its centre behind the plane at 10 m/s.
     Geometry& grown = a.type == GeometryType::Sphere ? a : b;
-    const Real reach = reachOf(bodies, pair, grown.radius, b.type == GeometryType::Plane, continuousCollision,
-                               speculativeDistance);
+    const bool boxOnPlane = a.type == GeometryType::Box && b.type == GeometryType::Plane;
+    const Real reach = reachOf(bodies, pair, boxOnPlane ? Real(0) : grown.radius, b.type == GeometryType::Plane,
+                               continuousCollision, speculativeDistance);
     const bool grows = reach > 0 && grown.type == GeometryType::Sphere;
     if (grows) grown.radius += reach;
+    const Real planeShift = boxOnPlane && reach > speculativeDistance ? reach - speculativeDistance : Real(0);
+    if (planeShift > 0) b.centre += planeShift * b.normal;
 
     ContactManifold found;
     if (!test(a, b, found)) return;
@@ -155,6 +163,11 @@ void collidePair(const BodySet& bodies, const CandidatePair& pair, bool continuo
             p.depth -= reach;
             // The point sat on the grown surface: move it back onto the real one.
             p.position += (&grown == &a ? -reach : reach) * found.normal;
+        }
+        if (planeShift > 0) {
+            // The point sat midway between the corner and the moved plane: midway to the real one.
+            p.depth -= planeShift;
+            p.position += (Real(0.5) * planeShift) * found.normal;
         }
         contacts.push_back({pair.a, pair.b, found.normal, p.position, p.depth, p.featureId});
     }
