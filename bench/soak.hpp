@@ -27,6 +27,6 @@ int soakCommand(const std::vector<std::string>& args);
 /// @brief The text of soak scene @p seed: a closed box of planes holding spheres and boxes,
 /// kinematic bodies, springs, attractors and joints of every kind, with a random solver.
 /// @param elastic an isolated elastic gas instead: no gravity, e = 1, μ = 0, spheres only.
-std::string soakSceneText(std::uint64_t seed, bool elastic);
+std::string soakSceneText(std::uint64_t seed, bool elastic, std::uint64_t steps);
 
 }  // namespace stepwise::bench
