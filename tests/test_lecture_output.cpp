@@ -44,6 +44,7 @@
 #include <vector>
 
 #include "command_runner.hpp"
+#include "markdown_lines.hpp"
 
 namespace fs = std::filesystem;
 namespace test = stepwise::test;
@@ -54,22 +55,10 @@ const fs::path kRoot = STEPWISE_SOURCE_DIR;
 constexpr const char* kMarker = "<!-- output-check";
 constexpr const char* kUnchecked = "<!-- output-unchecked:";
 
-std::vector<std::string> readLines(const fs::path& path) {
-    std::ifstream in(path);
-    std::vector<std::string> lines;
-    for (std::string line; std::getline(in, line);) lines.push_back(line);
-    return lines;
-}
-
-std::string trim(const std::string& text) {
-    const std::size_t first = text.find_first_not_of(" \t");
-    if (first == std::string::npos) return "";
-    return text.substr(first, text.find_last_not_of(" \t") - first + 1);
-}
-
-bool startsWith(const std::string& text, const std::string& prefix) { return text.rfind(prefix, 0) == 0; }
-
-bool isFence(const std::string& line) { return startsWith(trim(line), "```"); }
+using test::isFence;
+using test::readLines;
+using test::startsWith;
+using test::trim;
 
 std::string fenceLanguage(const std::string& line) { return trim(trim(line).substr(3)); }
 

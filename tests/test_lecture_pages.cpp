@@ -20,6 +20,8 @@
 #include "core/stages.hpp"
 #include "world/step_plan.hpp"
 
+#include "markdown_lines.hpp"
+
 namespace fs = std::filesystem;
 using namespace stepwise;
 
@@ -35,23 +37,10 @@ std::string readText(const fs::path& path) {
     return text.str();
 }
 
-std::vector<std::string> readLines(const fs::path& path) {
-    std::ifstream in(path);
-    std::vector<std::string> lines;
-    for (std::string line; std::getline(in, line);) lines.push_back(line);
-    return lines;
-}
-
-std::string trim(const std::string& text) {
-    const std::size_t first = text.find_first_not_of(" \t");
-    if (first == std::string::npos) return "";
-    return text.substr(first, text.find_last_not_of(" \t") - first + 1);
-}
-
-bool startsWith(const std::string& text, const std::string& prefix) { return text.rfind(prefix, 0) == 0; }
-
-/// A fence line (```, possibly indented inside a list item) opens or closes a code block.
-bool isFence(const std::string& line) { return startsWith(trim(line), "```"); }
+using test::isFence;
+using test::readLines;
+using test::startsWith;
+using test::trim;
 
 /// The lecture pages: lectures/NN*.md, the core lectures and their appendices (03a, 07a, …).
 std::vector<fs::path> lecturePages() {

@@ -1,0 +1,32 @@
+// Reading the project's Markdown pages line by line: what the lecture checks share
+// (tests/test_lecture_pages.cpp, tests/test_lecture_output.cpp).
+#pragma once
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace stepwise::test {
+
+/// The lines of @p path, without their line ends.
+inline std::vector<std::string> readLines(const std::filesystem::path& path) {
+    std::ifstream in(path);
+    std::vector<std::string> lines;
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+    return lines;
+}
+
+/// @p text without the spaces and tabs at either end.
+inline std::string trim(const std::string& text) {
+    const std::size_t first = text.find_first_not_of(" \t");
+    if (first == std::string::npos) return "";
+    return text.substr(first, text.find_last_not_of(" \t") - first + 1);
+}
+
+inline bool startsWith(const std::string& text, const std::string& prefix) { return text.rfind(prefix, 0) == 0; }
+
+/// A fence line (```, possibly indented inside a list item) opens or closes a code block.
+inline bool isFence(const std::string& line) { return startsWith(trim(line), "```"); }
+
+}  // namespace stepwise::test
