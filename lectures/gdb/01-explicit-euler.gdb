@@ -8,12 +8,16 @@ p h
 p bodies._M_ptr[0].position
 p bodies._M_ptr[0].velocity
 p bodies._M_ptr[0].acceleration
+# integrateExplicitEuler() returns into integrateBodies(), which picks the scene's integrator; the
+# second finish reaches the integrate stage's lambda, where the World's dynamics_ is in scope.
+finish
 finish
 p dynamics_[0].position
 p dynamics_[0].velocity
 continue
 p bodies._M_ptr[0].position
 p bodies._M_ptr[0].velocity
+finish
 finish
 p dynamics_[0].position
 p dynamics_[0].velocity

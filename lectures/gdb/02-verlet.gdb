@@ -19,6 +19,9 @@ break stepwise::applyUniformForces
 continue
 bt
 frame function stepwise::integrateVerlet
+# integrateVerlet() returns into integrateBodies(), which picks the scene's integrator; the
+# second finish reaches the integrate stage's lambda, where the World's dynamics_ is in scope.
+finish
 finish
 p dynamics_[0].position
 p dynamics_[0].velocity
