@@ -2,9 +2,11 @@
 // batch mode on this build's stepwise, as lectures/README.md tells students
 // to. It checks that the anchored breakpoints (lectures/gdb/stepwise.py) stop
 // where the lecture says and that the locals it prints hold the physics of
-// the first bounce. Tag: [gdb] (CTest label gdb). Without gdb, or on a build
-// without debug information at -O0 (Release, the ci preset), it passes with a
-// WARN saying why; the debug and asan presets run it (about 5 s).
+// the first bounce. Tag: [gdb] (CTest label gdb). It needs a Debug build
+// (-O0 -g3 -fno-inline, CMakeLists.txt: the debug and asan presets, about 5 s);
+// another build (Release: the ci preset) has no locals to print, so there it is
+// skipped, and CTest reports it as skipped (tests/skip.hpp). A Debug build
+// without gdb fails it: scripts/setup.sh installs it.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -13,11 +15,13 @@
 #include <string>
 
 #include "command_runner.hpp"
+#include "skip.hpp"
 
 namespace {
 
 const std::string kRoot = STEPWISE_SOURCE_DIR;
 const std::string kStepwise = STEPWISE_CLI_PATH;
+constexpr bool kDebugBuild = STEPWISE_CLI_DEBUG_BUILD;  // stepwise compiled at -O0 -g3 -fno-inline
 
 /// The `$N = number` lines gdb printed, by N.
 std::map<int, double> printedNumbers(const std::string& output) {
@@ -29,33 +33,32 @@ std::map<int, double> printedNumbers(const std::string& output) {
     return values;
 }
 
-/// True when gdb can run the sessions on this build; otherwise WARNs why not.
-bool gdbCanRunSessions() {
+/// Fails the test case unless gdb is installed and finds this build's line information.
+void requireGdb() {
     if (stepwise::test::shell("command -v gdb").exitCode != 0) {
-        WARN("skipped: gdb is not installed (apt-get install gdb)");
-        return false;
+        FAIL("gdb is not installed, and this Debug build is the one the [gdb] tests are for: "
+             "scripts/setup.sh installs it (Debian package gdb)");
     }
     const std::string line = stepwise::test::shell("gdb -q -batch -ex 'info line stepwise::correctPositions' '" + kStepwise + "'").output;
     if (line.find("starts at address") == std::string::npos) {
-        WARN("skipped: " << kStepwise << " has no line information (build the debug preset)\n" << line);
-        return false;
+        FAIL(kStepwise << " is a Debug build, but gdb finds no line information in it:\n" << line);
     }
-    return true;
 }
 
 }  // namespace
 
 TEST_CASE("Lecture 3's first-impact session stops at its anchors and prints the bounce", "[gdb]") {
-    if (!gdbCanRunSessions()) return;
+    if (!kDebugBuild) {
+        STEPWISE_SKIP(kStepwise << " is not a Debug build (-O0 -g3): the session prints locals it does not keep; "
+                                   "the debug and asan presets run this test");
+    }
+    requireGdb();
     // The sanitizers' leak check cannot run under ptrace; it is not what this test is about.
     const stepwise::test::CommandResult run = stepwise::test::shell(
         "cd '" + kRoot + "' && ASAN_OPTIONS=detect_leaks=0 gdb -q -batch -x lectures/gdb/03-first-impact.gdb --args '" +
         kStepwise + "' run config/lesson03_bounce.scene");
     INFO(run.output);
-    if (run.output.find("<optimized out>") != std::string::npos) {
-        WARN("skipped: " << kStepwise << " is optimised (locals are <optimized out>); build the debug preset");
-        return;
-    }
+    CHECK(run.output.find("<optimized out>") == std::string::npos);
     CHECK(run.output.find("No symbol") == std::string::npos);
     // Each anchor stopped at the line holding its text (gdb shows "LINE<tab>SOURCE" at a
     // stop): prepare()'s bounce target, then solve()'s accumulated normal impulse.
