@@ -23,7 +23,7 @@ set -euo pipefail
 #   gnuplot-nox               the plots of docs/benchmarks.md (scripts/bench.sh draws them from
 #                             stepwise-bench's CSV); -nox: PNG and SVG output without X11
 #   gdb                       the lectures' step-through sessions (lectures/gdb/, with Python for
-#                             stepwise.py's break-at), and the [gdb] test that runs one of them
+#                             stepwise.py's break-at), and the [gdb] tests that run them
 #   clang-14, libfuzzer-14-dev the fuzzers of tests/fuzz/ (scripts/fuzz.sh; README, Fuzzing)
 #   dpkg-dev                  dpkg-shlibdeps, which finds the libraries the program loads for the
 #                             .deb `cpack` makes (cmake/install.cmake; the test install-deb)
