@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "command_runner.hpp"
+#include "skip.hpp"
 #include "config/scene_loader.hpp"
 
 using Catch::Matchers::Contains;
@@ -253,10 +254,7 @@ TEST_CASE("run stopped by SIGINT or SIGTERM keeps its CSV whole, prints what ran
 }
 
 TEST_CASE("A write that fails is an error with the path and the reason, never a silent exit 0", "[cli]") {
-    if (!std::filesystem::exists("/dev/full")) {
-        WARN("skipped: no /dev/full on this system");
-        return;
-    }
+    if (!std::filesystem::exists("/dev/full")) STEPWISE_SKIP("no /dev/full on this system (it is Linux's full device)");
     Result r = runStepwise("run config/lesson03_bounce.scene --csv /dev/full");
     CHECK(r.exitCode == 1);
     CHECK_THAT(r.output, Contains("cannot write '/dev/full': No space left on device"));

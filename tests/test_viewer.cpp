@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "command_runner.hpp"
+#include "skip.hpp"
 #include "config/scene_loader.hpp"
 #include "viewer/camera.hpp"
 #include "objects/inertia.hpp"
@@ -92,18 +93,18 @@ Result underXvfb(const std::string& command) {
 /// Runs `stepwise view ARGS` in a virtual X display (see underXvfb()).
 Result viewUnderXvfb(const std::string& args) { return underXvfb(cli() + " view " + args); }
 
-/// True when the screenshot tests can run here; otherwise WARNs why not.
-bool canTakeScreenshots() {
+/// Why the screenshot tests cannot run on this build ("" when they can). A program built without
+/// the viewer cannot take one: the test is skipped. A missing xvfb-run is not the build's doing:
+/// the test fails, saying how to install it.
+std::string screenshotsUnavailable() {
     const Result probe = shell("env -u DISPLAY " + cli() + " view '" + kScene + "'");
     if (probe.output.find("was not built") != std::string::npos) {
-        WARN("skipped: this stepwise was built without the viewer (STEPWISE_VIEWER=OFF)");
-        return false;
+        return "this stepwise was built without the viewer (STEPWISE_VIEWER=OFF)";
     }
     if (std::system("command -v xvfb-run >/dev/null 2>&1") != 0) {
-        WARN("skipped: xvfb-run is not installed (Debian package xvfb; scripts/setup.sh installs it)");
-        return false;
+        FAIL("xvfb-run is not installed (Debian package xvfb; scripts/setup.sh installs it)");
     }
-    return true;
+    return "";
 }
 
 struct TempFile {
@@ -814,8 +815,7 @@ TEST_CASE("Without a display, stepwise view says why and how to run headless", "
 TEST_CASE("stepwise view rejects malformed options with exit code 2", "[viewer]") {
     if (shell("env -u DISPLAY " + cli() + " view '" + kScene + "'").output.find("was not built") !=
         std::string::npos) {
-        WARN("skipped: this stepwise was built without the viewer");
-        return;
+        STEPWISE_SKIP("this stepwise was built without the viewer (STEPWISE_VIEWER=OFF)");
     }
     CHECK(shell(cli() + " view --at 1").exitCode == 2);  // --at without --screenshot
     CHECK_THAT(shell(cli() + " view --screenshot x.png --size 10x10").output, Contains("--size expects"));
@@ -827,7 +827,7 @@ TEST_CASE("stepwise view rejects malformed options with exit code 2", "[viewer]"
 
 TEST_CASE("A screenshot shows the bodies where the physics puts them, and drawing changes nothing",
           "[viewer][xvfb]") {
-    if (!canTakeScreenshots()) return;
+    if (const std::string why = screenshotsUnavailable(); !why.empty()) STEPWISE_SKIP(why);
     const double t = 0.5;
     const int width = 320, height = 240;
     const TempFile png("viewer.png"), state("viewer-state.csv"), csv("viewer-run.csv");
@@ -889,7 +889,7 @@ TEST_CASE("A screenshot shows the bodies where the physics puts them, and drawin
 }
 
 TEST_CASE("A screenshot with the overlays shows the heads-up display's text", "[viewer][xvfb]") {
-    if (!canTakeScreenshots()) return;
+    if (const std::string why = screenshotsUnavailable(); !why.empty()) STEPWISE_SKIP(why);
     const TempFile png("viewer-hud.png");
     const Result shot =
         viewUnderXvfb("'" + kScene + "' --screenshot " + png.quoted() + " --at 1 --size 640x400 --keys HCVBSS");
@@ -913,7 +913,7 @@ TEST_CASE("The option --stage K draws the bodies where the K-th stage run of the
     // correct-positions (run 7: continuous runs, move-kinematics is skipped) it rests on the floor, centre at y = r. A
     // point r/2 above the resting centre is inside the resting ball but above
     // the sunken one: red only in the second picture.
-    if (!canTakeScreenshots()) return;
+    if (const std::string why = screenshotsUnavailable(); !why.empty()) STEPWISE_SKIP(why);
     const int width = 640, height = 480;
     World world(loadSceneFile(kBounceScene));
     while (world.stepCount() < 27) world.step();
@@ -946,10 +946,9 @@ TEST_CASE("In the window, the mouse picks, highlights, pushes and pulls the body
     // button for exactly three steps (paused, N steps once), then the right
     // button for two. The viewer's --log-events file says what it picked and
     // pushed; every number is checked against the camera and the physics.
-    if (!canTakeScreenshots()) return;
+    if (const std::string why = screenshotsUnavailable(); !why.empty()) STEPWISE_SKIP(why);
     if (std::system("command -v xdotool >/dev/null 2>&1") != 0) {
-        WARN("skipped: xdotool is not installed (Debian package xdotool; scripts/setup.sh installs it)");
-        return;
+        FAIL("xdotool is not installed (Debian package xdotool; scripts/setup.sh installs it)");
     }
     const std::string scene = kSourceDir + "/config/viewer_pick.scene";
     const int width = 320, height = 240;
@@ -1091,7 +1090,7 @@ TEST_CASE("I shows sleeping bodies in the sleeping colour instead of their own",
     // The 100:1 stack with Sleep=true settles and then sleeps, once it has been at rest and
     // in equilibrium for TimeToSleep (islands.hpp); half a second after that the heavy box,
     // red in the scene, must be drawn in kSleepingColor (blue above red) with I, and in its red without.
-    if (!canTakeScreenshots()) return;
+    if (const std::string why = screenshotsUnavailable(); !why.empty()) STEPWISE_SKIP(why);
     const TempFile scene("sleeping.scene");
     {
         std::ifstream in(kSourceDir + "/config/lesson08_heavy_on_light.scene");
