@@ -12,8 +12,8 @@ namespace stepwise {
 inline constexpr std::size_t kMostQuoted = 60;
 
 /// @brief @p text as a message quotes it: control bytes (a NUL, a tab, a vertical tab, an escape
-/// that would drive the terminal) written as \0, \t, \v, \x1b, and cut after kMostQuoted
-/// characters with a count of the bytes left out.
+/// that would drive the terminal) written as C writes them in a string, a backslash and 0, t, v or
+/// x1b, and cut after kMostQuoted characters with a count of the bytes left out.
 std::string quotable(std::string_view text);
 
 }  // namespace stepwise
