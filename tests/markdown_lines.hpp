@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <string>
 #include <vector>
 
@@ -28,5 +29,18 @@ inline bool startsWith(const std::string& text, const std::string& prefix) { ret
 
 /// A fence line (```, possibly indented inside a list item) opens or closes a code block.
 inline bool isFence(const std::string& line) { return startsWith(trim(line), "```"); }
+
+/// The backtick spans of a piece of markdown, `\|` read as `|` (a table cell escapes it).
+inline std::vector<std::string> codeSpans(const std::string& text) {
+    std::vector<std::string> spans;
+    std::size_t at = 0;
+    while ((at = text.find('`', at)) != std::string::npos) {
+        const std::size_t end = text.find('`', at + 1);
+        if (end == std::string::npos) break;
+        spans.push_back(std::regex_replace(text.substr(at + 1, end - at - 1), std::regex(R"(\\\|)"), "|"));
+        at = end + 1;
+    }
+    return spans;
+}
 
 }  // namespace stepwise::test

@@ -175,15 +175,7 @@ struct CommandParser {
 std::string refusal(const std::string& command, const std::vector<std::string>& args) {
     using namespace stepwise::cli;
     try {
-        if (command == "run") parseRunOptions(args, "default.scene");
-        else if (command == "view") parseViewOptions(args, "default.scene");
-        else if (command == "plot") parsePlotOptions(args, "default.scene");
-        else if (command == "grade") parseGradeOptions(args);
-        else if (command == "trace") parseTraceOptions(args);
-        else if (command == "raycast") parseRaycastOptions(args);
-        else if (command == "generate") parseGenerateOptions(args);
-        else if (command == "bench") parseBenchOptions(args);
-        else return "no such command";
+        if (!parseCommandOptions(command, args, "default.scene")) return "no such command";
     } catch (const UsageError& error) {
         return error.what();
     }

@@ -55,6 +55,7 @@ const fs::path kRoot = STEPWISE_SOURCE_DIR;
 constexpr const char* kMarker = "<!-- output-check";
 constexpr const char* kUnchecked = "<!-- output-unchecked:";
 
+using test::codeSpans;
 using test::isFence;
 using test::readLines;
 using test::startsWith;
@@ -242,19 +243,6 @@ std::string excerptMismatch(const std::vector<std::string>& quoted, const std::v
         return why.str();
     }
     return "";
-}
-
-/// The `code spans` of @p text.
-std::vector<std::string> codeSpans(const std::string& text) {
-    std::vector<std::string> spans;
-    std::size_t at = 0;
-    while ((at = text.find('`', at)) != std::string::npos) {
-        const std::size_t end = text.find('`', at + 1);
-        if (end == std::string::npos) break;
-        spans.push_back(text.substr(at + 1, end - at - 1));
-        at = end + 1;
-    }
-    return spans;
 }
 
 // ---- Running a page's commands ----

@@ -37,6 +37,7 @@ std::string readText(const fs::path& path) {
     return text.str();
 }
 
+using test::codeSpans;
 using test::isFence;
 using test::readLines;
 using test::startsWith;
@@ -78,19 +79,6 @@ bool isElision(const std::string& line) { return trim(line) == "..." || trim(lin
 bool isAppendix(const fs::path& page) {
     const std::string name = page.filename().string();
     return name.size() > 2 && std::isalpha(static_cast<unsigned char>(name[2]));
-}
-
-/// The backtick spans of a piece of markdown, `\|` read as `|` (a table cell escapes it).
-std::vector<std::string> codeSpans(const std::string& text) {
-    std::vector<std::string> spans;
-    std::size_t at = 0;
-    while ((at = text.find('`', at)) != std::string::npos) {
-        const std::size_t end = text.find('`', at + 1);
-        if (end == std::string::npos) break;
-        spans.push_back(std::regex_replace(text.substr(at + 1, end - at - 1), std::regex(R"(\\\|)"), "|"));
-        at = end + 1;
-    }
-    return spans;
 }
 
 /// The cells of a markdown table row, `\|` kept inside a cell.

@@ -167,6 +167,12 @@ PlotOptions parsePlotOptions(const std::vector<std::string>& args, const std::st
 /// draw them with gnuplot. Returns the exit code (1 when gnuplot cannot run or fails).
 int plotCommand(const PlotOptions& options);
 
+/// @brief Parses @p args, the arguments after @p command, as that command does, and runs nothing:
+/// what the tests and the command-line fuzzer call. @return false for a word with no option parser
+/// here (`check`, an unknown command). @throws UsageError for a bad command line.
+bool parseCommandOptions(const std::string& command, const std::vector<std::string>& args,
+                         const std::string& defaultScene);
+
 /// @brief The usage text printed by `stepwise` and `stepwise --help`.
 std::string usageText();
 

@@ -463,4 +463,18 @@ BenchOptions parseBenchOptions(const std::vector<std::string>& args) {
     return options;
 }
 
+bool parseCommandOptions(const std::string& command, const std::vector<std::string>& args,
+                         const std::string& defaultScene) {
+    if (command == "run") parseRunOptions(args, defaultScene);
+    else if (command == "view") parseViewOptions(args, defaultScene);
+    else if (command == "plot") parsePlotOptions(args, defaultScene);
+    else if (command == "grade") parseGradeOptions(args);
+    else if (command == "trace") parseTraceOptions(args);
+    else if (command == "raycast") parseRaycastOptions(args);
+    else if (command == "generate") parseGenerateOptions(args);
+    else if (command == "bench") parseBenchOptions(args);
+    else return false;
+    return true;
+}
+
 }  // namespace stepwise::cli

@@ -82,14 +82,7 @@ inline bool checkCommandLine(const std::vector<std::string>& args) {
     const std::string& command = args.front();
     const std::vector<std::string> rest(args.begin() + 1, args.end());
     try {
-        if (command == "run") parseRunOptions(rest, "default.scene");
-        else if (command == "view") parseViewOptions(rest, "default.scene");
-        else if (command == "plot") parsePlotOptions(rest, "default.scene");
-        else if (command == "grade") parseGradeOptions(rest);
-        else if (command == "trace") parseTraceOptions(rest);
-        else if (command == "raycast") parseRaycastOptions(rest);
-        else if (command == "generate") parseGenerateOptions(rest);
-        else if (command == "bench") parseBenchOptions(rest);
+        parseCommandOptions(command, rest, "default.scene");
     } catch (const UsageError&) {
         return true;  // refused with a message: what a bad command line should get
     } catch (const std::exception& error) {
