@@ -96,6 +96,10 @@ Separation separation(const Geometry& a, const Geometry& b) {
             }
         case GeometryType::Box: return aSphere ? sphereFromBox(a, b) : boxFromBox(a, b);
         case GeometryType::Plane: return aSphere ? sphereFromPlane(a, b) : boxFromPlane(a, b);
+        case GeometryType::Capsule:
+        case GeometryType::Cylinder:
+        case GeometryType::Hull:
+        case GeometryType::Mesh:
         case GeometryType::Count: break;
     }
     return {std::numeric_limits<Real>::infinity(), Vec3(0, 1, 0)};

@@ -19,22 +19,44 @@ constexpr std::size_t kGeometryTypes = static_cast<std::size_t>(GeometryType::Co
 
 /// The dispatch table, [shape of A][shape of B]. A is always a dynamic
 /// body, B any body (dynamic, kinematic or a plane), so the Plane row is
-/// never used: a plane is never A. Box–sphere is sphere–box with the
-/// roles swapped and the normal flipped (box_sphere.cpp).
+/// never used: a plane is never A, nor is a mesh (only kinematic objects
+/// have one). Box–sphere is sphere–box with the roles swapped and the normal
+/// flipped (box_sphere.cpp). nullptr: no test yet, the pair never touches.
 constexpr PairTest kPairTests[kGeometryTypes][kGeometryTypes] = {
-    //              B: Sphere               Box               Plane
-    /* A: Sphere */ {collideSphereSphere, collideSphereBox, collideSpherePlane},
-    /* A: Box    */ {collideBoxSphere,    collideBoxBox,    collideBoxPlane},
-    /* A: Plane  */ {nullptr,             nullptr,          nullptr},
+    //                B: Sphere               Box               Plane               Capsule  Cylinder Hull     Mesh
+    /* A: Sphere   */ {collideSphereSphere, collideSphereBox, collideSpherePlane, nullptr, nullptr, nullptr, nullptr},
+    /* A: Box      */ {collideBoxSphere,    collideBoxBox,    collideBoxPlane,    nullptr, nullptr, nullptr, nullptr},
+    /* A: Plane    */ {nullptr,             nullptr,          nullptr,            nullptr, nullptr, nullptr, nullptr},
+    /* A: Capsule  */ {nullptr,             nullptr,          nullptr,            nullptr, nullptr, nullptr, nullptr},
+    /* A: Cylinder */ {nullptr,             nullptr,          nullptr,            nullptr, nullptr, nullptr, nullptr},
+    /* A: Hull     */ {nullptr,             nullptr,          nullptr,            nullptr, nullptr, nullptr, nullptr},
+    /* A: Mesh     */ {nullptr,             nullptr,          nullptr,            nullptr, nullptr, nullptr, nullptr},
 };
 
-Geometry geometryOfShape(Shape shape, const GameObject& object, Real radius) {
+/// The pair tests' name for an object's shape (a compound's parts are looked up one by one).
+GeometryType geometryType(Shape shape) {
+    switch (shape) {
+        case Shape::Sphere: return GeometryType::Sphere;
+        case Shape::Box: return GeometryType::Box;
+        case Shape::Capsule: return GeometryType::Capsule;
+        case Shape::Cylinder: return GeometryType::Cylinder;
+        case Shape::Hull: return GeometryType::Hull;
+        case Shape::Mesh: return GeometryType::Mesh;
+        case Shape::Compound: break;
+    }
+    return GeometryType::Count;  // a compound has no geometry of its own: geometryOfPart()
+}
+
+template <class Object>
+Geometry geometryOfObject(const Object& object) {
     Geometry g;
-    g.type = shape == Shape::Sphere ? GeometryType::Sphere : GeometryType::Box;
+    g.type = geometryType(object.shape);
     g.centre = object.position;
     g.orientation = object.orientation;
     g.halfExtents = object.scale * Real(0.5);
-    g.radius = radius;
+    g.radius = object.radius;
+    g.halfHeight = Real(0.5) * object.height;
+    g.hull = object.hull.get();
     return g;
 }
 
@@ -44,9 +66,26 @@ PairTest pairTestFor(GeometryType a, GeometryType b) {
     return kPairTests[static_cast<std::size_t>(a)][static_cast<std::size_t>(b)];
 }
 
-Geometry geometryOf(const DynamicObject& body) { return geometryOfShape(body.shape, body, body.radius); }
+Geometry geometryOf(const DynamicObject& body) { return geometryOfObject(body); }
 
-Geometry geometryOf(const KinematicsObject& body) { return geometryOfShape(body.shape, body, body.radius); }
+Geometry geometryOf(const KinematicsObject& body) {
+    Geometry g = geometryOfObject(body);
+    g.mesh = body.mesh.get();
+    return g;
+}
+
+Geometry geometryOfPart(const Geometry& body, const CompoundPart& part, std::uint32_t index) {
+    Geometry g;
+    g.type = geometryType(part.shape);
+    g.centre = body.centre + body.orientation * part.position;
+    g.orientation = body.orientation * part.orientation;
+    g.halfExtents = part.scale * Real(0.5);
+    g.radius = part.radius;
+    g.halfHeight = Real(0.5) * part.height;
+    g.hull = part.hull.get();
+    g.part = index;
+    return g;
+}
 
 Geometry geometryOf(const CollisionPlane& plane) {
     Geometry g;

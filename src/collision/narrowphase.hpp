@@ -11,16 +11,23 @@
 namespace stepwise {
 
 /// @brief Kinds of geometry the pair tests understand.
-enum class GeometryType : std::uint8_t { Sphere, Box, Plane, Count };
+///
+/// A compound body is not one of them: the narrowphase tests each of its
+/// parts as a geometry of its own (collidePair()).
+enum class GeometryType : std::uint8_t { Sphere, Box, Plane, Capsule, Cylinder, Hull, Mesh, Count };
 
 /// @brief The shape of one object in world space, as the pair tests see it.
 struct Geometry {
     GeometryType type = GeometryType::Sphere;  ///< Which fields below are meaningful.
-    Vec3 centre{0, 0, 0};                      ///< Sphere/box centre, or a point on a plane, m.
-    Quat orientation{1, 0, 0, 0};              ///< Box orientation.
+    Vec3 centre{0, 0, 0};                      ///< Centre (centre of mass of a hull), or a point on a plane, m.
+    Quat orientation{1, 0, 0, 0};              ///< Rotation from the shape's frame to the world (all but sphere, plane).
     Vec3 halfExtents{0, 0, 0};                 ///< Box half edge lengths, m.
-    Real radius = 0;                           ///< Sphere radius, m.
+    Real radius = 0;                           ///< Sphere, capsule, cylinder radius, m.
+    Real halfHeight = 0;                       ///< Capsule: half its segment; cylinder: half its length, m (local y).
     Vec3 normal{0, 1, 0};                      ///< Plane unit normal.
+    const ConvexHull* hull = nullptr;          ///< Hull: its polyhedron, in the shape's frame.
+    const TriangleMesh* mesh = nullptr;        ///< Mesh: its triangles, in the shape's frame.
+    std::uint32_t part = 0;                    ///< Which part of a compound body this is (0 otherwise).
 };
 
 /// Most points a manifold keeps: four corners are enough to hold a box
@@ -69,6 +76,8 @@ PairTest pairTestFor(GeometryType a, GeometryType b);
 Geometry geometryOf(const DynamicObject& body);
 Geometry geometryOf(const KinematicsObject& body);  ///< @copydoc geometryOf(const DynamicObject&)
 Geometry geometryOf(const CollisionPlane& plane);   ///< @copydoc geometryOf(const DynamicObject&)
+/// @brief The geometry of part @p index of a compound body whose own pose is @p body's.
+Geometry geometryOfPart(const Geometry& body, const CompoundPart& part, std::uint32_t index);
 /// @brief The geometry of whichever object @p ref names in @p bodies.
 Geometry geometryOf(const BodySet& bodies, const BodyRef& ref);
 

@@ -21,6 +21,15 @@ const char* toString(SolverKind kind) {
     return "?";
 }
 
+const char* toString(NarrowphaseKind kind) {
+    switch (kind) {
+        case NarrowphaseKind::Auto: return "Auto";
+        case NarrowphaseKind::GjkEpa: return "GjkEpa";
+        case NarrowphaseKind::Mpr: return "Mpr";
+    }
+    return "?";
+}
+
 const char* toString(BroadphaseKind kind) {
     switch (kind) {
         case BroadphaseKind::Auto: return "Auto";

@@ -46,6 +46,19 @@ enum class BroadphaseKind : std::uint8_t {
 /// @brief Scene-file spelling of a broadphase ("Auto", "BruteForce", "SweepAndPrune", "AabbTree", "Grid").
 const char* toString(BroadphaseKind kind);
 
+/// @brief Which algorithm finds the contacts of two convex shapes (`World, Narrowphase=…`).
+///
+/// Spheres against spheres and anything against a plane always take their
+/// closed forms; the choice is for every other convex pair.
+enum class NarrowphaseKind : std::uint8_t {
+    Auto,    ///< SAT for box–box, closest points of segments for capsules and spheres, GJK + EPA for the rest.
+    GjkEpa,  ///< GJK (distance, overlap) then EPA (depth and normal) for every such pair, boxes too.
+    Mpr,     ///< Minkowski portal refinement (Snethen) for every such pair, boxes too.
+};
+
+/// @brief Scene-file spelling of a narrowphase ("Auto", "GjkEpa", "Mpr").
+const char* toString(NarrowphaseKind kind);
+
 /// @brief Default time step, s: 60 steps per second, the usual display rate.
 inline constexpr Real kDefaultTimeStep = Real(1) / Real(60);
 /// @brief Default run length of `stepwise run`, s.
@@ -140,6 +153,7 @@ struct WorldSettings {
     Real sleepAngularAcceleration = kDefaultSleepAngularAcceleration; ///< Still only if |Δω|/h is below this, rad/s².
     Real timeToSleep = kDefaultTimeToSleep;            ///< Still for this long → asleep, s.
     BroadphaseKind broadphase = BroadphaseKind::Auto;  ///< Which broadphase finds the candidate pairs.
+    NarrowphaseKind narrowphase = NarrowphaseKind::Auto;  ///< Which algorithm collides two convex shapes.
     bool stepPlan = true;                              ///< Skip the stages the scene cannot need (src/world/step_plan.hpp).
     bool fastPath = kFastPathByDefault;                ///< Let the step plan send the substeps to the fast path (src/fast/).
     bool continuousCollision = true;                   ///< Fast bodies stop where their path first touches (src/collision/continuous.hpp).

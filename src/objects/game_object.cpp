@@ -8,6 +8,11 @@ const char* toString(Shape shape) {
     switch (shape) {
         case Shape::Sphere: return "Sphere";
         case Shape::Box: return "Box";
+        case Shape::Capsule: return "Capsule";
+        case Shape::Cylinder: return "Cylinder";
+        case Shape::Hull: return "Hull";
+        case Shape::Compound: return "Compound";
+        case Shape::Mesh: return "Mesh";
     }
     return "?";
 }

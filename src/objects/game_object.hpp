@@ -17,14 +17,9 @@
 #include <string>
 
 #include "core/types.hpp"
+#include "objects/shapes.hpp"
 
 namespace stepwise {
-
-/// @brief Collision shape of a dynamic or kinematic object.
-enum class Shape : std::uint8_t {
-    Sphere,  ///< Ball of `radius` metres around the object's position.
-    Box,     ///< Oriented box whose full edge lengths are the object's `scale`.
-};
 
 /// @brief Display colour, each channel from 0 to 1. Used only by viewers.
 struct Color {
@@ -68,7 +63,7 @@ class DynamicObject : public GameObject {
 public:
     // The state every substep reads and writes comes first, straight after
     // the pose that ends the base class: from position to canTurn is one run
-    // of 212 bytes, four cache lines of the 400-byte body, which is all that a
+    // of 212 bytes, four cache lines of the body, which is all that a
     // pass over the bodies (integrate, the drift, the solver's copies) reads.
     // With the name, size and colour between pose and motion it would be five
     // or six lines, and at 64k bodies such a pass reads tens of megabytes. The
@@ -88,7 +83,10 @@ public:
     bool canTurn = true;
 
     // Read once a step or less.
-    Real radius = Real(0.5);         ///< Sphere radius, m (unused by boxes).
+    Real radius = Real(0.5);         ///< Sphere, Capsule, Cylinder radius, m (unused by boxes).
+    Real height = 0;                 ///< Capsule: length of its segment; Cylinder: full length, m (along body y).
+    std::shared_ptr<const ConvexHull> hull;         ///< Shape=Hull: its polyhedron (shapes.hpp).
+    std::shared_ptr<const CompoundShape> compound;  ///< Shape=Compound: its parts (shapes.hpp).
     Real mass = Real(1);             ///< Mass, kg; always > 0.
     Vec3 constantAcceleration{0, 0, 0}; ///< The scene's per-object acceleration, m/s² (added to gravity).
     Real elasticity = Real(0.5);     ///< Coefficient of restitution, 0–1.
@@ -117,7 +115,11 @@ public:
 class KinematicsObject : public GameObject {
 public:
     Shape shape = Shape::Box;        ///< Collision shape.
-    Real radius = Real(0.5);         ///< Sphere radius, m (unused by boxes).
+    Real radius = Real(0.5);         ///< Sphere, Capsule, Cylinder radius, m (unused by boxes).
+    Real height = 0;                 ///< Capsule: length of its segment; Cylinder: full length, m (along body y).
+    std::shared_ptr<const ConvexHull> hull;         ///< Shape=Hull: its polyhedron (shapes.hpp).
+    std::shared_ptr<const CompoundShape> compound;  ///< Shape=Compound: its parts (shapes.hpp).
+    std::shared_ptr<const TriangleMesh> mesh;       ///< Shape=Mesh: its triangles (shapes.hpp).
     Vec3 velocity{0, 0, 0};          ///< Prescribed linear velocity, m/s.
     Vec3 angularVelocity{0, 0, 0};   ///< Prescribed angular velocity in world space, rad/s.
     Real elasticity = Real(1);       ///< Restitution factor, 0–1 (combined by product).
@@ -140,8 +142,5 @@ public:
     /// @brief Signed distance of point @p p from the plane, m (positive on the normal's side).
     Real signedDistance(const Vec3& p) const { return glm::dot(p - position, normal); }
 };
-
-/// @brief Human-readable name of a shape ("Sphere", "Box").
-const char* toString(Shape shape);
 
 }  // namespace stepwise
