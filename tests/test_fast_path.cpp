@@ -5,7 +5,7 @@
 // - the waves make the lanes independent and keep each body's order (no wave
 //   holds two contacts of one dynamic body, each body meets its contacts in
 //   their order, every round contact is solved exactly once);
-// - so a pass in lanes is the plain scalar pass of contact_solver.cpp, one
+// - so a pass in lanes is the plain scalar pass of solve_contacts.cpp, one
 //   contact at a time in its order: the same velocities and impulses;
 // - and a whole World on the fast path, on the objects (balls with boxes,
 //   joints, another integrator) or on the packed records (a rain of balls),
@@ -145,7 +145,7 @@ TEST_CASE("Waves: no wave holds two contacts of one dynamic body, each body meet
 
 TEST_CASE("A pass in lanes is the scalar pass, four contacts at a time", "[fast][solver][lanes]") {
     // The same contacts, solved once by the lanes and once one at a time by the plain scalar pass
-    // (solveContacts(), contact_solver.cpp): warm start, a solve and a relax pass must leave the same
+    // (solveContacts(), solve_contacts.cpp): warm start, a solve and a relax pass must leave the same
     // velocities and impulses. Each lane rounds as a scalar does and each body meets its contacts in
     // the same order, so they agree to the last bit: the engine is built with -ffp-contract=off, so
     // that no copy of the lanes (AVX-512, AVX2 or SSE2) and no scalar line fuses a·b + c. A build for

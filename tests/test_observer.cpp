@@ -4,6 +4,7 @@
 
 #include <vector>
 
+#include "fast/fast_path_counts.hpp"
 #include "test_support.hpp"
 
 using namespace stepwise;

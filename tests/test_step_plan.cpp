@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "config/scene_loader.hpp"
+#include "fast/fast_path_counts.hpp"
 #include "objects/inertia.hpp"
 #include "integrators/integrators.hpp"
 #include "command_runner.hpp"

@@ -105,7 +105,7 @@ constexpr Real kTolerableGrowth = 2;
 constexpr Real kGrowthTolerance = Real(1e-12);
 /// Two bodies whose bounding spheres are apart by less than this fraction of the sum of their
 /// radii count as touching at the start, for the mass-ratio warning: a box set on another box
-/// "at" its top face, written with rounded coordinates, may be a hair above it.
+/// "at" its top face, written to a few decimals, may be a hair above it.
 constexpr Real kTouchingMargin = Real(0.01);
 /// A hinge or motor turns about Z unless told otherwise: a wheel facing the default camera.
 const Vec3 kDefaultJointAxis{0, 0, 1};

@@ -25,7 +25,7 @@ enum class SolverKind : std::uint8_t {
     Impulse,
     /// Catto's soft step: contacts and joints found at the start of the step
     /// and held through substeps by soft, warm-started sequential impulses
-    /// (src/dynamics/contact_solver.cpp, src/dynamics/joints/).
+    /// (src/dynamics/contact_solver.hpp, src/dynamics/joints/).
     SequentialImpulse,
 };
 

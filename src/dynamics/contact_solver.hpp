@@ -147,7 +147,7 @@ struct SolverContact {
     Real maxNormalImpulse = 0;       ///< Largest λ_n seen this step (0: never pushed), N·s.
     Real leverA = 0;                 ///< Round contact: ℓ_A = r_A·n, the lever arm along the normal, m.
     Real leverB = 0;                 ///< Round contact: ℓ_B = r_B·n (zero against a plane), m.
-    // The separation at the recorded poses (currentSeparation() in contact_solver.cpp).
+    // The separation at the recorded poses (currentSeparation() in solve_contacts.cpp).
     Real separationOffset = 0;       ///< C_offset: C₀ and the fixed anchor offsets along n, m.
     std::uint32_t poseA = 0;         ///< A's pose in SolverWorkspace::poses.
     std::uint32_t poseB = 0;         ///< B's pose there (a plane: the fixed pose at the origin).

@@ -2,7 +2,7 @@
 /// @brief The three formulas every impulse at a point uses, shared by both contact solvers.
 ///
 /// Both the pairwise resolver (impulse_resolver.cpp) and the sequential-impulse
-/// contacts (contact_solver.cpp) describe a contact point by the same fields:
+/// contacts (contact_solver.hpp) describe a contact point by the same fields:
 /// dynamic body A (`a`), body B when dynamic (`b`, else nullptr, with
 /// `staticVelocity` the velocity of B's surface), lever arms `rA`, `rB`,
 /// inverse masses `inverseMassA`, `inverseMassB` and world inverse inertias

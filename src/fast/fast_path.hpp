@@ -3,7 +3,7 @@
 ///
 /// **What it computes.** The same as the plain substep loop in
 /// World::stepWithSequentialImpulses() (integrate, warm start, solve, move,
-/// relax; dynamics/contact_solver.cpp, dynamics/velocity_change_drift.cpp),
+/// relax; dynamics/warm_start_contacts.cpp, solve_contacts.cpp, velocity_change_drift.cpp),
 /// bit for bit. A student never needs to read this folder: every number the
 /// engine computes, the plain path computes too. Nothing here is new physics.
 ///
@@ -40,11 +40,11 @@
 #include "core/world_settings.hpp"
 #include "dynamics/contact_solver.hpp"
 #include "dynamics/joints/joint.hpp"
+#include "fast/fast_path_counts.hpp"
+#include "fast/fast_workspace.hpp"
 #include "forces/apply_forces.hpp"
 
 namespace stepwise {
-
-struct FastWorkspace;  // fast_workspace.hpp: the fast path's own arrays
 
 /// @brief Everything the fast path's substeps read and write, handed over by the World once a step.
 struct FastSubsteps {

@@ -288,7 +288,7 @@ STEPWISE_LANES_INLINE void solveFrictionOfBatches(RoundBatch* batches, BodyLanes
     }
 }
 
-/// solveContacts()'s pass (contact_solver.cpp), line for line, on the @p N batches from @p batches on, all of one wave:
+/// solveContacts()'s pass (solve_contacts.cpp), line for line, on the @p N batches from @p batches on, all of one wave:
 /// each `if` on a contact's own numbers becomes a select between the two results, lane by lane.
 ///
 /// **Why N batches at once.** One batch is a chain of about 130 cycles, each step
@@ -297,7 +297,7 @@ STEPWISE_LANES_INLINE void solveFrictionOfBatches(RoundBatch* batches, BodyLanes
 /// reorder window reaches ahead, about one batch's instructions. Batches of one wave share
 /// no body, so their chains are independent: written phase by phase, every phase once
 /// for each batch, the N chains run side by side. Three fit the registers; with four,
-/// values spill to the stack (docs/performance-history.md#history-round-13 measured each N). The
+/// values spill to the stack. The
 /// numbers are each batch's own, so the bits are the same whatever N.
 ///
 /// With @p Friction false (a relax pass, unless ContactSolverSettings::relaxBallFriction) the

@@ -2,7 +2,7 @@
 /// @brief The round contacts (ball–ball, ball–plane) solved four at a time: waves of independent contacts in SIMD lanes.
 ///
 /// **Why.** Solving one contact is a long chain of small operations, most
-/// waiting for the one before (solveContact() in dynamics/contact_solver.cpp):
+/// waiting for the one before (solveContact() in dynamics/solve_contacts.cpp):
 /// a few hundred instructions for a ball on a ball, and while the contacts fit
 /// in the caches a pass is bound by them, not by memory. A processor can do
 /// the same operation on four doubles at once (SIMD: SSE2 two, AVX2 and AVX-512 four),
@@ -39,7 +39,7 @@
 /// no vector registers at all (IEEE 754 rounds each lane as a scalar).
 ///
 /// **The formulas** are the round contact's of solver_body.hpp and
-/// contact_solver.cpp, written on Lanes (lanes.hpp) instead of Reals:
+/// solve_contacts.cpp, written on Lanes (lanes.hpp) instead of Reals:
 /// the same lines, four contacts at a time.
 ///
 /// Reference: Catto, Box2D v3 `contact_solver.c` (contacts in SIMD lanes) and

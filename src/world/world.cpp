@@ -13,8 +13,7 @@
 #include "core/limits.hpp"
 #include "dynamics/islands.hpp"
 #include "dynamics/velocity_change_drift.hpp"
-#include "fast/fast_path.hpp"
-#include "fast/fast_workspace.hpp"
+#include "fast/fast_path.hpp"  // the one door into the fast path (src/fast/)
 #include "forces/apply_forces.hpp"
 #include "integrators/integrators.hpp"
 #include "objects/finite_state.hpp"
@@ -286,7 +285,7 @@ void World::stepWithSequentialImpulses() {
     });
 
     // 4. Prepare: contacts and joints → constraints; an awake body wakes the islands it touches
-    //    (src/dynamics/contact_solver.cpp, src/dynamics/joints/joint.cpp, src/dynamics/islands.cpp)
+    //    (src/dynamics/prepare_contacts.cpp, src/dynamics/joints/joint.cpp, src/dynamics/islands.cpp)
     runStage(Stage::PrepareConstraints, [&] {
         if (asleep_ > 0) wakeTouchedIslands(bodies(), contacts_, links_);
         prepareContacts(bodies(), contacts_, links_, h, settings_.warmStarting, solverWorkspace_);
@@ -312,7 +311,7 @@ void World::stepWithSequentialImpulses() {
             runStage(Stage::MoveKinematics, [&] { moveKinematics(kinematics_, hs); });
 
             // 6. Warm start, solve (joints, then contacts, in each pass), and move each body by what the solve
-            //    changed (src/dynamics/contact_solver.cpp, joints/, velocity_change_drift.cpp)
+            //    changed (src/dynamics/warm_start_contacts.cpp, solve_contacts.cpp, joints/, velocity_change_drift.cpp)
             runStage(Stage::SolveConstraints, [&] {
                 warmStart(substep);
                 for (int pass = 0; pass < settings_.velocityIterations; ++pass) solvePass(contactSettings, jointSettings, true);
@@ -337,7 +336,7 @@ void World::stepWithSequentialImpulses() {
         runStage(Stage::Continuous, [&] { stopFastBodiesAtImpact(bodies(), sweepWorkspace_); });
     }
 
-    // 8. Bounces, once per step, from the approach speed at touch (src/dynamics/contact_solver.cpp);
+    // 8. Bounces, once per step, from the approach speed at touch (src/dynamics/restitution.cpp);
     //    the impulses kept for the next step's warm start; joints that pulled harder than their
     //    MaxForce break (src/dynamics/joints/joint.cpp)
     runStage(Stage::Restitution, [&] {

@@ -20,7 +20,6 @@
 #include "dynamics/impulse_resolver.hpp"
 #include "dynamics/islands.hpp"
 #include "dynamics/joints/joint.hpp"
-#include "fast/fast_path_counts.hpp"
 #include "forces/apply_forces.hpp"
 #include "objects/body_set.hpp"
 #include "world/scene.hpp"
@@ -29,7 +28,8 @@
 
 namespace stepwise {
 
-struct FastWorkspace;  // src/fast/fast_workspace.hpp: the fast path's own arrays
+struct FastWorkspace;   // src/fast/fast_workspace.hpp: the fast path's own arrays
+struct FastPathCounts;  // src/fast/fast_path_counts.hpp: how many steps took it
 
 /// @brief A running simulation: the objects of a Scene plus the clock and the step pipeline.
 ///
