@@ -3,6 +3,7 @@
 /// order, with the round contacts in lanes and, for a step of balls, on the packed records.
 #include "fast/fast_path.hpp"
 
+#include "dynamics/kinematic_motion.hpp"
 #include "dynamics/velocity_change_drift.hpp"
 #include "fast/fast_workspace.hpp"
 #include "fast/packed_substeps.hpp"

@@ -9,7 +9,7 @@
 /// (lanes.hpp) turn four balls with the instructions of one.
 ///
 /// **The same numbers.** Every line below is the scalar turn's
-/// (integrators/kinematic_motion.cpp), written on Lanes in the same order of operations,
+/// (integrators/rotation_update.cpp), written on Lanes in the same order of operations,
 /// with glm's orders for the dot products and the quaternion product; IEEE 754
 /// rounds each lane as the scalar operation, so a lane gives the scalar turn's
 /// bits. The rare lanes the series or the Newton step do not cover (a turn

@@ -139,7 +139,4 @@ Quat rotateTorqueFree(const Quat& orientation, const Vec3& angularMomentum, cons
 /// (0 for explicit Euler, 1 for symplectic Euler, ½ for velocity Verlet.)
 Real positionShareOfVelocityChange(IntegratorKind integrator);
 
-/// @brief Stage 3: moves kinematic bodies along their prescribed constant velocities.
-void moveKinematics(std::span<KinematicsObject> bodies, Real h);
-
 }  // namespace stepwise

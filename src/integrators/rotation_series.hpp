@@ -2,7 +2,7 @@
 /// @brief The constants of the exact turn q ← exp(½h·ω̂)·q (rotateByAngularVelocity()): where its
 /// series hold and when a quaternion is near enough unit length for one Newton step.
 ///
-/// Shared by the scalar turn (kinematic_motion.cpp) and the four-at-a-time turn
+/// Shared by the scalar turn (rotation_update.cpp) and the four-at-a-time turn
 /// of the packed substeps (src/fast/rotation_lanes.hpp), which must give the same bits.
 #pragma once
 

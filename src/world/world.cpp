@@ -12,6 +12,7 @@
 #include "core/errors.hpp"
 #include "core/limits.hpp"
 #include "dynamics/islands.hpp"
+#include "dynamics/kinematic_motion.hpp"
 #include "dynamics/velocity_change_drift.hpp"
 #include "fast/fast_path.hpp"  // the one door into the fast path (src/fast/)
 #include "forces/apply_forces.hpp"
@@ -190,7 +191,7 @@ void World::stepWithImpulses() {
         integrateBodies(settings_.integrator, dynamics_, h, forces);
     });
 
-    // 3. Advance kinematic bodies along their prescribed motion (src/integrators/kinematic_motion.cpp)
+    // 3. Advance kinematic bodies along their prescribed motion (src/dynamics/kinematic_motion.cpp)
     runStage(Stage::MoveKinematics, [&] { moveKinematics(kinematics_, h); });
 
     // 3b. A body that moved farther than its half-thickness goes back to where its path first
@@ -302,7 +303,7 @@ void World::stepWithSequentialImpulses() {
     } else {
         for (int substep = 0; substep < settings_.substeps; ++substep) {
             substep_ = substep;  // for the observer's StageEvent
-            // 5. Free flight for h_s (src/integrators/*.cpp, kinematic_motion.cpp)
+            // 5. Free flight for h_s (src/integrators/*.cpp, src/dynamics/kinematic_motion.cpp)
             if (substep > 0 && plan_.substepForces.runs) runStage(Stage::ApplyForces, [&] { forces(dynamics_); });
             runStage(Stage::Integrate, [&] {
                 recordPoses(bodies(), solverWorkspace_);  // the solve measures separations from before the flight

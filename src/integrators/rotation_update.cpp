@@ -1,8 +1,5 @@
-/// @file kinematic_motion.cpp
-/// @brief Stage 3: prescribed motion of kinematic bodies, and the shared rotation update.
-///
-/// A kinematic body's velocity is given, not computed: it is not pushed by
-/// anything, so its motion is exact for any step size: x(t+h) = x(t) + h·v.
+/// @file rotation_update.cpp
+/// @brief The integrators' rotation updates: the exact turn by ω·h, and Catto's small-angle turn.
 #include <cmath>
 
 #include "integrators/integrators.hpp"
@@ -59,13 +56,6 @@ Quat turnBySmallAngle(const Quat& orientation, const Vec3& omega, Real h) {
     // turn to third order in the angle, for a quaternion product and no series.
     const Vec3 half = (Real(0.5) * h) * omega;
     return renormalise(orientation + Quat(0, half.x, half.y, half.z) * orientation);
-}
-
-void moveKinematics(std::span<KinematicsObject> bodies, Real h) {
-    for (KinematicsObject& body : bodies) {
-        body.position += h * body.velocity;
-        body.orientation = rotateByAngularVelocity(body.orientation, body.angularVelocity, h);
-    }
 }
 
 }  // namespace stepwise
