@@ -108,7 +108,7 @@ TEST_CASE("A hull's box is its turned vertices' box: a hull cube's equals the bo
     CHECK_THAT(shapeReach(body), WithinAbs(glm::length(half), kTolerance));
 }
 
-TEST_CASE("A compound's box holds all its parts; a mesh's is its root box turned", "[broadphase]") {
+TEST_CASE("A compound's box holds all its parts, and a mesh's is its root box turned", "[broadphase]") {
     SECTION("two unit boxes side by side, stood on end by 90° about z: a 1 x 2 x 1 bar") {
         DynamicObject body = test::shapedBody("bar", Shape::Compound, Vec3(0, 1, 0), turn(90, Vec3(0, 0, 1)));
         body.compound = test::twoBoxCompound();
