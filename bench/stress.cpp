@@ -31,6 +31,7 @@
 #include <random>
 #include <stdexcept>
 
+#include "collision/continuous.hpp"
 #include "config/scene_generator.hpp"
 #include "elastic_gas.hpp"
 #include "config/scene_loader.hpp"
@@ -262,7 +263,9 @@ CaseResult bulletCase(const std::string& file) {
     const RunStats stats = simulate(world, stepsFor(scene, kBulletSeconds),
                                     [&](const World& w) { furthest = std::max(furthest, beyondMiddle(w.dynamics()[0])); });
     const std::string what = bullet.shape == Shape::Sphere ? format("ball (r = %.2f m)", double(bullet.radius))
-                                                           : format("%.2f m cube", double(bullet.scale.x));
+                             : bullet.shape == Shape::Box ? format("%.2f m cube", double(bullet.scale.x))
+                                                          : format("%s (inner radius %.2f m)", toString(bullet.shape),
+                                                                   double(innerRadius(bullet)));
     CaseResult r;
     r.criterion = format("%.0f m/s %s: centre never past the middle of the %.2f m wall",
                          double(glm::length(scene.dynamics[0].velocity)), what.c_str(), 2 * halfThickness);

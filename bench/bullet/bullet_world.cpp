@@ -36,6 +36,10 @@ BulletWorld::BulletWorld(const Scene& scene)
     // One shape per distinct size, shared by the bodies of that size (what Bullet's manual advises).
     std::map<std::pair<int, std::tuple<Real, Real, Real>>, btCollisionShape*> shapeOf;
     const auto shapeFor = [&](const DynamicObject& body) {
+        if (body.shape != Shape::Sphere && body.shape != Shape::Box) {
+            throw std::invalid_argument(body.name + ": a " + toString(body.shape) +
+                                        " is not translated to Bullet (the side-by-side has spheres and boxes)");
+        }
         const bool sphere = body.shape == Shape::Sphere;
         const auto key = sphere ? std::make_pair(0, std::make_tuple(body.radius, Real(0), Real(0)))
                                 : std::make_pair(1, std::make_tuple(body.scale.x, body.scale.y, body.scale.z));

@@ -85,6 +85,36 @@ private:
     Clock::time_point last_{};
 };
 
+/// The numbers that size a body's shape, as `stepwise check` prints them.
+template <class Body>
+std::string shapeSize(const Body& b) {
+    char text[128];
+    switch (b.shape) {
+        case Shape::Sphere: std::snprintf(text, sizeof text, "radius %.6g m", double(b.radius)); break;
+        case Shape::Box: return "size " + vec(b.scale) + " m";
+        case Shape::Capsule:
+        case Shape::Cylinder:
+            std::snprintf(text, sizeof text, "radius %.6g m, height %.6g m", double(b.radius), double(b.height));
+            break;
+        case Shape::Hull:
+            std::snprintf(text, sizeof text, "%zu vertices, %zu faces", b.hull ? b.hull->vertices.size() : std::size_t(0),
+                          b.hull ? b.hull->faces.size() : std::size_t(0));
+            break;
+        case Shape::Compound:
+            std::snprintf(text, sizeof text, "%zu parts", b.compound ? b.compound->parts.size() : std::size_t(0));
+            break;
+        case Shape::Mesh: return "a triangle mesh";  // only a kinematic body has one (the overload below)
+    }
+    return text;
+}
+
+std::string shapeSize(const KinematicsObject& b) {
+    if (b.shape != Shape::Mesh) return shapeSize<KinematicsObject>(b);
+    char text[64];
+    std::snprintf(text, sizeof text, "%zu triangles", b.mesh ? b.mesh->triangles.size() : std::size_t(0));
+    return text;
+}
+
 std::string quat(const Quat& q) {
     char text[112];
     std::snprintf(text, sizeof text, "(%.4f, %.4f, %.4f, %.4f)", double(q.w), double(q.x), double(q.y), double(q.z));
@@ -106,9 +136,9 @@ void printFinalState(const World& world) {
             row(b, b.shape, b.velocity, b.angularVelocity, "  (kinematic)");
         }
     };
-    std::printf("  %-20s %-7s %-32s %s\n", "name", "shape", "position (m)", "velocity (m/s)");
+    std::printf("  %-20s %-8s %-32s %s\n", "name", "shape", "position (m)", "velocity (m/s)");
     forEachListed([](const GameObject& b, Shape shape, const Vec3& v, const Vec3&, const char* note) {
-        std::printf("  %-20s %-7s %-32s %s%s\n", b.name.c_str(), toString(shape), vec(b.position).c_str(),
+        std::printf("  %-20s %-8s %-32s %s%s\n", b.name.c_str(), toString(shape), vec(b.position).c_str(),
                     vec(v).c_str(), note);
     });
     std::printf("  %-20s %-40s %s\n", "name", "orientation (w, x, y, z)", "angular velocity (rad/s)");
@@ -377,17 +407,14 @@ int checkCommand(const std::string& scenePath) {
     printSceneHeader(scenePath, *scene);
     std::printf("  duration %.6g s\n", double(scene->settings.duration));
     for (const DynamicObject& b : scene->dynamics) {
-        std::printf("  DynamicObject    %-16s %-6s at %s m, v %s m/s, mass %.6g kg, ", b.name.c_str(),
-                    toString(b.shape), vec(b.position).c_str(), vec(b.velocity).c_str(), double(b.mass));
-        if (b.shape == Shape::Sphere) std::printf("radius %.6g m, ", double(b.radius));
-        else std::printf("size %s m, ", vec(b.scale).c_str());
+        std::printf("  DynamicObject    %-16s %-8s at %s m, v %s m/s, mass %.6g kg, %s, ", b.name.c_str(),
+                    toString(b.shape), vec(b.position).c_str(), vec(b.velocity).c_str(), double(b.mass),
+                    shapeSize(b).c_str());
         std::printf("elasticity %.3g, friction %.3g\n", double(b.elasticity), double(b.friction));
     }
     for (const KinematicsObject& b : scene->kinematics) {
-        std::printf("  KinematicsObject %-16s %-6s at %s m, v %s m/s, ", b.name.c_str(), toString(b.shape),
-                    vec(b.position).c_str(), vec(b.velocity).c_str());
-        if (b.shape == Shape::Sphere) std::printf("radius %.6g m\n", double(b.radius));
-        else std::printf("size %s m\n", vec(b.scale).c_str());
+        std::printf("  KinematicsObject %-16s %-8s at %s m, v %s m/s, %s\n", b.name.c_str(), toString(b.shape),
+                    vec(b.position).c_str(), vec(b.velocity).c_str(), shapeSize(b).c_str());
     }
     for (const CollisionPlane& p : scene->planes) {
         std::printf("  CollisionPlane   %-16s through %s m, normal %s\n", p.name.c_str(), vec(p.position).c_str(),

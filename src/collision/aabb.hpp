@@ -1,8 +1,13 @@
 /// @file aabb.hpp
 /// @brief Axis-aligned bounding boxes: what every broadphase compares.
+///
+/// Every shape's box is exact (the smallest box with faces along x, y and z
+/// that holds it), except a triangle mesh's, which is its hierarchy's root
+/// box turned into the world (meshAabb() says why).
 #pragma once
 
 #include "collision/contact.hpp"
+#include "collision/narrowphase.hpp"
 #include "objects/game_object.hpp"
 
 namespace stepwise {
@@ -52,6 +57,67 @@ Aabb sphereAabb(const Vec3& centre, Real radius);
 
 /// @brief Bounding box of an oriented box: centre ± |R|·halfExtents (Ericson, RTCD §4.2.6).
 Aabb boxAabb(const Vec3& centre, const Quat& orientation, const Vec3& halfExtents);
+
+/// @brief Bounding box of a capsule: its segment's box grown by the radius on every side.
+///
+/// The capsule is every point within r of the segment c ± h·a (a: the body's
+/// y axis in the world), so along world axis i it reaches h·|a_i| + r either
+/// side of its centre.
+/// @param halfHeight half the segment's length, m
+Aabb capsuleAabb(const Vec3& centre, const Quat& orientation, Real radius, Real halfHeight);
+
+/// @brief Bounding box of a solid cylinder of @p radius and length 2·@p halfHeight along the body's y axis.
+///
+/// The cylinder is the segment c ± h·a swept by a disc of radius r at right
+/// angles to a. Along world axis e_i the segment reaches h·|a_i| and the disc
+/// r·|e_i × a| = r·√(1 − a_i²) (the disc's widest extent along e_i is r times
+/// the part of e_i that lies in the disc's plane), so the half-width is
+/// \f[ h\,|a_i| + r\sqrt{1 - a_i^2}. \f]
+Aabb cylinderAabb(const Vec3& centre, const Quat& orientation, Real radius, Real halfHeight);
+
+/// @brief Bounding box of a convex hull: the lowest and highest of its vertices turned into the world.
+///
+/// A convex polyhedron's extreme point along any direction is one of its
+/// vertices, so the box of the turned vertices is exact. It costs one
+/// rotation per vertex, a few dozen for the hulls students build.
+Aabb hullAabb(const Vec3& centre, const Quat& orientation, const ConvexHull& hull);
+
+/// @brief Bounding box of a triangle mesh: its hierarchy's root box, turned as boxAabb() turns a box.
+///
+/// Exact while the mesh is not rotated (level geometry usually is not) and
+/// at most √3 times as wide when it is, for a cost that does not grow with
+/// the number of triangles: a terrain of 100 000 vertices is bounded in
+/// the time of one box. Without a hierarchy (no nodes) the vertices are
+/// turned one by one, as hullAabb() does.
+Aabb meshAabb(const Vec3& centre, const Quat& orientation, const TriangleMesh& mesh);
+
+/// @brief Bounding box of one geometry (geometryOf(), geometryOfPart()).
+///
+/// A plane has no bounds: its box is infinite on every side. A compound
+/// body's geometry carries no parts (type Count), so it too gets the
+/// infinite box, which overlaps everything and lets the exact test decide;
+/// shapeAabb() of the body is the compound's real box.
+Aabb geometryAabb(const Geometry& shape);
+
+/// @brief The exact bounding box of a dynamic body's shape where it is now (no sweep, no margin).
+///
+/// A compound's box is the union of its parts' boxes (geometryOfPart()).
+Aabb shapeAabb(const DynamicObject& body);
+/// @copydoc shapeAabb(const DynamicObject&)
+Aabb shapeAabb(const KinematicsObject& body);
+/// @brief The box shapeAabb() would give were @p body's centre at @p position (its orientation kept).
+Aabb shapeAabb(const DynamicObject& body, const Vec3& position);
+
+/// @brief Distance from a body's position to the farthest point of its shape, m.
+///
+/// What a turn at angular speed ω can move a surface point by, at most
+/// ω·reach (v_P = v + ω × r). Sphere r; box |half extents|; capsule h + r;
+/// cylinder √(h² + r²) (h: half its length); hull and compound their
+/// `boundingRadius`. A mesh's is its root box's farthest corner: an upper
+/// bound, found in constant time.
+Real shapeReach(const DynamicObject& body);
+/// @copydoc shapeReach(const DynamicObject&)
+Real shapeReach(const KinematicsObject& body);
 
 /// @brief The box every broadphase tests for a dynamic body: its bounding box
 /// grown by kSpeculativeDistance on every side.

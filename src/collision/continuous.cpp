@@ -131,10 +131,45 @@ void recordStartPositions(const BodySet& bodies, SweepWorkspace& workspace) {
     for (std::size_t i = 0; i < bodies.dynamics.size(); ++i) workspace.startPositions[i] = bodies.dynamics[i].position;
 }
 
+namespace {
+
+/// The inner radius of one convex shape: the largest ball about its centre that it holds.
+/// A hull's is its nearest face plane's distance from the centre (HullFace::offset), which
+/// lies inside the hull; an offset below 0 would mean the centre is outside, and counts as 0.
+Real convexInnerRadius(Shape shape, Real radius, Real height, const Vec3& halfExtents, const ConvexHull* hull) {
+    switch (shape) {
+        case Shape::Sphere:
+        case Shape::Capsule: return radius;  // every point of the segment has a ball of r around it
+        case Shape::Cylinder: return glm::min(radius, Real(0.5) * height);  // the centre's distance to side or cap
+        case Shape::Box: return glm::min(halfExtents.x, glm::min(halfExtents.y, halfExtents.z));
+        case Shape::Hull: {
+            if (hull == nullptr || hull->faces.empty()) return Real(0);
+            Real nearest = std::numeric_limits<Real>::infinity();
+            for (const HullFace& face : hull->faces) nearest = glm::min(nearest, face.offset);
+            return glm::max(Real(0), nearest);
+        }
+        case Shape::Compound:
+        case Shape::Mesh: break;
+    }
+    return Real(0);
+}
+
+}  // namespace
+
 Real innerRadius(const DynamicObject& body) {
-    if (body.shape == Shape::Sphere) return body.radius;
-    const Vec3 e = body.halfExtents();
-    return glm::min(e.x, glm::min(e.y, e.z));
+    if (body.shape != Shape::Compound) {
+        return convexInnerRadius(body.shape, body.radius, body.height, body.halfExtents(), body.hull.get());
+    }
+    // A compound: each part can pass through a thin wall on its own, so the thinnest part
+    // sets how far the body may move before it counts as fast (a choice on the safe side:
+    // more bodies are checked, none is missed).
+    if (!body.compound || body.compound->parts.empty()) return Real(0);
+    Real thinnest = std::numeric_limits<Real>::infinity();
+    for (const CompoundPart& part : body.compound->parts) {
+        const Real inner = convexInnerRadius(part.shape, part.radius, part.height, Real(0.5) * part.scale, part.hull.get());
+        thinnest = glm::min(thinnest, inner);
+    }
+    return thinnest;
 }
 
 namespace {

@@ -89,7 +89,11 @@ namespace stepwise {
 /// 0.07 m a step) is not fast, and its trajectory is untouched.
 inline constexpr Real kFastMotionFraction = Real(1);
 
-/// @brief A body's inner radius, m: a sphere's radius, a box's smallest half edge.
+/// @brief A body's inner radius, m: the largest ball about its centre that it holds.
+///
+/// A sphere's or capsule's radius, a box's smallest half edge, a cylinder's
+/// min(r, h/2) (h its full length), a hull's smallest face offset; for a
+/// compound the smallest of its parts' (the thinnest part can tunnel first).
 Real innerRadius(const DynamicObject& body);
 
 

@@ -13,10 +13,7 @@
 
 namespace stepwise {
 
-Aabb geometryBounds(const Geometry& shape) {
-    return shape.type == GeometryType::Sphere ? sphereAabb(shape.centre, shape.radius)
-                                              : boxAabb(shape.centre, shape.orientation, shape.halfExtents);
-}
+Aabb geometryBounds(const Geometry& shape) { return geometryAabb(shape); }
 
 Real candidateSlack(const Aabb& box) {
     const Vec3 magnitude = glm::max(glm::abs(box.min), glm::abs(box.max));
@@ -41,18 +38,17 @@ void SweptBoxIndex::build(const BodySet& bodies, std::span<const Vec3> startPosi
     const std::size_t count = dynamicCount + bodies.kinematics.size();
     boxes_.resize(count);  // allocates only when bodies are added
     for (std::size_t i = 0; i < dynamicCount; ++i) {
-        const Geometry now = geometryOf(bodies.dynamics[i]);
-        Aabb box = geometryBounds(now);
+        // The body's own box (a compound's holds all its parts, which its Geometry does not carry)
+        const DynamicObject& body = bodies.dynamics[i];
+        Aabb box = shapeAabb(body);
         if (fast[i]) {
             // It may be put back anywhere on start + t·Δ before another fast body asks.
-            Geometry atStart = now;
-            atStart.centre = startPositions[i];
-            box = merged(geometryBounds(atStart), box);
+            box = merged(shapeAabb(body, startPositions[i]), box);
         }
         boxes_[i] = grown(box);
     }
     for (std::size_t k = 0; k < bodies.kinematics.size(); ++k) {
-        boxes_[dynamicCount + k] = grown(geometryBounds(geometryOf(bodies.kinematics[k])));
+        boxes_[dynamicCount + k] = grown(shapeAabb(bodies.kinematics[k]));
     }
 
     // The axis along which the centres spread most: the variance Σc²/n − (Σc/n)² per axis.

@@ -76,7 +76,7 @@ inline constexpr Real kCandidateOversizeRatio = Real(4);
 /// roundings from the segment's box, never 16 ulps away.
 inline constexpr Real kCandidateRoundingUlps = Real(16);
 
-/// @brief The bounding box of a sphere or box shape where it is now.
+/// @brief The bounding box of a shape where it is now (geometryAabb(): infinite for a plane or a compound's Geometry).
 Aabb geometryBounds(const Geometry& shape);
 
 /// @brief How much a candidate box is grown on every side, m: the touching tolerance,

@@ -122,14 +122,8 @@ inline OrbitCamera cameraForScene(const World& world) {
         all.max = glm::max(all.max, box.max);
         any = true;
     };
-    for (const DynamicObject& b : world.dynamics()) {
-        add(b.shape == Shape::Sphere ? sphereAabb(b.position, b.radius)
-                                     : boxAabb(b.position, b.orientation, b.halfExtents()));
-    }
-    for (const KinematicsObject& b : world.kinematics()) {
-        add(b.shape == Shape::Sphere ? sphereAabb(b.position, b.radius)
-                                     : boxAabb(b.position, b.orientation, b.halfExtents()));
-    }
+    for (const DynamicObject& b : world.dynamics()) add(shapeAabb(b));
+    for (const KinematicsObject& b : world.kinematics()) add(shapeAabb(b));
     if (!any) return camera;
     const Real radius = std::max(Real(1), glm::length(all.max - all.min) / 2);
     camera.target = (all.min + all.max) / Real(2);

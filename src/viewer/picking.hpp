@@ -2,8 +2,8 @@
 /// @brief Which body is under the mouse: the ray through the cursor's pixel, cast with World::raycast.
 ///
 /// The viewer has no ray tests of its own: it asks the engine's
-/// World::raycast (src/world/world_raycast.cpp; the sphere, oriented-box and
-/// plane tests of src/collision/raycast.cpp, Ericson, *Real-Time Collision
+/// World::raycast (src/world/world_raycast.cpp; the ray tests of
+/// src/collision/raycast.cpp for every shape, Ericson, *Real-Time Collision
 /// Detection*, §5.3), which tests every dynamic body, kinematic body and
 /// plane and returns the nearest hit with its point and normal. Planes take
 /// part, so a body below the floor cannot be picked through it; the viewer

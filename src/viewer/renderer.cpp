@@ -5,6 +5,7 @@
 #include <GL/freeglut.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace stepwise::viewer {
@@ -37,27 +38,174 @@ void pushPose(const Vec3& position, const Quat& orientation) {
     }
 }
 
-void solidShape(Shape shape, Real radius, const Vec3& scale) {
-    if (shape == Shape::Sphere) {
-        glutSolidSphere(double(radius), 32, 20);
+/// Slices around, and stacks along, a solid sphere or round side: smooth at any zoom the viewer allows.
+constexpr int kSolidSlices = 32;
+constexpr int kSolidStacks = 20;
+/// Slices and stacks of a sphere's outline: a few meridians and parallels, enough to see it turn.
+constexpr int kWireSlices = 8;
+constexpr int kWireStacks = 6;
+
+/// What the drawing needs of a body's (or a compound part's) shape, in its own frame.
+struct ShapeLook {
+    Shape shape = Shape::Sphere;               ///< Which of the fields below are used.
+    Real radius = 0;                           ///< Sphere, capsule, cylinder, m.
+    Real height = 0;                           ///< Capsule segment, cylinder length, along y, m.
+    Vec3 scale{1, 1, 1};                       ///< Box edge lengths, m.
+    const ConvexHull* hull = nullptr;          ///< Shape::Hull.
+    const CompoundShape* compound = nullptr;   ///< Shape::Compound.
+    const TriangleMesh* mesh = nullptr;        ///< Shape::Mesh.
+};
+
+ShapeLook lookOf(const DynamicObject& b) {
+    return {b.shape, b.radius, b.height, b.scale, b.hull.get(), b.compound.get(), nullptr};
+}
+
+ShapeLook lookOf(const KinematicsObject& b) {
+    return {b.shape, b.radius, b.height, b.scale, b.hull.get(), b.compound.get(), b.mesh.get()};
+}
+
+ShapeLook lookOf(const CompoundPart& part) {
+    return {part.shape, part.radius, part.height, part.scale, part.hull.get(), nullptr, nullptr};
+}
+
+void normal(const Vec3& n) { glNormal3d(double(n.x), double(n.y), double(n.z)); }
+
+/// A cylinder of @p radius and full @p length along y, centred on the origin. GLUT's
+/// cylinders stand on z from 0 to their height: a turn of −90° about x takes z to y.
+void cylinderAlongY(Real radius, Real length, bool solid, int slices) {
+    glPushMatrix();
+    glRotated(-90.0, 1.0, 0.0, 0.0);
+    glTranslated(0.0, 0.0, -0.5 * double(length));
+    if (solid) {
+        glutSolidCylinder(double(radius), double(length), slices, 1);
     } else {
-        glPushMatrix();
-        glScaled(double(scale.x), double(scale.y), double(scale.z));
-        glutSolidCube(1.0);
-        glPopMatrix();
+        glutWireCylinder(double(radius), double(length), slices, 1);
+    }
+    glPopMatrix();
+}
+
+/// A sphere of @p radius at height @p y on the y axis (a capsule's end).
+void sphereAt(Real y, Real radius, bool solid) {
+    glPushMatrix();
+    glTranslated(0.0, double(y), 0.0);
+    if (solid) {
+        glutSolidSphere(double(radius), kSolidSlices, kSolidStacks);
+    } else {
+        glutWireSphere(double(radius), kWireSlices, kWireStacks);
+    }
+    glPopMatrix();
+}
+
+/// A hull's faces, flat shaded: one normal per face, its loop counter-clockwise seen from outside.
+void hullFaces(const ConvexHull& hull) {
+    for (const HullFace& face : hull.faces) {
+        glBegin(GL_POLYGON);
+        normal(face.normal);
+        for (std::uint32_t k = face.firstIndex; k < face.firstIndex + face.indexCount && k < hull.faceIndices.size(); ++k) {
+            const std::uint32_t v = hull.faceIndices[k];
+            if (v < hull.vertices.size()) vertex(hull.vertices[v]);
+        }
+        glEnd();
     }
 }
 
-/// The shape's outline: a box's edges, a sphere's meridians and parallels.
-void wireShape(Shape shape, Real radius, const Vec3& scale, float grow = 1.002f) {
-    if (shape == Shape::Sphere) {
-        glutWireSphere(double(radius) * double(grow), 8, 6);
-    } else {
-        glPushMatrix();
-        glScaled(double(scale.x) * double(grow), double(scale.y) * double(grow), double(scale.z) * double(grow));
-        glutWireCube(1.0);
-        glPopMatrix();
+/// A hull's edges (each once, ConvexHull::edges).
+void hullEdges(const ConvexHull& hull) {
+    glBegin(GL_LINES);
+    for (const std::array<std::uint32_t, 2>& e : hull.edges) {
+        if (e[0] >= hull.vertices.size() || e[1] >= hull.vertices.size()) continue;
+        vertex(hull.vertices[e[0]]);
+        vertex(hull.vertices[e[1]]);
     }
+    glEnd();
+}
+
+/// A mesh's triangles, flat shaded (each its own normal), or their outlines.
+void meshTriangles(const TriangleMesh& mesh, bool solid) {
+    const std::size_t n = mesh.vertices.size();
+    for (const std::array<std::uint32_t, 3>& t : mesh.triangles) {
+        if (t[0] >= n || t[1] >= n || t[2] >= n) continue;
+        const Vec3& a = mesh.vertices[t[0]];
+        const Vec3& b = mesh.vertices[t[1]];
+        const Vec3& c = mesh.vertices[t[2]];
+        glBegin(solid ? GL_TRIANGLES : GL_LINE_LOOP);
+        const Vec3 across = glm::cross(b - a, c - a);
+        const Real length = glm::length(across);
+        if (solid && length > 0) normal(across / length);
+        vertex(a);
+        vertex(b);
+        vertex(c);
+        glEnd();
+    }
+}
+
+void solidShape(const ShapeLook& look) {
+    const Real halfHeight = Real(0.5) * look.height;
+    switch (look.shape) {
+        case Shape::Sphere: glutSolidSphere(double(look.radius), kSolidSlices, kSolidStacks); break;
+        case Shape::Box:
+            glPushMatrix();
+            glScaled(double(look.scale.x), double(look.scale.y), double(look.scale.z));
+            glutSolidCube(1.0);
+            glPopMatrix();
+            break;
+        case Shape::Capsule:  // a cylinder and two hemispheres (whole spheres: the halves inside are hidden)
+            cylinderAlongY(look.radius, look.height, true, kSolidSlices);
+            sphereAt(-halfHeight, look.radius, true);
+            sphereAt(halfHeight, look.radius, true);
+            break;
+        case Shape::Cylinder: cylinderAlongY(look.radius, look.height, true, kSolidSlices); break;
+        case Shape::Hull:
+            if (look.hull) hullFaces(*look.hull);
+            break;
+        case Shape::Compound:
+            if (!look.compound) break;
+            for (const CompoundPart& part : look.compound->parts) {
+                pushPose(part.position, part.orientation);
+                solidShape(lookOf(part));
+                glPopMatrix();
+            }
+            break;
+        case Shape::Mesh:
+            if (look.mesh) meshTriangles(*look.mesh, true);
+            break;
+    }
+}
+
+/// The shape's outline, grown by the factor @p grow about its centre: a box's or hull's edges,
+/// a sphere's meridians and parallels, a capsule's or cylinder's rings, a mesh's triangles.
+void wireShape(const ShapeLook& look, float grow = 1.002f) {
+    glPushMatrix();
+    glScaled(double(grow), double(grow), double(grow));
+    const Real halfHeight = Real(0.5) * look.height;
+    switch (look.shape) {
+        case Shape::Sphere: glutWireSphere(double(look.radius), kWireSlices, kWireStacks); break;
+        case Shape::Box:
+            glScaled(double(look.scale.x), double(look.scale.y), double(look.scale.z));
+            glutWireCube(1.0);
+            break;
+        case Shape::Capsule:
+            cylinderAlongY(look.radius, look.height, false, kWireSlices);
+            sphereAt(-halfHeight, look.radius, false);
+            sphereAt(halfHeight, look.radius, false);
+            break;
+        case Shape::Cylinder: cylinderAlongY(look.radius, look.height, false, kWireSlices); break;
+        case Shape::Hull:
+            if (look.hull) hullEdges(*look.hull);
+            break;
+        case Shape::Compound:
+            if (!look.compound) break;
+            for (const CompoundPart& part : look.compound->parts) {
+                pushPose(part.position, part.orientation);
+                wireShape(lookOf(part), 1.0f);  // grown once already, with the whole body
+                glPopMatrix();
+            }
+            break;
+        case Shape::Mesh:
+            if (look.mesh) meshTriangles(*look.mesh, false);
+            break;
+    }
+    glPopMatrix();
 }
 
 /// Diagonal stripes (a 32×32 polygon stipple, one bit per pixel) that mark kinematic bodies.
@@ -85,26 +233,25 @@ Color islandColor(const World& world, const DynamicObject& b, std::uint32_t body
     return kPalette[island % (sizeof kPalette / sizeof kPalette[0])];
 }
 
-void drawBody(Shape shape, Real radius, const Vec3& scale, const Vec3& position, const Quat& orientation,
-              const Color& c, bool kinematic) {
+void drawBody(const ShapeLook& look, const Vec3& position, const Quat& orientation, const Color& c, bool kinematic) {
     pushPose(position, orientation);
     glEnable(GL_LIGHTING);
     color(c);
-    solidShape(shape, radius, scale);
+    solidShape(look);
     if (kinematic) {
         // Darker stripes drawn over the same surface.
         glDepthFunc(GL_LEQUAL);
         glEnable(GL_POLYGON_STIPPLE);
         glPolygonStipple(stripes());
         color(c, 0.55f);
-        solidShape(shape, radius, scale);
+        solidShape(look);
         glDisable(GL_POLYGON_STIPPLE);
         glDepthFunc(GL_LESS);
     }
     glDisable(GL_LIGHTING);
     color(c, 0.45f);
     glLineWidth(1.0f);
-    wireShape(shape, radius, scale);
+    wireShape(look);
     glPopMatrix();
 }
 
@@ -171,8 +318,7 @@ void drawAabb(const Aabb& box) {
 
 template <class Body>
 Aabb boundsOf(const Body& b) {
-    return b.shape == Shape::Sphere ? sphereAabb(b.position, b.radius)
-                                    : boxAabb(b.position, b.orientation, b.halfExtents());
+    return shapeAabb(b);  // every shape's exact box (src/collision/aabb.hpp)
 }
 
 Vec3 centreOf(const SceneView& view, const BodyRef& ref) {
@@ -341,11 +487,10 @@ void drawScene(const Simulation& simulation, const OrbitCamera& camera, int widt
     for (const CollisionPlane& plane : world.planes()) drawPlane(plane, camera);
     for (std::uint32_t i = 0; i < view.dynamics.size(); ++i) {
         const DynamicObject& b = view.dynamics[i];
-        drawBody(b.shape, b.radius, b.scale, b.position, b.orientation,
-                 options.islands ? islandColor(world, b, i) : b.color, false);
+        drawBody(lookOf(b), b.position, b.orientation, options.islands ? islandColor(world, b, i) : b.color, false);
     }
     for (const KinematicsObject& b : view.kinematics) {
-        drawBody(b.shape, b.radius, b.scale, b.position, b.orientation, b.color, true);
+        drawBody(lookOf(b), b.position, b.orientation, b.color, true);
     }
 
     glDisable(GL_LIGHTING);
@@ -356,11 +501,11 @@ void drawScene(const Simulation& simulation, const OrbitCamera& camera, int widt
         if (options.hovered->kind == BodyKind::Dynamic) {
             const DynamicObject& b = view.dynamics[options.hovered->index];
             pushPose(b.position, b.orientation);
-            wireShape(b.shape, b.radius, b.scale, 1.03f);
+            wireShape(lookOf(b), 1.03f);
         } else {
             const KinematicsObject& b = view.kinematics[options.hovered->index];
             pushPose(b.position, b.orientation);
-            wireShape(b.shape, b.radius, b.scale, 1.03f);
+            wireShape(lookOf(b), 1.03f);
         }
         glPopMatrix();
         glLineWidth(1.0f);
@@ -375,7 +520,7 @@ void drawScene(const Simulation& simulation, const OrbitCamera& camera, int widt
             const DynamicObject& b = view.dynamics[i];
             const BodySnapshot& start = simulation.walkthrough().bodyAtStart(i);
             pushPose(start.position, start.orientation);
-            wireShape(b.shape, b.radius, b.scale, 1.0f);
+            wireShape(lookOf(b), 1.0f);
             glPopMatrix();
         }
     }

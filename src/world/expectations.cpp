@@ -19,7 +19,8 @@
 ///
 /// The fastest point of a rigid body moving with (v, ω) is at most
 /// |v| + |ω|·r_max from the centre, r_max being the distance of its farthest
-/// point (a sphere's radius, a box's half diagonal): v_P = v + ω × r, so
+/// point (a sphere's radius, a box's half diagonal, shapeReach() for every
+/// shape): v_P = v + ω × r, so
 /// |v_P| ≤ |v| + |ω||r| (triangle inequality).
 ///
 /// An apex is where the body stops rising: its velocity along û changes
@@ -35,6 +36,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "collision/aabb.hpp"
 #include "world/measurements.hpp"
 #include "world/world.hpp"
 
@@ -55,10 +57,8 @@ bool sameName(const std::string& a, const std::string& b) {
            });
 }
 
-/// Distance of the body's farthest point from its centre, m.
-Real farthestPointDistance(const DynamicObject& body) {
-    return body.shape == Shape::Sphere ? body.radius : glm::length(body.halfExtents());
-}
+/// Distance of the body's farthest point from its centre, m (src/collision/aabb.hpp).
+Real farthestPointDistance(const DynamicObject& body) { return shapeReach(body); }
 
 /// Did one sample pass, and how bad is it? Larger badness is further from
 /// passing; a window's verdict is given by its worst sample.

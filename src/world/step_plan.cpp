@@ -24,22 +24,55 @@ PlanDecision collisionsOf(const PlanInputs& in) {
     return run("runs: at least one dynamic body and something it can hit");
 }
 
-/// Box–box needs a dynamic box and a second box (dynamic or kinematic).
-PlanDecision boxBoxOf(const PlanInputs& in, bool clipping) {
-    std::size_t dynamicBoxes = 0;
-    for (const DynamicObject& body : in.dynamics) dynamicBoxes += body.shape == Shape::Box ? 1 : 0;
-    std::size_t kinematicBoxes = 0;
-    for (const KinematicsObject& body : in.kinematics) kinematicBoxes += body.shape == Shape::Box ? 1 : 0;
-    if (dynamicBoxes == 0 && kinematicBoxes == 0) {
-        return clipping ? skip("skipped: only spheres (and planes), whose contacts are single points: nothing to clip")
-                        : skip("skipped: no boxes in the scene, so no SAT");
+/// Bodies of @p shape among the dynamic and among the kinematic ones.
+struct ShapeCount {
+    std::size_t dynamic = 0;    ///< Dynamic bodies that match.
+    std::size_t kinematic = 0;  ///< Kinematic bodies that match.
+    /// Can two matching bodies meet (a contact needs a dynamic body on one side)?
+    bool pairPossible() const { return dynamic > 0 && dynamic + kinematic >= 2; }
+};
+
+template <class Matches>
+ShapeCount countShapes(const PlanInputs& in, Matches matches) {
+    ShapeCount count;
+    for (const DynamicObject& body : in.dynamics) count.dynamic += matches(body.shape) ? 1 : 0;
+    for (const KinematicsObject& body : in.kinematics) count.kinematic += matches(body.shape) ? 1 : 0;
+    return count;
+}
+
+/// Box–box SAT needs a dynamic box, a second box, and Narrowphase=Auto (GjkEpa and Mpr take box pairs too).
+PlanDecision boxBoxSatOf(const PlanInputs& in) {
+    const ShapeCount boxes = countShapes(in, [](Shape s) { return s == Shape::Box; });
+    const ShapeCount unround = countShapes(in, [](Shape s) { return s != Shape::Sphere; });
+    if (boxes.dynamic == 0 && boxes.kinematic == 0) {
+        return unround.dynamic + unround.kinematic == 0
+                   ? skip("skipped: no boxes in the scene, so no SAT")
+                   : skip("skipped: no boxes in the scene; capsules, cylinders, hulls and meshes go through GJK/EPA or MPR");
     }
-    if (dynamicBoxes == 0 || dynamicBoxes + kinematicBoxes < 2) {
-        return clipping ? skip("skipped: no two boxes can meet, so no face is clipped against another")
-                        : skip("skipped: no two boxes can meet (box-box needs a dynamic box and a second box)");
+    if (!boxes.pairPossible()) {
+        return skip("skipped: no two boxes can meet (box-box needs a dynamic box and a second box)");
     }
-    return clipping ? run("runs: touching boxes clip a face against the other box to find up to 8 points")
-                    : run("runs: two boxes can meet, and the narrowphase tests their 15 axes");
+    if (in.settings.narrowphase == NarrowphaseKind::GjkEpa) {
+        return skip("skipped: Narrowphase=GjkEpa, so box pairs go through GJK and EPA instead");
+    }
+    if (in.settings.narrowphase == NarrowphaseKind::Mpr) return skip("skipped: Narrowphase=Mpr, so box pairs go through MPR instead");
+    return run("runs: two boxes can meet, and the narrowphase tests their 15 axes");
+}
+
+/// Clipping needs two bodies with flat faces or straight edges (anything but a sphere) that can meet.
+PlanDecision clippingOf(const PlanInputs& in) {
+    const ShapeCount boxes = countShapes(in, [](Shape s) { return s == Shape::Box; });
+    const ShapeCount unround = countShapes(in, [](Shape s) { return s != Shape::Sphere; });
+    if (unround.dynamic == 0 && unround.kinematic == 0) {
+        return skip("skipped: only spheres (and planes), whose contacts are single points: nothing to clip");
+    }
+    if (!unround.pairPossible()) {
+        return skip("skipped: no two bodies with faces or edges can meet, so no face is clipped against another");
+    }
+    if (boxes.dynamic == unround.dynamic && boxes.kinematic == unround.kinematic) {
+        return run("runs: touching boxes clip a face against the other box to find up to 8 points");
+    }
+    return run("runs: touching faces and edges (boxes, hulls, cylinders, capsules, meshes) are clipped for their points");
 }
 
 /// Can μ = μ_A·μ_B be non-zero for some pair that can touch?
@@ -59,8 +92,13 @@ bool anyFriction(const PlanInputs& in) {
 
 /// Rotation is impossible when every force on every body acts through its centre.
 PlanDecision rotationOf(const PlanInputs& in) {
+    // Only a sphere's contact normals all pass through its centre; every other shape
+    // (box, capsule, cylinder, hull, compound) is turned by a push at a corner, edge or side.
     for (const DynamicObject& body : in.dynamics) {
         if (body.shape == Shape::Box) return run("runs: boxes turn when a contact pushes a corner");
+        if (body.shape != Shape::Sphere) {
+            return run("runs: capsules, cylinders, hulls and compounds turn when a contact pushes off their centre");
+        }
     }
     for (const DynamicObject& body : in.dynamics) {
         if (body.angularVelocity != Vec3(0)) return run("runs: a sphere starts spinning (AngularVelocity is set)");
@@ -257,8 +295,8 @@ StepPlan makeStepPlan(const PlanInputs& in) {
     if (!plan.enabled) {
         constexpr PlanDecision kOff = {true, "runs: StepPlan=Off"};
         plan.collisions = kOff;
-        plan.boxBoxSat = boxBoxOf(in, false);  // what the narrowphase does, plan or not
-        plan.manifoldClipping = boxBoxOf(in, true);
+        plan.boxBoxSat = boxBoxSatOf(in);  // what the narrowphase does, plan or not
+        plan.manifoldClipping = clippingOf(in);
         plan.rotation = kOff;
         plan.substepForces = in.settings.solver == SolverKind::SequentialImpulse ? kOff : substepForcesOf(in);
         if (in.settings.solver == SolverKind::SequentialImpulse) plan.jointSolver = kOff;
@@ -267,8 +305,8 @@ StepPlan makeStepPlan(const PlanInputs& in) {
         plan.packedSubsteps = skip("off: StepPlan=Off takes the plain path");
     } else {
         plan.collisions = collisionsOf(in);
-        plan.boxBoxSat = boxBoxOf(in, false);
-        plan.manifoldClipping = boxBoxOf(in, true);
+        plan.boxBoxSat = boxBoxSatOf(in);
+        plan.manifoldClipping = clippingOf(in);
         plan.rotation = rotationOf(in);
         plan.substepForces = substepForcesOf(in);
         plan.idleSkip = idleSkipOf(in);

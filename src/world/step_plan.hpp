@@ -111,11 +111,15 @@ struct PlanInputs {
 ///   restitution) run when collisions are possible or there are joints.
 ///   With neither, the solve changes no velocity, and driftByVelocityChange()
 ///   leaves a body whose velocity did not change where the integrator put it.
-/// - **Box–box SAT and manifold clipping** need two boxes, one of them
-///   dynamic. The narrowphase picks the routine by the shape pair, so without
-///   two boxes it never reaches collideBoxBox(); the plan says so, it need not enforce it.
+/// - **Box–box SAT** needs two boxes, one of them dynamic, and
+///   `Narrowphase=Auto` (GjkEpa and Mpr take box pairs too). **Manifold
+///   clipping** needs two bodies other than spheres (boxes, capsules,
+///   cylinders, hulls, compounds, meshes), one of them dynamic. The
+///   narrowphase picks the routine by the shape pair, so without them it
+///   never reaches collideBoxBox() or a clip; the plan says so, it need not enforce it.
 /// - **Rotation** is impossible when every dynamic body is a sphere with no
-///   angular velocity, no contact has friction (μ = μ_A·μ_B = 0 for every
+///   angular velocity (any other shape turns when a contact pushes it off
+///   its centre), no contact has friction (μ = μ_A·μ_B = 0 for every
 ///   pair that can touch), no spring is hooked off a body's centre and there
 ///   are no joints: every force then acts through a sphere's centre, so
 ///   L = 0 for ever. The integrators then skip a sphere's angular update

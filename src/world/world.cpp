@@ -8,6 +8,7 @@
 #include <functional>
 #include <stdexcept>
 
+#include "collision/aabb.hpp"
 #include "collision/narrowphase.hpp"
 #include "core/errors.hpp"
 #include "core/limits.hpp"
@@ -240,7 +241,7 @@ void World::measureSweeps(Real h) {
         fastest = std::max(fastest, body.sweep);
     }
     for (KinematicsObject& body : kinematics_) {
-        const Real reach = body.shape == Shape::Sphere ? body.radius : glm::length(body.halfExtents());
+        const Real reach = shapeReach(body);  // the farthest point's distance from the centre, any shape
         body.sweep = (glm::length(body.velocity) + glm::length(body.angularVelocity) * reach) * h;
         fastest = std::max(fastest, body.sweep);
     }

@@ -3,9 +3,32 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "collision/narrowphase.hpp"
+#include "collision/raycast.hpp"
 #include "world/world.hpp"
 
 namespace stepwise {
+
+namespace {
+
+/// The ray against one body's shape (src/collision/raycast.hpp); a compound's
+/// hit is the nearest of its parts' (a ray starting inside any part hits at 0).
+template <class Body>
+std::optional<RayShapeHit> rayAgainstBody(const Vec3& origin, const Vec3& d, Real maxDistance, const Body& body) {
+    const Geometry shape = geometryOf(body);
+    if (body.shape != Shape::Compound) return intersectRayGeometry(origin, d, maxDistance, shape);
+    std::optional<RayShapeHit> nearest;
+    if (!body.compound) return nearest;
+    const std::vector<CompoundPart>& parts = body.compound->parts;
+    for (std::uint32_t i = 0; i < parts.size(); ++i) {
+        const Real reach = nearest ? nearest->distance : maxDistance;
+        const std::optional<RayShapeHit> hit = intersectRayGeometry(origin, d, reach, geometryOfPart(shape, parts[i], i));
+        if (hit && (!nearest || hit->distance < nearest->distance)) nearest = hit;
+    }
+    return nearest;
+}
+
+}  // namespace
 
 /// Every body is tested (O(n)): a raycast is a query made now and then, not
 /// a stage of every step. The nearest hit wins; an exact tie goes to the body
@@ -25,11 +48,7 @@ std::optional<RayHit> World::raycast(const Vec3& origin, const Vec3& direction, 
         best = RayHit{{kind, static_cast<std::uint32_t>(index)}, origin + hit->distance * d, hit->normal,
                       hit->distance};
     };
-    auto shapeHit = [&](const auto& body) {
-        return body.shape == Shape::Sphere
-                   ? intersectRaySphere(origin, d, maxDistance, body.position, body.radius)
-                   : intersectRayBox(origin, d, maxDistance, body.position, body.orientation, body.halfExtents());
-    };
+    auto shapeHit = [&](const auto& body) { return rayAgainstBody(origin, d, maxDistance, body); };
     for (std::size_t i = 0; i < dynamics_.size(); ++i) consider(BodyKind::Dynamic, i, shapeHit(dynamics_[i]));
     for (std::size_t i = 0; i < kinematics_.size(); ++i) consider(BodyKind::Kinematic, i, shapeHit(kinematics_[i]));
     for (std::size_t i = 0; i < planes_.size(); ++i) {
