@@ -14,9 +14,12 @@ namespace stepwise {
 
 namespace {
 
-/// B's face becomes the reference only when its alignment beats A's by
-/// this much: on a tie (a hull resting flat on a box) A keeps it every step.
-constexpr Real kReferenceBias = Real(1e-3);
+/// The reference face's bias, as SAT's (box_box.cpp section 2): a challenger
+/// (B's face over A's, an edge over the face) must separate more than this
+/// fraction of the incumbent's separation…
+constexpr Real kFaceBiasRelative = Real(0.95);
+/// …plus this fraction of the smaller shape's inner size (innerSize()).
+constexpr Real kFaceBiasAbsolute = Real(0.01);
 
 /// Labels of the reference face's side planes start here; the incident
 /// polygon's own edges are 0 … kMaxFeatureVertices − 1.
@@ -44,7 +47,6 @@ struct Feature {
     int count = 0;                     // 1 point, 2 segment, ≥ 3 face (counter-clockwise seen from outside)
     Vec3 points[kMaxFeatureVertices];  // world, m
     Vec3 normal{0, 0, 0};              // a face's outward unit normal
-    Real alignment = -2;               // a face's normal·direction; −2: not a face
     Real margin = 0;                   // radius around the points (capsule, sphere), m
     std::uint32_t id = 0;              // which face, segment or point of the shape
 };
@@ -82,7 +84,6 @@ void boxFeature(const Geometry& box, const Vec3& direction, Feature& f) {
     }
     f.count = 4;
     f.normal = b.axes[axis] * sign;
-    f.alignment = best;
     f.id = static_cast<std::uint32_t>(faceIndex(axis, sign));
 }
 
@@ -109,7 +110,6 @@ void hullFeature(const Geometry& hullGeometry, const Vec3& direction, Feature& f
         f.points[m] = hullGeometry.centre + rotation * hull.vertices[hull.faceIndices[face.firstIndex + static_cast<std::uint32_t>(m)]];
     }
     f.normal = rotation * face.normal;
-    f.alignment = best;
     f.id = static_cast<std::uint32_t>(bestFace);
 }
 
@@ -132,7 +132,6 @@ void cylinderFeature(const Geometry& cylinder, const Vec3& direction, Feature& f
         }
         f.count = kCylinderCapVertices;
         f.normal = axis * sign;
-        f.alignment = std::abs(along);
         f.id = sign > 0 ? kTopCap : kBottomCap;
         return;
     }
@@ -172,6 +171,30 @@ void featureOf(const Geometry& g, const Vec3& direction, Feature& f) {
     }
     pointFeature(g.centre, 0, f);
     f.margin = g.radius;
+}
+
+/// A length that scales with the shape: half its thinnest extent (box), its
+/// radius (sphere, capsule), the nearer of radius and half length (cylinder),
+/// the nearest face plane (hull), m.
+Real innerSize(const Geometry& g) {
+    switch (g.type) {
+        case GeometryType::Box: return std::min({g.halfExtents.x, g.halfExtents.y, g.halfExtents.z});
+        case GeometryType::Cylinder: return std::min(g.radius, g.halfHeight);
+        case GeometryType::Hull: {
+            Real nearest = std::numeric_limits<Real>::max();
+            if (g.hull != nullptr) {
+                for (const HullFace& face : g.hull->faces) nearest = std::min(nearest, face.offset);
+            }
+            return g.hull != nullptr && !g.hull->faces.empty() ? nearest : Real(0);
+        }
+        default: return g.radius;
+    }
+}
+
+/// Separation of A and B along the unit direction @p n (A → B): −(n·(s_A(n) − s_B(−n))),
+/// the gap between their shadows on that axis (negative: they overlap by that much).
+Real separationAlong(const ConvexShape& a, const ConvexShape& b, const Vec3& n) {
+    return -glm::dot(n, support(a, n) - support(b, -n));
 }
 
 /// One side plane of the reference face: outward unit normal and offset (normal·x ≤ offset inside).
@@ -306,11 +329,23 @@ bool convexManifold(const Geometry& a, const Geometry& b, const Vec3& normal, co
     featureOf(a, normal, fa);
     featureOf(b, -normal, fb);
 
-    // Step 2: the reference face, A's unless B's is clearly better aligned.
-    const bool referenceIsB = fb.count >= 3 && fb.alignment > fa.alignment + kReferenceBias;
+    // Step 2: the reference face. SAT's rule (box_box.cpp section 2) on the two faces most
+    // aligned with the normal: B's face only if it separates the shapes clearly more than A's,
+    // and a face at all only if the algorithm's own direction (an edge against an edge, a rim)
+    // does not separate them clearly more than that face.
+    const bool faceOfA = fa.count >= 3;
+    const bool faceOfB = fb.count >= 3;
+    if (!faceOfA && !faceOfB) return singlePoint(fa, fb, normal, onA, onB, depth, maxGap, out);
+    const ConvexShape sa = convexShapeOf(a);
+    const ConvexShape sb = convexShapeOf(b);
+    const Real tolerance = kFaceBiasAbsolute * std::min(innerSize(a), innerSize(b));
+    const Real separationA = faceOfA ? separationAlong(sa, sb, fa.normal) : std::numeric_limits<Real>::lowest();
+    const Real separationB = faceOfB ? separationAlong(sa, sb, -fb.normal) : std::numeric_limits<Real>::lowest();
+    const bool referenceIsB = !faceOfA || (faceOfB && separationB > kFaceBiasRelative * separationA + tolerance);
+    const Real faceSeparation = referenceIsB ? separationB : separationA;
     const Feature& reference = referenceIsB ? fb : fa;
     const Feature& incident = referenceIsB ? fa : fb;
-    if (reference.count < 3 || reference.alignment < kFaceContactCosine || incident.count < 2) {
+    if (-depth > kFaceBiasRelative * faceSeparation + tolerance || incident.count < 2) {
         return singlePoint(fa, fb, normal, onA, onB, depth, maxGap, out);
     }
 

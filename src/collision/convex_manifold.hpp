@@ -14,12 +14,15 @@
 ///      side when the axis is within 5° of square to it, else the one rim point;
 ///    - capsule: its segment; sphere: its centre (both with their radius).
 /// 2. **Reference and incident.** Of the two features that are faces, the
-///    one whose normal is better aligned with the contact normal is the
-///    *reference* face (A's on a near tie: the choice must not flicker); the
-///    other shape's feature is *incident*. The contact is a face contact
-///    only if the reference face is within 5° of the normal
-///    (kFaceContactCosine); the manifold normal is then the reference
-///    face's normal, exactly as SAT reports it.
+///    one that separates the shapes least along its own normal (the
+///    separation −n·(s_A(n) − s_B(−n)) from the support points) is the
+///    *reference* face, with SAT's bias for A's face (box_box.cpp section 2:
+///    B's face must do better by 5 % of the separation plus 1 % of the
+///    smaller shape's size, so the choice does not flicker); the other
+///    shape's feature is *incident*. The contact is a face contact unless the
+///    algorithm's own normal (an edge across an edge) beats that face by the
+///    same bias; the manifold normal is then the reference face's normal,
+///    as SAT reports it.
 /// 3. **Clip** the incident polygon or segment by the side planes of the
 ///    reference face (clip_polygon.hpp; each side plane is the face edge
 ///    e extruded along the face normal n_ref, with outward normal e × n_ref).
@@ -28,8 +31,8 @@
 ///    more than kMaxManifoldPoints remain, keep the deepest and those that
 ///    span the widest area (as box_box.cpp's keepSpreadPoints).
 ///
-/// Anything else (edge across edge, a sphere, a rim point, a face tilted
-/// more than 5°) is a single point: the middle of the two deepest points.
+/// Anything else (edge across edge, a sphere, a rim point) is a single
+/// point: the middle of the two deepest points.
 ///
 /// **Feature ids.** A clipped point's id packs the reference face, the
 /// incident face and the two clip labels that made it (the incident
@@ -42,10 +45,8 @@
 
 namespace stepwise {
 
-/// A face of the reference shape counts as the contact's face when its
-/// normal is within 5° of the contact normal (cos 5° = 0.9962). The
-/// normals GJK+EPA give a face contact are that face's normal to
-/// round-off; 5° leaves room for MPR's less exact ones.
+/// A cylinder shows its cap as a face when its axis is within 5° of the
+/// normal (cos 5° = 0.9962); tilted more, it stands on one rim point.
 inline constexpr Real kFaceContactCosine = Real(0.9962);
 
 /// A cylinder lies on its side when its axis is within 5° of square to the normal (sin 5°).
