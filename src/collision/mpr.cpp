@@ -59,6 +59,13 @@ MprResult resultOf(const PortalPoint& v1, const PortalPoint& v2, const PortalPoi
     return result;
 }
 
+/// No overlap, found after @p supports support queries.
+MprResult miss(int supports) {
+    MprResult result;
+    result.iterations = supports;
+    return result;
+}
+
 }  // namespace
 
 MprResult mpr(const ConvexShape& a, const ConvexShape& b) {
@@ -70,7 +77,7 @@ MprResult mpr(const ConvexShape& a, const ConvexShape& b) {
     // Step 2: the portal. v₁ towards the origin.
     Vec3 n = -v0.w;
     PortalPoint v1 = s(n);
-    if (glm::dot(v1.w, n) <= 0) return {};  // A − B ends before the origin: a separating plane
+    if (glm::dot(v1.w, n) <= 0) return miss(s.supports);  // A − B ends before the origin: a separating plane
     n = glm::cross(v1.w, v0.w);
     if (glm::dot(n, n) <= kTinySquared) {
         // The origin lies on the segment v₀v₁: it is inside, and the way out is along v₁ − v₀.
@@ -85,7 +92,7 @@ MprResult mpr(const ConvexShape& a, const ConvexShape& b) {
         return result;
     }
     PortalPoint v2 = s(n);
-    if (glm::dot(v2.w, n) <= 0) return {};
+    if (glm::dot(v2.w, n) <= 0) return miss(s.supports);
     // The normal of (v₀, v₁, v₂), turned to the origin's side.
     n = glm::cross(v1.w - v0.w, v2.w - v0.w);
     if (glm::dot(n, v0.w) > 0) {
@@ -94,9 +101,9 @@ MprResult mpr(const ConvexShape& a, const ConvexShape& b) {
     }
     PortalPoint v3{};
     for (;;) {
-        if (s.supports > kMaxMprIterations) return {};
+        if (s.supports > kMaxMprIterations) return miss(s.supports);
         v3 = s(n);
-        if (glm::dot(v3.w, n) <= 0) return {};
+        if (glm::dot(v3.w, n) <= 0) return miss(s.supports);
         // Origin outside the plane (v₀, v₁, v₃)? Then v₂ is the wrong vertex: replace it.
         if (glm::dot(glm::cross(v1.w, v3.w), v0.w) < 0) {
             v2 = v3;
@@ -117,16 +124,16 @@ MprResult mpr(const ConvexShape& a, const ConvexShape& b) {
     for (;;) {
         n = glm::cross(v2.w - v1.w, v3.w - v1.w);
         const Real length2 = glm::dot(n, n);
-        if (length2 <= kTinySquared) return hit ? resultOf(v1, v2, v3, Vec3(0, 1, 0), s.supports) : MprResult{};
+        if (length2 <= kTinySquared) return hit ? resultOf(v1, v2, v3, Vec3(0, 1, 0), s.supports) : miss(s.supports);
         n /= std::sqrt(length2);
         // The origin behind the portal: inside the tetrahedron (v₀, v₁, v₂, v₃).
         if (!hit && glm::dot(n, v1.w) >= 0) hit = true;
         const PortalPoint v4 = s(n);
         const Real beyond = glm::dot(v4.w - v3.w, n);  // how far A − B reaches past the portal
         if (beyond <= kMprTolerance || s.supports > kMaxMprIterations) {
-            return hit ? resultOf(v1, v2, v3, n, s.supports) : MprResult{};
+            return hit ? resultOf(v1, v2, v3, n, s.supports) : miss(s.supports);
         }
-        if (!hit && glm::dot(v4.w, n) <= 0) return {};  // a separating plane found on the way
+        if (!hit && glm::dot(v4.w, n) <= 0) return miss(s.supports);  // a separating plane found on the way
         // The new portal: of the three triangles (v₄, vᵢ, vⱼ) the ray passes through one.
         const Vec3 side = glm::cross(v4.w, v0.w);
         if (glm::dot(v1.w, side) > 0) {

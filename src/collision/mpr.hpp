@@ -49,7 +49,7 @@ inline constexpr Real kMprTolerance = Real(1e-7);
 
 /// @brief What MPR found.
 struct MprResult {
-    bool overlap = false;    ///< The shapes (with their margins) overlap; nothing below is set otherwise.
+    bool overlap = false;    ///< The shapes (with their margins) overlap; nothing below but `iterations` is set otherwise.
     Real depth = 0;          ///< Distance from the origin to the last portal's plane, m.
     Vec3 normal{0, 1, 0};    ///< The portal's unit normal, from A towards B.
     Vec3 onA{0, 0, 0};       ///< Point of A's surface under the portal, m.
