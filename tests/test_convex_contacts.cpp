@@ -89,7 +89,7 @@ Quat randomRotation(std::mt19937& random) {
 
 }  // namespace
 
-TEST_CASE("Every pair of convex shapes has a test; meshes and a plane as A have none yet", "[narrowphase]") {
+TEST_CASE("Every pair of convex shapes has a test, meshes and a plane as A have none yet", "[narrowphase]") {
     const GeometryType convex[] = {GeometryType::Sphere, GeometryType::Box, GeometryType::Capsule, GeometryType::Cylinder,
                                    GeometryType::Hull};
     for (const GeometryType a : convex) {
@@ -139,7 +139,7 @@ TEST_CASE("A cylinder on a plane: four rim points upright, two on its side, one 
     CHECK_THAT(m.points[0].depth, WithinAbs(0.002, kRoundOff));
 }
 
-TEST_CASE("Capsules side by side touch at both ends of their overlap; crossing ones at one point", "[narrowphase]") {
+TEST_CASE("Capsules side by side touch at both ends of their overlap, crossing ones at one point", "[narrowphase]") {
     ContactManifold m;
     const PairTest test = pairTestFor(GeometryType::Capsule, GeometryType::Capsule);
     // Both along y, radii 0.2 and 0.1, axes 0.29 apart: 1 cm deep, overlapping over y ∈ [0, 1].
@@ -179,7 +179,7 @@ TEST_CASE("A hull cube on a box gives the same manifold as a box on the box (SAT
     }
 }
 
-TEST_CASE("A box 5 mm above a hull gets speculative points; 2 cm above, none", "[narrowphase]") {
+TEST_CASE("A box 5 mm above a hull gets speculative points, 2 cm above none", "[narrowphase]") {
     const auto tetra = tetrahedronHull(1);
     // The tetrahedron's face x + y + z = 1 (before centring) has outward normal (1,1,1)/√3.
     const Geometry hull = hullAt(*tetra, Vec3(0));
