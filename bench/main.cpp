@@ -6,6 +6,7 @@
 ///     stepwise-bench stress [--quick] [--markdown PATH] [--config DIR] [--cases a,b,...]
 ///
 ///     stepwise-bench scaling | stage-costs | bullet | rain-scene ...   (scaling_commands.cpp)
+///     stepwise-bench narrowphase [--quick] [--pairs N] [--repeats N] [--seed S]   (narrowphase_bench.cpp)
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
@@ -16,6 +17,7 @@
 #include "stress.hpp"
 #include "scaling_commands.hpp"
 #include "soak.hpp"
+#include "narrowphase_bench.hpp"
 
 namespace {
 
@@ -31,6 +33,7 @@ const char* const kUsage =
     "  stage-costs   the settled rain's cost per body, stage by stage\n"
     "  bullet        the same scene files in Stepwise and in Bullet 3\n"
     "  soak          random valid scenes of every kind for a million steps\n"
+    "  narrowphase   SAT, GJK+EPA and MPR on the same shape pairs: ns per pair, iterations\n"
     "  rain-scene    writes a sphere-rain scene file\n"
     "\n"
     "usage: stepwise-bench precision [--quick] [--repeats N] [--csv PATH] [--markdown PATH] [--config DIR]\n"
@@ -104,6 +107,7 @@ int main(int argc, char** argv) {
         std::fputs(kUsage, args.empty() ? stderr : stdout);
         std::fputs(stepwise::bench::kScalingUsage, args.empty() ? stderr : stdout);
         std::fputs(stepwise::bench::kSoakUsage, args.empty() ? stderr : stdout);
+        std::fputs(stepwise::bench::kNarrowphaseUsage, args.empty() ? stderr : stdout);
         return args.empty() ? kExitUsage : kExitOk;
     }
     if (args[0] == "stress") return runStressCommand(args);
@@ -112,6 +116,7 @@ int main(int argc, char** argv) {
     if (args[0] == "bullet") return stepwise::bench::bulletCommand({args.begin() + 1, args.end()});
     if (args[0] == "rain-scene") return stepwise::bench::rainSceneCommand({args.begin() + 1, args.end()});
     if (args[0] == "soak") return stepwise::bench::soakCommand({args.begin() + 1, args.end()});
+    if (args[0] == "narrowphase") return stepwise::bench::narrowphaseCommand({args.begin() + 1, args.end()});
     if (args[0] != "precision") return usageError("unknown subcommand '" + args[0] + "'");
 
     stepwise::bench::PrecisionOptions options;

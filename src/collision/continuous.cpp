@@ -14,6 +14,8 @@
 
 #include "collision/aabb.hpp"
 #include "collision/closest_points.hpp"
+#include "collision/epa.hpp"
+#include "collision/gjk.hpp"
 
 namespace stepwise {
 
@@ -82,9 +84,38 @@ Separation boxFromBox(const Geometry& a, const Geometry& b) {
     return best;
 }
 
+/// Is @p t one of the shapes only GJK measures (capsule, cylinder, hull)?
+bool isGjkShape(GeometryType t) {
+    return t == GeometryType::Capsule || t == GeometryType::Cylinder || t == GeometryType::Hull;
+}
+
+/// A convex shape A against a plane: the height of A's support point in −n, n·(s_A(−n) − q).
+Separation convexFromPlane(const Geometry& a, const Geometry& plane) {
+    const Vec3 deepest = support(convexShapeOf(a), -plane.normal);
+    return {glm::dot(deepest - plane.centre, plane.normal), plane.normal};
+}
+
+/// Two convex shapes by GJK's distance (gjk.hpp): the gap, and −n, the way A moves
+/// away from B. Cores that overlap are measured by EPA (epa.hpp): −depth along −n.
+Separation convexFromConvex(const Geometry& a, const Geometry& b) {
+    const ConvexShape sa = convexShapeOf(a);
+    const ConvexShape sb = convexShapeOf(b);
+    const GjkResult g = gjk(sa, sb);
+    if (!g.overlap) return {g.distance, -g.normal};
+    const EpaResult e = epa(sa, sb, g.simplex);
+    if (!e.valid) return {0, Vec3(0, 1, 0)};  // shapes of no volume: touching, no direction to prefer
+    return {-e.depth, -e.normal};
+}
+
 }  // namespace
 
 Separation separation(const Geometry& a, const Geometry& b) {
+    if (isGjkShape(a.type) || isGjkShape(b.type)) {
+        if (b.type == GeometryType::Plane) return convexFromPlane(a, b);
+        if (b.type != GeometryType::Mesh && a.type < GeometryType::Count && b.type < GeometryType::Count) {
+            return convexFromConvex(a, b);
+        }
+    }
     const bool aSphere = a.type == GeometryType::Sphere;
     switch (b.type) {
         case GeometryType::Sphere:

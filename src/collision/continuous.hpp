@@ -114,7 +114,9 @@ struct Separation {
     Vec3 direction{0, 1, 0};///< Unit: moving A along it increases distance at rate 1 (for box–box, at that axis).
 };
 
-/// @brief The separation of shape A from shape B (A is a sphere or a box; B any shape).
+/// @brief The separation of shape A from shape B (A is a sphere, a box, a capsule, a cylinder
+/// or a hull; B any shape). Capsules, cylinders and hulls are measured by GJK's distance
+/// (EPA's depth when they overlap), and against a plane by their support point.
 Separation separation(const Geometry& a, const Geometry& b);
 
 /// @brief First time t ∈ [0, 1] at which shape A, moved from centre @p start to its

@@ -10,6 +10,7 @@
 #include <span>
 
 #include "collision/continuous.hpp"
+#include "collision/convex_pairs.hpp"
 
 namespace stepwise {
 
@@ -21,16 +22,21 @@ constexpr std::size_t kGeometryTypes = static_cast<std::size_t>(GeometryType::Co
 /// body, B any body (dynamic, kinematic or a plane), so the Plane row is
 /// never used: a plane is never A, nor is a mesh (only kinematic objects
 /// have one). Box–sphere is sphere–box with the roles swapped and the normal
-/// flipped (box_sphere.cpp). nullptr: no test yet, the pair never touches.
+/// flipped (box_sphere.cpp). Capsules, cylinders and hulls meet the other
+/// convex shapes by GJK + EPA (collideConvexPair(), convex_pairs.hpp), a
+/// capsule meets a capsule or a sphere by closest points of segments. These
+/// are the tests of NarrowphaseKind::Auto; collidePair() sends a pair to
+/// another algorithm when the World asks for one. nullptr: no test yet
+/// (meshes), the pair never touches.
 constexpr PairTest kPairTests[kGeometryTypes][kGeometryTypes] = {
-    //                B: Sphere               Box               Plane               Capsule  Cylinder Hull     Mesh
-    /* A: Sphere   */ {collideSphereSphere, collideSphereBox, collideSpherePlane, nullptr, nullptr, nullptr, nullptr},
-    /* A: Box      */ {collideBoxSphere,    collideBoxBox,    collideBoxPlane,    nullptr, nullptr, nullptr, nullptr},
-    /* A: Plane    */ {nullptr,             nullptr,          nullptr,            nullptr, nullptr, nullptr, nullptr},
-    /* A: Capsule  */ {nullptr,             nullptr,          nullptr,            nullptr, nullptr, nullptr, nullptr},
-    /* A: Cylinder */ {nullptr,             nullptr,          nullptr,            nullptr, nullptr, nullptr, nullptr},
-    /* A: Hull     */ {nullptr,             nullptr,          nullptr,            nullptr, nullptr, nullptr, nullptr},
-    /* A: Mesh     */ {nullptr,             nullptr,          nullptr,            nullptr, nullptr, nullptr, nullptr},
+    //                B: Sphere                Box                Plane                 Capsule                Cylinder           Hull               Mesh
+    /* A: Sphere   */ {collideSphereSphere,  collideSphereBox,  collideSpherePlane,   collideSphereCapsule,  collideConvexPair, collideConvexPair, nullptr},
+    /* A: Box      */ {collideBoxSphere,     collideBoxBox,     collideBoxPlane,      collideConvexPair,     collideConvexPair, collideConvexPair, nullptr},
+    /* A: Plane    */ {nullptr,              nullptr,           nullptr,              nullptr,               nullptr,           nullptr,           nullptr},
+    /* A: Capsule  */ {collideCapsuleSphere, collideConvexPair, collideCapsulePlane,  collideCapsuleCapsule, collideConvexPair, collideConvexPair, nullptr},
+    /* A: Cylinder */ {collideConvexPair,    collideConvexPair, collideCylinderPlane, collideConvexPair,     collideConvexPair, collideConvexPair, nullptr},
+    /* A: Hull     */ {collideConvexPair,    collideConvexPair, collideHullPlane,     collideConvexPair,     collideConvexPair, collideConvexPair, nullptr},
+    /* A: Mesh     */ {nullptr,              nullptr,           nullptr,              nullptr,               nullptr,           nullptr,           nullptr},
 };
 
 /// The pair tests' name for an object's shape (a compound's parts are looked up one by one).
@@ -63,6 +69,7 @@ Geometry geometryOfObject(const Object& object) {
 }  // namespace
 
 PairTest pairTestFor(GeometryType a, GeometryType b) {
+    if (a >= GeometryType::Count || b >= GeometryType::Count) return nullptr;  // a compound: test its parts
     return kPairTests[static_cast<std::size_t>(a)][static_cast<std::size_t>(b)];
 }
 
@@ -167,13 +174,53 @@ void collideBalls(const BodySet& bodies, const CandidatePair& pair, bool continu
     }
 }
 
-/// The exact test of one candidate pair; its contacts are appended to @p contacts.
-void collidePair(const BodySet& bodies, const CandidatePair& pair, bool continuousCollision,
-                 Real speculativeDistance, std::vector<Contact>& contacts) {
-    Geometry a = geometryOf(bodies.dynamics[pair.a]);
-    Geometry b = geometryOf(bodies, pair.b);
-    // Every pair of shapes that can meet has a test; nullptr is left only
-    // for a plane as A, which the broadphase never produces.
+/// Is @p t a sphere or a box, the shapes whose tests came first and keep their own reach?
+bool isSphereOrBox(GeometryType t) { return t == GeometryType::Sphere || t == GeometryType::Box; }
+
+/// Does the pair keep its closed-form test and the sphere and box reach of collideClassic()?
+/// Always for a sphere or a box against a plane or for two spheres; for the other sphere and
+/// box pairs only under Auto (GjkEpa and Mpr meet boxes by their algorithm, as the side by side asks).
+bool isClassicPair(GeometryType a, GeometryType b, NarrowphaseKind narrowphase) {
+    if (!isSphereOrBox(a)) return false;
+    if (b == GeometryType::Plane) return true;
+    if (!isSphereOrBox(b)) return false;
+    return narrowphase == NarrowphaseKind::Auto || (a == GeometryType::Sphere && b == GeometryType::Sphere);
+}
+
+/// A feature id that also names the two parts (0 for a body that is no compound), so that warm
+/// starting never matches a point of one part with a point of another. The parts and the pair
+/// test's id are mixed by MurmurHash3's 32-bit finaliser (Appleby), which spreads every input
+/// bit over the result: two different (id, part, part) give the same number with odds of 2⁻³².
+std::uint32_t withParts(std::uint32_t featureId, std::uint32_t partA, std::uint32_t partB) {
+    constexpr std::uint32_t kGoldenRatio = 0x9E3779B9u;  // 2³²/φ: odd, with well mixed bits
+    constexpr std::uint32_t kMix1 = 0x85EBCA6Bu;         // the finaliser's two multipliers
+    constexpr std::uint32_t kMix2 = 0xC2B2AE35u;
+    std::uint32_t h = featureId ^ (partA * kGoldenRatio) ^ ((partB + 1u) * kMix1);
+    h ^= h >> 16;
+    h *= kMix1;
+    h ^= h >> 13;
+    h *= kMix2;
+    h ^= h >> 16;
+    return h;
+}
+
+/// Which parts of two compound bodies a pair of geometries is: their ids go into the feature ids.
+struct PartPair {
+    bool compound = false;  ///< Either body is a compound: mix the part numbers into the ids.
+    std::uint32_t a = 0;    ///< Part of A (0 for a body that is no compound).
+    std::uint32_t b = 0;    ///< Part of B.
+};
+
+/// Appends one manifold's points as contacts of @p pair.
+void appendContacts(const CandidatePair& pair, const Vec3& normal, const ContactPoint& p, const PartPair& parts,
+                    std::vector<Contact>& contacts) {
+    const std::uint32_t id = parts.compound ? withParts(p.featureId, parts.a, parts.b) : p.featureId;
+    contacts.push_back({pair.a, pair.b, normal, p.position, p.depth, id});
+}
+
+/// The exact test of a sphere or box pair (isClassicPair()), with the reach it has always had.
+void collideClassic(const BodySet& bodies, const CandidatePair& pair, Geometry a, Geometry b, bool continuousCollision,
+                    Real speculativeDistance, const PartPair& parts, std::vector<Contact>& contacts) {
     const PairTest test = pairTestFor(a.type, b.type);
     if (test == nullptr) return;
 
@@ -208,38 +255,110 @@ void collidePair(const BodySet& bodies, const CandidatePair& pair, bool continuo
             p.depth -= planeShift;
             p.position += (Real(0.5) * planeShift) * found.normal;
         }
-        contacts.push_back({pair.a, pair.b, found.normal, p.position, p.depth, p.featureId});
+        appendContacts(pair, found.normal, p, parts, contacts);
+    }
+}
+
+/// The exact test of any other convex pair (convex_pairs.hpp). GJK measures distance, so
+/// no shape is grown: the test keeps the points whose gap is at most what a box on a plane
+/// reaches (collideClassic()), kSpeculativeDistance plus whatever more the sweeps can close.
+void collideConvexShapes(const BodySet& bodies, const CandidatePair& pair, const Geometry& a, const Geometry& b,
+                         NarrowphaseKind narrowphase, bool continuousCollision, Real speculativeDistance,
+                         const PartPair& parts, std::vector<Contact>& contacts) {
+    if (b.type == GeometryType::Mesh || pairTestFor(a.type, b.type) == nullptr) return;
+    const Real reach = reachOf(bodies, pair, innerRadius(bodies.dynamics[pair.a]), b.type == GeometryType::Plane,
+                               continuousCollision, speculativeDistance);
+    const Real maxGap = kSpeculativeDistance + std::max(reach - speculativeDistance, Real(0));
+    ContactManifold found;
+    if (!collideConvex(a, b, narrowphase, maxGap, found)) return;
+    for (int i = 0; i < found.pointCount; ++i) appendContacts(pair, found.normal, found.points[i], parts, contacts);
+}
+
+/// One geometry of A against one of B, by the routine @p narrowphase gives their shapes.
+void collideGeometries(const BodySet& bodies, const CandidatePair& pair, const Geometry& a, const Geometry& b,
+                       NarrowphaseKind narrowphase, bool continuousCollision, Real speculativeDistance,
+                       const PartPair& parts, std::vector<Contact>& contacts) {
+    if (isClassicPair(a.type, b.type, narrowphase)) {
+        collideClassic(bodies, pair, a, b, continuousCollision, speculativeDistance, parts, contacts);
+    } else {
+        collideConvexShapes(bodies, pair, a, b, narrowphase, continuousCollision, speculativeDistance, parts, contacts);
+    }
+}
+
+/// The compound shape of whichever object @p ref names, or nullptr when it is no compound.
+const CompoundShape* compoundOf(const BodySet& bodies, const BodyRef& ref) {
+    switch (ref.kind) {
+        case BodyKind::Dynamic: {
+            const DynamicObject& body = bodies.dynamics[ref.index];
+            return body.shape == Shape::Compound ? body.compound.get() : nullptr;
+        }
+        case BodyKind::Kinematic: {
+            const KinematicsObject& body = bodies.kinematics[ref.index];
+            return body.shape == Shape::Compound ? body.compound.get() : nullptr;
+        }
+        case BodyKind::Plane: break;
+    }
+    return nullptr;
+}
+
+/// The exact test of one candidate pair; its contacts are appended to @p contacts.
+///
+/// A compound body is tested part by part (geometryOfPart()): every part of A against every
+/// part of B (or B's one shape). The broadphase still hands over one pair per two bodies, and
+/// all their contacts belong to that pair; the part numbers go into the feature ids (withParts()).
+void collidePair(const BodySet& bodies, const CandidatePair& pair, NarrowphaseKind narrowphase, bool continuousCollision,
+                 Real speculativeDistance, std::vector<Contact>& contacts) {
+    const Geometry a = geometryOf(bodies.dynamics[pair.a]);
+    const Geometry b = geometryOf(bodies, pair.b);
+    const CompoundShape* compoundA = compoundOf(bodies, {BodyKind::Dynamic, pair.a});
+    const CompoundShape* compoundB = compoundOf(bodies, pair.b);
+    if (compoundA == nullptr && compoundB == nullptr) {
+        collideGeometries(bodies, pair, a, b, narrowphase, continuousCollision, speculativeDistance, {}, contacts);
+        return;
+    }
+    const std::size_t partsOfA = compoundA != nullptr ? compoundA->parts.size() : 1;
+    const std::size_t partsOfB = compoundB != nullptr ? compoundB->parts.size() : 1;
+    for (std::size_t i = 0; i < partsOfA; ++i) {
+        const auto partA = static_cast<std::uint32_t>(i);
+        const Geometry pieceA = compoundA != nullptr ? geometryOfPart(a, compoundA->parts[i], partA) : a;
+        for (std::size_t j = 0; j < partsOfB; ++j) {
+            const auto partB = static_cast<std::uint32_t>(j);
+            const Geometry pieceB = compoundB != nullptr ? geometryOfPart(b, compoundB->parts[j], partB) : b;
+            collideGeometries(bodies, pair, pieceA, pieceB, narrowphase, continuousCollision, speculativeDistance,
+                              {true, partA, partB}, contacts);
+        }
     }
 }
 
 /// collidePair() on each of @p pairs in order, ball–ball pairs by collideBalls().
-void collidePairs(const BodySet& bodies, std::span<const CandidatePair> pairs, bool continuousCollision,
-                  Real speculativeDistance, std::vector<Contact>& contacts) {
+void collidePairs(const BodySet& bodies, std::span<const CandidatePair> pairs, NarrowphaseKind narrowphase,
+                  bool continuousCollision, Real speculativeDistance, std::vector<Contact>& contacts) {
     BallPairScratch scratch;
     for (const CandidatePair& pair : pairs) {
         if (bodies.dynamics[pair.a].shape == Shape::Sphere && pair.b.kind == BodyKind::Dynamic &&
             bodies.dynamics[pair.b.index].shape == Shape::Sphere) {
             collideBalls(bodies, pair, continuousCollision, speculativeDistance, scratch, contacts);
         } else {
-            collidePair(bodies, pair, continuousCollision, speculativeDistance, contacts);
+            collidePair(bodies, pair, narrowphase, continuousCollision, speculativeDistance, contacts);
         }
     }
 }
 
 }  // namespace
 
-void findContacts(const BodySet& bodies, const std::vector<CandidatePair>& pairs, std::vector<Contact>& contacts) {
+void findContacts(const BodySet& bodies, const std::vector<CandidatePair>& pairs, std::vector<Contact>& contacts,
+                  NarrowphaseKind narrowphase) {
     contacts.clear();
-    collidePairs(bodies, pairs, false, 0, contacts);
+    collidePairs(bodies, pairs, narrowphase, false, 0, contacts);
 }
 
 void findContacts(const BodySet& bodies, const std::vector<CandidatePair>& pairs, std::vector<Contact>& contacts,
                   bool continuousCollision, Real speculativeDistance, ThreadPool& pool,
-                  NarrowphaseWorkspace& workspace) {
+                  NarrowphaseWorkspace& workspace, NarrowphaseKind narrowphase) {
     if (pool.threadCount() == 1 || pairs.size() <= kPairsPerChunk) {
         // One chunk: the merge below would only copy.
         contacts.clear();
-        collidePairs(bodies, pairs, continuousCollision, speculativeDistance, contacts);
+        collidePairs(bodies, pairs, narrowphase, continuousCollision, speculativeDistance, contacts);
         return;
     }
     // Chunk c holds pairs [c·k, (c+1)·k), k = kPairsPerChunk, whatever the
@@ -252,8 +371,8 @@ void findContacts(const BodySet& bodies, const std::vector<CandidatePair>& pairs
         std::vector<Contact>& out = workspace.chunkContacts[c];
         out.clear();  // keeps its capacity: no allocation once the scene has settled
         const std::size_t end = std::min(pairs.size(), (c + 1) * kPairsPerChunk);
-        collidePairs(bodies, std::span(pairs).subspan(c * kPairsPerChunk, end - c * kPairsPerChunk), continuousCollision,
-                     speculativeDistance, out);
+        collidePairs(bodies, std::span(pairs).subspan(c * kPairsPerChunk, end - c * kPairsPerChunk), narrowphase,
+                     continuousCollision, speculativeDistance, out);
     };
     pool.run(chunks, runChunk);
 

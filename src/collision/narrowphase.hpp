@@ -6,6 +6,7 @@
 
 #include "collision/contact.hpp"
 #include "core/thread_pool.hpp"
+#include "core/world_settings.hpp"
 #include "objects/body_set.hpp"
 
 namespace stepwise {
@@ -69,6 +70,22 @@ bool collideBoxPlane(const Geometry& a, const Geometry& b, ContactManifold& out)
 /// @brief Oriented box against oriented box: separating axes, then a clipped manifold (src/collision/box_box.cpp).
 bool collideBoxBox(const Geometry& a, const Geometry& b, ContactManifold& out);
 
+/// @brief Capsule against plane: its two end spheres (src/collision/convex_plane.cpp).
+bool collideCapsulePlane(const Geometry& a, const Geometry& b, ContactManifold& out);
+/// @brief Cylinder against plane: the rim points within reach, up to 4 (src/collision/convex_plane.cpp).
+bool collideCylinderPlane(const Geometry& a, const Geometry& b, ContactManifold& out);
+/// @brief Hull against plane: the vertices within reach, up to 4 (src/collision/convex_plane.cpp).
+bool collideHullPlane(const Geometry& a, const Geometry& b, ContactManifold& out);
+/// @brief Capsule against capsule: closest points of the segments (src/collision/capsule_contacts.cpp).
+bool collideCapsuleCapsule(const Geometry& a, const Geometry& b, ContactManifold& out);
+/// @brief Capsule against sphere: closest point of the segment (src/collision/capsule_contacts.cpp).
+bool collideCapsuleSphere(const Geometry& a, const Geometry& b, ContactManifold& out);
+/// @brief Sphere against capsule: closest point of the segment (src/collision/capsule_contacts.cpp).
+bool collideSphereCapsule(const Geometry& a, const Geometry& b, ContactManifold& out);
+/// @brief Any other pair of convex shapes: GJK, then EPA if they overlap, then a clipped manifold
+/// (src/collision/convex_pairs.cpp).
+bool collideConvexPair(const Geometry& a, const Geometry& b, ContactManifold& out);
+
 /// @brief The pair test for shape A against shape B, or nullptr when there is none (a plane is never A).
 PairTest pairTestFor(GeometryType a, GeometryType b);
 
@@ -83,7 +100,9 @@ Geometry geometryOf(const BodySet& bodies, const BodyRef& ref);
 
 /// @brief Runs the exact test on every candidate pair and collects the contacts.
 /// @param contacts output, cleared first
-void findContacts(const BodySet& bodies, const std::vector<CandidatePair>& pairs, std::vector<Contact>& contacts);
+/// @param narrowphase which algorithm meets two convex shapes (WorldSettings::narrowphase)
+void findContacts(const BodySet& bodies, const std::vector<CandidatePair>& pairs, std::vector<Contact>& contacts,
+                  NarrowphaseKind narrowphase = NarrowphaseKind::Auto);
 
 /// Candidate pairs per chunk of the threaded narrowphase. A pair test takes
 /// 0.1–1 µs, so a chunk is 50–500 µs of work: long enough that taking a chunk
@@ -112,8 +131,14 @@ struct NarrowphaseWorkspace {
 ///        1000-sphere rain), with one the solver lets it close the gap and no more.
 ///        The impulse solver passes 0: it resolves each contact once per step, so
 ///        an early contact would only be a gap it leaves alone (impulse_resolver.cpp).
+/// @param pool        the threads
+/// @param workspace   the per-chunk contact lists
+/// @param narrowphase which algorithm meets two convex shapes (WorldSettings::narrowphase): under
+///        Auto, spheres and boxes keep their own tests and GJK + EPA meets the other shapes;
+///        GjkEpa and Mpr use that algorithm for every convex pair but sphere–sphere and
+///        anything against a plane (src/collision/convex_pairs.hpp)
 void findContacts(const BodySet& bodies, const std::vector<CandidatePair>& pairs, std::vector<Contact>& contacts,
                   bool continuousCollision, Real speculativeDistance, ThreadPool& pool,
-                  NarrowphaseWorkspace& workspace);
+                  NarrowphaseWorkspace& workspace, NarrowphaseKind narrowphase = NarrowphaseKind::Auto);
 
 }  // namespace stepwise

@@ -207,7 +207,7 @@ void World::stepWithImpulses() {
     // 5. Which of them do, where, and how deep? (src/collision/narrowphase.cpp → sphere_*.cpp)
     runStage(Stage::Narrowphase, [&] {
         findContacts(bodies(), pairs_, contacts_, settings_.continuousCollision, 0, *threadPool_,
-                     narrowphaseWorkspace_);
+                     narrowphaseWorkspace_, settings_.narrowphase);
     });
 
     // 6. Impulses: bounce and friction change velocities (src/dynamics/impulse_resolver.cpp)
@@ -283,7 +283,7 @@ void World::stepWithSequentialImpulses() {
     // 3. Which of them touch, or are about to (src/collision/narrowphase.cpp → *_*.cpp)
     runStage(Stage::Narrowphase, [&] {
         findContacts(bodies(), pairs_, contacts_, settings_.continuousCollision, kSpeculativeDistance, *threadPool_,
-                     narrowphaseWorkspace_);
+                     narrowphaseWorkspace_, settings_.narrowphase);
     });
 
     // 4. Prepare: contacts and joints → constraints; an awake body wakes the islands it touches
