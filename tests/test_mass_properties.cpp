@@ -130,7 +130,7 @@ TEST_CASE("A hull cube's faces are 6 squares, counter-clockwise from outside, wi
     }
 }
 
-TEST_CASE("Points inside a hull are dropped; only its corners are vertices", "[hull]") {
+TEST_CASE("Points inside a hull are dropped, and only its corners are vertices", "[hull]") {
     std::vector<Vec3> points = boxCorners(Vec3(0), Vec3(2));
     points.emplace_back(1, 1, 1);
     points.emplace_back(Real(0.5), Real(1.5), 1);

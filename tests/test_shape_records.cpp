@@ -102,7 +102,7 @@ TEST_CASE("A hull from Vertices: the points wrapped, the frame at the centre of 
     CHECK_THAT(glm::length(body.position - Vec3(0, 2, 0)), WithinAbs(0.0, kRoundOff));
 }
 
-TEST_CASE("Scale stretches a hull's points; the body's own scale is then 1", "[config]") {
+TEST_CASE("Scale stretches a hull's points, and the body's own scale is then 1", "[config]") {
     const Scene scene = parseScene("DynamicObject, Shape=Hull, Scale=(2, 1, 1), "
                                    "Vertices=(1, 1, 1), (1, -1, -1), (-1, 1, -1), (-1, -1, 1)\n",
                                    "test.scene");
@@ -193,7 +193,7 @@ TEST_CASE("A bad point of Vertices is reported at its own column", "[config]") {
     CHECK(word.message() == "test.scene:1:52: error: Vertices: expected a number, found 'a'");
 }
 
-TEST_CASE("A Hull needs Vertices or File, not both; they belong to hulls and meshes only", "[config]") {
+TEST_CASE("A Hull needs Vertices or File, not both, and they belong to hulls and meshes only", "[config]") {
     CHECK(theProblemIn("DynamicObject, Shape=Hull\n").message() ==
           "test.scene:1:22: error: Shape: expected Vertices=(x, y, z), ... or File=model.obj with a Hull, found "
           "'Hull'; a hull is the convex solid around at least 4 points that are not coplanar, e.g. "
@@ -210,7 +210,7 @@ TEST_CASE("A Hull needs Vertices or File, not both; they belong to hulls and mes
     CHECK(both.expected == "either Vertices or File for a Hull, not both");
 }
 
-TEST_CASE("Height on a shape without one is an error; a Cylinder's must be a size", "[config]") {
+TEST_CASE("Height on a shape without one is an error, and a Cylinder's must be a size", "[config]") {
     CHECK(theProblemIn("DynamicObject, Shape=Sphere, Height=2\n").message() ==
           "test.scene:1:37: error: Height: expected no Height for a Sphere, found '2'; Height is a Capsule's "
           "segment between its two ball centres or a Cylinder's full length");
@@ -222,7 +222,7 @@ TEST_CASE("Height on a shape without one is an error; a Cylinder's must be a siz
     CHECK(flat.expected == "a size from 1e-6 to 1e6 m for a Cylinder");
 }
 
-TEST_CASE("Shape=Mesh on a DynamicObject is an error; a Mesh needs a File with faces", "[config]") {
+TEST_CASE("Shape=Mesh on a DynamicObject is an error, and a Mesh needs a File with faces", "[config]") {
     CHECK(theProblemIn("DynamicObject, Shape=Mesh, File=ramp.obj\n").message() ==
           "test.scene:1:22: error: Shape: expected a shape with an inside (Sphere, Box, Capsule, Cylinder, Hull or "
           "Compound) for a DynamicObject, found 'Mesh'; a triangle mesh is a surface with no volume, so no mass: "
@@ -314,7 +314,7 @@ TEST_CASE("A compound with no parts, and a Part naming an unknown or plain body,
           "Part names the compound it belongs to, e.g. Part, Body=robot, Shape=Box");
 }
 
-TEST_CASE("Part masses: all or none; the body's Mass only when the parts give none", "[config]") {
+TEST_CASE("Part masses: all or none, and the body's Mass only when the parts give none", "[config]") {
     const ConfigDiagnostic mixed = theProblemIn("DynamicObject, Name=d, Shape=Compound\n"
                                                 "Part, Body=d, Shape=Sphere, Mass=1\n"
                                                 "Part, Body=d, Shape=Sphere, Position=(1, 0, 0)\n");

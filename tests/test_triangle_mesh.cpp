@@ -106,7 +106,7 @@ TEST_CASE("On a flat grid only the border edges stay active", "[mesh]") {
     CHECK(active == 4 * n);  // the n unit edges along each of the four sides
 }
 
-TEST_CASE("A ridge's shared edge is active; a valley's and a flat fold's are not", "[mesh]") {
+TEST_CASE("A ridge's shared edge is active, and a valley's and a flat fold's are not", "[mesh]") {
     // The shared edge is edge 2 of the first triangle and edge 0 of the second.
     // rise < 0: the second triangle bends down, a ridge (convex). rise > 0: a valley (concave).
     const TriangleMesh ridge = fold(Real(-0.5));
