@@ -1147,7 +1147,16 @@ private:
         std::vector<std::size_t> order(bodies.size());
         for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
         const auto reach = [](const DynamicObject& body) {
-            return body.shape == Shape::Sphere ? body.radius : Real(0.5) * glm::length(body.scale);
+            switch (body.shape) {
+                case Shape::Sphere: return body.radius;
+                case Shape::Capsule: return body.height / 2 + body.radius;
+                case Shape::Cylinder: return std::hypot(body.radius, body.height / 2);
+                case Shape::Hull: return body.hull ? body.hull->boundingRadius : Real(0);
+                case Shape::Compound: return body.compound ? body.compound->boundingRadius : Real(0);
+                case Shape::Box:
+                case Shape::Mesh: break;
+            }
+            return Real(0.5) * glm::length(body.scale);
         };
         std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) {
             return bodies[i].position.x - reach(bodies[i]) < bodies[j].position.x - reach(bodies[j]);
