@@ -11,6 +11,7 @@
 #                                         include/stepwise on the include path and writes
 #                                         #include "world/world.hpp", as the engine's own files do
 #   share/stepwise/config/*.scene         the scenes; `stepwise run` with no file opens default.scene
+#   share/stepwise/config/models/*.obj    the OBJ models the scenes read (File=models/…)
 #   lib/cmake/Stepwise/                   the CMake package: find_package(Stepwise) gives the
 #                                         target Stepwise::engine
 #
@@ -38,7 +39,7 @@ install(DIRECTORY "${PROJECT_SOURCE_DIR}/src/" DESTINATION "${CMAKE_INSTALL_INCL
         PATTERN "viewer" EXCLUDE)
 
 install(DIRECTORY "${PROJECT_SOURCE_DIR}/config/" DESTINATION "${CMAKE_INSTALL_DATADIR}/stepwise/config"
-        FILES_MATCHING PATTERN "*.scene")
+        FILES_MATCHING PATTERN "*.scene" PATTERN "*.obj")
 
 install(EXPORT StepwiseTargets NAMESPACE Stepwise:: DESTINATION "${STEPWISE_INSTALL_CMAKEDIR}")
 configure_package_config_file("${CMAKE_CURRENT_LIST_DIR}/StepwiseConfig.cmake.in"
@@ -73,9 +74,11 @@ library with its headers and a CMake package: a course's own project links it
 with find_package(Stepwise) and the target Stepwise::engine.")
 # The libraries the program loads (libc, libstdc++, freeglut and OpenGL when the viewer is built
 # in) come from dpkg-shlibdeps. The headers include GLM's, and the CMake package looks for it,
-# so libglm-dev too; a course's own project also needs a C++20 compiler and CMake.
+# so libglm-dev too; the static library calls qhull and tinyobjloader, whose CMake packages the
+# Stepwise package finds, so libqhull-dev and libtinyobjloader-dev; a course's own project also
+# needs a C++20 compiler and CMake.
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
-set(CPACK_DEBIAN_PACKAGE_DEPENDS "libglm-dev")
+set(CPACK_DEBIAN_PACKAGE_DEPENDS "libglm-dev, libqhull-dev, libtinyobjloader-dev")
 set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "cmake (>= 3.20), g++ (>= 4:12)")
 # `stepwise plot` draws with gnuplot, which it runs as a program: without it, plot says how to get it.
 set(CPACK_DEBIAN_PACKAGE_SUGGESTS "gnuplot-nox")

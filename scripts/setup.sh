@@ -25,9 +25,12 @@ set -euo pipefail
 #   gdb                       the lectures' step-through sessions (lectures/gdb/, with Python for
 #                             stepwise.py's break-at), and the [gdb] tests that run them
 #   clang-14, libfuzzer-14-dev the fuzzers of tests/fuzz/ (scripts/fuzz.sh; README, Fuzzing)
+#   libqhull-dev              qhull's reentrant C library, libqhull_r: the convex hull of a
+#                             Shape=Hull body's points (src/objects/convex_hull.cpp)
+#   libtinyobjloader-dev      reads Wavefront OBJ models, File=model.obj (src/config/obj_file.cpp)
 #   dpkg-dev                  dpkg-shlibdeps, which finds the libraries the program loads for the
 #                             .deb `cpack` makes (cmake/install.cmake; the test install-deb)
-packages=(cmake ninja-build g++ libglm-dev freeglut3-dev catch2 doxygen xvfb xauth xdotool gnuplot-nox gdb dpkg-dev clang-14 libfuzzer-14-dev)
+packages=(cmake ninja-build g++ libglm-dev libqhull-dev libtinyobjloader-dev freeglut3-dev catch2 doxygen xvfb xauth xdotool gnuplot-nox gdb dpkg-dev clang-14 libfuzzer-14-dev)
 
 # Only when asked (CI does not need them):
 #   libbullet-dev, pkg-config   Bullet 3, the engine `stepwise-bench bullet` compares Stepwise with

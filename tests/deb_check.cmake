@@ -6,7 +6,8 @@
 # Packs the build as it is (nothing is compiled again) into SCRATCH_DIR and reads the package back
 # with dpkg-deb: its name and version are the project's; it has a maintainer and a description
 # (in lines of at most 80 characters); it depends on what the program loads (found by
-# dpkg-shlibdeps: the C++ runtime, and freeglut when the viewer is built in) and on GLM's headers;
+# dpkg-shlibdeps: the C++ runtime, and freeglut when the viewer is built in) and on GLM's headers
+# and qhull's and tinyobjloader's development packages (the static library needs them);
 # and it holds the program, the library, the headers, the CMake package and the scenes below /usr.
 cmake_minimum_required(VERSION 3.20)
 
@@ -65,7 +66,7 @@ foreach(line IN LISTS description_lines)
     message(FATAL_ERROR "install-deb: a line of the Description is ${length} characters long, over 80:\n${line}")
   endif()
 endforeach()
-set(needed libglm-dev libc6 libstdc\\+\\+6)
+set(needed libglm-dev libqhull-dev libtinyobjloader-dev libc6 libstdc\\+\\+6)
 if(VIEWER)
   list(APPEND needed libglut)
 endif()

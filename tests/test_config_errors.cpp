@@ -282,7 +282,7 @@ TEST_CASE("A misspelt field gets a did-you-mean", "[config]") {
 TEST_CASE("An unknown Shape or Integrator lists the choices and suggests one", "[config]") {
     const ConfigDiagnostic shape = theProblemIn("DynamicObject, Sphear\n");
     checkLocation(shape, 1, 16, "Shape");
-    CHECK(shape.expected == "one of Sphere, Box, Cube");
+    CHECK(shape.expected == "one of Sphere, Box, Cube, Capsule, Cylinder, Hull, Compound, Mesh");
     CHECK(shape.found == "Sphear");
     CHECK(shape.hint == "did you mean 'Sphere'?");
 

@@ -36,6 +36,9 @@ struct FencedBlock {
 constexpr std::string_view kFence = "```";
 /// Source name the documented error messages are printed with.
 const std::string kExampleSource = "example.scene";
+/// The ```scene examples load as if they were a scene in config/, so that a `File=models/….obj`
+/// in one reads the model shipped in config/models/ (a File= is relative to its scene's folder).
+const std::string kExampleInConfig = STEPWISE_SOURCE_DIR "/config/example.scene";
 /// The reference documents every record in positional and named form, plus
 /// the World record: fewer blocks than this means the extraction broke.
 constexpr std::size_t kMinimumSceneBlocks = 8;
@@ -126,7 +129,7 @@ TEST_CASE("Every example in docs/config-format.md behaves as documented", "[conf
         if (block.tag == "scene") {
             ++scenes;
             try {
-                const Scene scene = parseScene(block.body, kExampleSource);
+                const Scene scene = parseScene(block.body, kExampleInConfig);
                 if (!scene.expectations.empty()) {
                     // An example of Expect records must show ones that hold.
                     const test::ExpectationOutcome outcome = test::runExpectations(scene);

@@ -94,6 +94,7 @@ bool inRange(Real value, Range range) {
         case Range::Radius: return value >= kMinBodySize / 2 && value <= kMaxBodySize / 2;
         case Range::Mass: return value >= kMinMass && value <= kMaxMass;
         case Range::JointLength: return value >= kMinJointLength;
+        case Range::Length: return value >= 0 && value <= kMaxBodySize;
     }
     return false;
 }
@@ -140,6 +141,7 @@ std::string describe(Range range) {
             return "a radius from " + formatLimit(kMinBodySize / 2) + " to " + formatLimit(kMaxBodySize / 2) + " m";
         case Range::Mass: return "a mass from " + formatLimit(kMinMass) + " to " + formatLimit(kMaxMass) + " kg";
         case Range::JointLength: return "a length of at least " + formatLimit(kMinJointLength) + " m";
+        case Range::Length: return "a length from 0 to " + formatLimit(kMaxBodySize) + " m";
     }
     return "a number";
 }
@@ -211,6 +213,24 @@ Parsed<std::size_t> parseWord(const Token& token, const std::vector<std::string_
     const std::vector<std::string> candidates(words.begin(), words.end());
     if (const auto suggestion = closestMatch(token.text, candidates)) {
         problem.hint = "did you mean '" + *suggestion + "'?";
+    }
+    return problem;
+}
+
+Parsed<std::string> parseFilePath(const Token& token) {
+    const auto pathCharacter = [](char c) { return isNameCharacter(c) || c == '/'; };
+    if (!token.text.empty() && token.text.back() != '/' &&
+        std::all_of(token.text.begin(), token.text.end(), pathCharacter)) {
+        return std::string(token.text);
+    }
+    ValueProblem problem{token.column, "a file path of letters, digits, '_', '-', '.' and '/'",
+                         std::string(token.text), ""};
+    if (token.text.empty()) {
+        problem.hint = "the value is missing: name an OBJ file, e.g. File=models/ramp.obj";
+    } else if (token.text.find(' ') != std::string_view::npos) {
+        problem.hint = "rename the file without spaces ('_' instead)";
+    } else if (token.text.back() == '/') {
+        problem.hint = "that is a folder: name the file in it";
     }
     return problem;
 }

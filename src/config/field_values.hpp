@@ -10,6 +10,8 @@
 ///     vector   = "(" number "," number "," number ")" e.g. (0, 5, 0)
 ///     choice   = one word of a fixed list, any case   e.g. sphere, BOX
 ///     name     = letters, digits, '_', '-', '.'       e.g. Ball_1
+///     points   = vector { "," vector }                 e.g. (0, 0, 0), (1, 0, 0), (0, 1, 0)
+///     file     = name characters and '/'               e.g. models/ramp.obj
 #pragma once
 
 #include <array>
@@ -40,6 +42,7 @@ enum class Range : std::uint8_t {
     Radius,        ///< Half of a Size, m.
     Mass,          ///< kMinMass to kMaxMass, kg.
     JointLength,   ///< At least kMinJointLength, m.
+    Length,        ///< 0 to kMaxBodySize, m (a capsule's segment may be 0: a ball).
 };
 
 /// @brief A limit as a person writes it: 1e-06 as "1e-6", 1000000 as "1e6".
@@ -102,6 +105,10 @@ struct Choice {
 /// On failure the problem lists the words and, when one is close, says
 /// "did you mean …?".
 Parsed<std::size_t> parseWord(const Token& token, const std::vector<std::string_view>& words);
+
+/// @brief Checks that @p token is a usable file path: a name's characters and '/' (no spaces,
+/// quotes or separators), not empty, not ending in '/'.
+Parsed<std::string> parseFilePath(const Token& token);
 
 /// @brief Checks that @p token is a usable object name (letters, digits, '_', '-', '.').
 ///

@@ -33,6 +33,10 @@ std::vector<std::string_view> wordsOf(const std::array<Choice<E>, N>& choices) {
 
 std::string quoted(std::string_view text) { return "'" + std::string(text) + "'"; }
 
+/// How one point of a Points field is written, and an example of the whole list.
+constexpr std::string_view kPointLayout = "a point (x, y, z)";
+constexpr std::string_view kPointsExample = "=(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)";
+
 }  // namespace
 
 // ---------------------------------------------------------------- DiagnosticSink
@@ -80,6 +84,8 @@ Vec3 RecordValues::triple(std::string_view field, const Vec3& fallback) const {
 
 std::optional<std::string> RecordValues::text(std::string_view field) const { return slot(field).text; }
 
+const std::vector<Vec3>& RecordValues::points(std::string_view field) const { return slot(field).points; }
+
 RecordValues::WrittenPart RecordValues::written(std::size_t field, int component) const {
     const Slot& s = slots_.at(field);
     const std::size_t part = component == kWholeField ? 0 : static_cast<std::size_t>(component);
@@ -121,7 +127,12 @@ public:
             const Token& token = line_.tokens[i];
             if (const std::optional<NamedToken> named = splitNamed(token)) {
                 if (firstNamed == nullptr) firstNamed = &token;
+                openList_ = nullptr;
                 readNamed(token, *named);
+            } else if (openList_ != nullptr && !token.text.empty() && token.text.front() == '(') {
+                // `Vertices=(0, 0, 0), (1, 0, 0), …`: the commas between points split the
+                // line into tokens, and every later "(…)" continues the list.
+                readPoint(*openList_, values_.slots_[openListSlot_], token);
             } else if (firstNamed != nullptr) {
                 // Once a field has been named, the position of later values
                 // no longer says which field they are.
@@ -258,6 +269,23 @@ private:
             case FieldKind::Compare:
                 readChoice(field, slot, value, wordsOf(kCompareChoices));
                 break;
+            case FieldKind::Narrowphase:
+                readChoice(field, slot, value, wordsOf(kNarrowphaseChoices));
+                break;
+            case FieldKind::Points:
+                openList_ = &field;
+                openListSlot_ = ref.field;
+                readPoint(field, slot, value);
+                break;
+            case FieldKind::File: {
+                const Parsed<std::string> path = parseFilePath(value);
+                if (path.ok()) {
+                    slot.text = path.value();
+                } else {
+                    sink_.report(line_.number, fieldName(field, kWholeField), path.problem());
+                }
+                break;
+            }
             case FieldKind::Name: {
                 const Parsed<std::string> name = parseName(value);
                 if (name.ok()) {
@@ -286,6 +314,34 @@ private:
         }
         slot.asWritten = std::string(value.text);
         for (std::size_t c = 0; c < parts.value().size(); ++c) readComponent(field, slot, c, parts.value()[c]);
+    }
+
+    /// One point of a Points field: a triple, each number checked at its own column.
+    void readPoint(const FieldSpec& field, RecordValues::Slot& slot, const Token& value) {
+        slot.asWritten += (slot.asWritten.empty() ? "" : ", ") + std::string(value.text);
+        slot.text = slot.asWritten;  // what grading compares (RecordValues::written)
+        const std::string name(field.name);
+        const Parsed<std::array<Token, 3>> parts = splitTriple(value, kPointLayout);
+        if (!parts.ok()) {
+            ValueProblem problem = parts.problem();
+            problem.expected = std::string(kPointLayout) + " (point " + std::to_string(slot.points.size() + 1) +
+                               " of " + name + ")";
+            if (problem.hint.empty()) {
+                problem.hint = name + " is a list of points in parentheses, e.g. " + name + std::string(kPointsExample);
+            }
+            sink_.report(line_.number, name, problem);
+            return;
+        }
+        Vec3 point(0);
+        for (std::size_t c = 0; c < parts.value().size(); ++c) {
+            const Parsed<Real> number = parseNumber(parts.value()[c], field.range);
+            if (!number.ok()) {
+                sink_.report(line_.number, name, number.problem());
+                return;
+            }
+            point[static_cast<int>(c)] = number.value();
+        }
+        slot.points.push_back(point);
     }
 
     void readComponent(const FieldSpec& field, RecordValues::Slot& slot, std::size_t component, const Token& value) {
@@ -337,6 +393,8 @@ private:
     const RecordSpec& spec_;
     DiagnosticSink& sink_;
     RecordValues values_;
+    const FieldSpec* openList_ = nullptr;  ///< The Points field later "(…)" tokens continue, if any.
+    std::size_t openListSlot_ = 0;         ///< Its index in the record table.
 };
 
 RecordValues readRecord(const SceneLine& line, const RecordSpec& spec, DiagnosticSink& sink) {

@@ -79,8 +79,11 @@ public:
         return s.choice ? choices[*s.choice].value : fallback;
     }
 
-    /// @brief The field's text as written (a Name, or the word of a choice field), or nullopt when not given.
+    /// @brief The field's text as written (a Name, a File, or the word of a choice field), or nullopt when not given.
     std::optional<std::string> text(std::string_view field) const;
+
+    /// @brief A Points field's points, in the order written (empty when not given).
+    const std::vector<Vec3>& points(std::string_view field) const;
 
     /// @brief One part of a field as the line gave it: what comparing two files record by record needs.
     struct WrittenPart {
@@ -105,7 +108,8 @@ private:
         int valueColumn = 0;                         ///< Column of the value where first set.
         std::optional<std::size_t> choice;           ///< Index into the kind's choice table.
         std::optional<std::string> text;             ///< A name's text, or a choice's word, as written.
-        std::string asWritten;                       ///< The whole triple as written, if given whole.
+        std::string asWritten;                       ///< The whole triple (or list of points) as written, if given whole.
+        std::vector<Vec3> points;                    ///< A Points field's points.
     };
 
     const Slot& slot(std::string_view field) const;

@@ -65,6 +65,7 @@ int choiceMeaning(FieldKind kind, std::size_t index) {
         case FieldKind::Broadphase: return static_cast<int>(kBroadphaseChoices.at(index).value);
         case FieldKind::Boolean: return kBooleanChoices.at(index).value ? 1 : 0;
         case FieldKind::Compare: return static_cast<int>(kCompareChoices.at(index).value);
+        case FieldKind::Narrowphase: return static_cast<int>(kNarrowphaseChoices.at(index).value);
         default: return static_cast<int>(index);
     }
 }

@@ -27,13 +27,17 @@
 #include <sstream>
 #include <system_error>
 
+#include "config/obj_file.hpp"
 #include "config/record_reader.hpp"
 #include "config/scene_records.hpp"
 #include "config/scene_tokenizer.hpp"
 #include "config/spelling.hpp"
 #include "core/limits.hpp"
 #include "core/quoted_text.hpp"
+#include "objects/convex_hull.hpp"
 #include "objects/inertia.hpp"
+#include "objects/mass_properties.hpp"
+#include "objects/triangle_mesh.hpp"
 #include "forces/spring_stability.hpp"
 
 namespace stepwise {
@@ -57,6 +61,13 @@ constexpr Real kDefaultMass = 1;                       ///< kg.
 constexpr IntegratorKind kDefaultIntegrator = IntegratorKind::SymplecticEuler;
 constexpr BroadphaseKind kDefaultBroadphase = BroadphaseKind::Auto;  ///< Brute force for small scenes (see chooseBroadphase).
 constexpr bool kDefaultHollow = false;                 ///< A sphere is a solid ball (I = 2/5 m r^2).
+constexpr Shape kDefaultPartShape = Shape::Box;        ///< A Part is a box unless it says otherwise.
+/// A kinematic compound has no mass; its parts are weighed by volume at this total only to
+/// find its centroid and axes (any positive number gives the same ones).
+constexpr Real kKinematicCompoundMass = 1;
+/// What Height means, for the hints of its errors.
+constexpr std::string_view kHeightMeaning =
+    "Height is a Capsule's segment between its two ball centres or a Cylinder's full length";
 
 /// A dynamic body's own elasticity and friction: a moderate bounce and grip.
 constexpr Real kDynamicElasticity = Real(0.5);
@@ -171,7 +182,9 @@ std::string joinMessages(const std::vector<ConfigDiagnostic>& diagnostics) {
 /// Turns tokenized lines into a Scene, one record at a time, collecting every problem.
 class SceneAssembler {
 public:
-    explicit SceneAssembler(const std::string& sourceName) : sink_(sourceName) { scene_.sourcePath = sourceName; }
+    SceneAssembler(const std::string& sourceName, const SceneReadOptions& options) : sink_(sourceName), options_(options) {
+        scene_.sourcePath = sourceName;
+    }
 
     void add(const SceneLine& line) {
         const Token& recordName = line.tokens.front();
@@ -202,11 +215,16 @@ public:
             case RecordKind::HingeJoint: addJoint(values, line, index, JointKind::Hinge); break;
             case RecordKind::AngularMotor: addJoint(values, line, index, JointKind::AngularMotor); break;
             case RecordKind::MayChange: addMayChange(values, line); break;
+            case RecordKind::Part:
+                partLines_.emplace_back(line.number, lineText(line));
+                addPart(values, line, index);
+                break;
         }
     }
 
     /// The finished Scene, or ConfigError with every problem found.
     Scene finish() {
+        resolveCompounds();  // first: springs' anchors are in the bodies' frames, which this moves
         resolveExpectNames();
         resolveMayChange();
         resolveSprings();
@@ -222,6 +240,27 @@ public:
     }
 
 private:
+    /// A Shape=Compound object waiting for its Part records.
+    struct PendingCompound {
+        bool dynamic = true;      ///< In scene_.dynamics (else scene_.kinematics).
+        std::size_t index = 0;    ///< Its index there.
+        int line = 0;             ///< Its line.
+        int column = 0;           ///< Column of its Shape value.
+        int massColumn = 0;       ///< Column of its Mass value; 0 when not given.
+    };
+
+    /// A Part record as read, before it is joined to its compound.
+    struct PendingPart {
+        CompoundPart part;                  ///< The part; its mass is 0 until shared out if not given.
+        std::string name;                   ///< The record's Name (or Part0, Part1, …).
+        std::optional<std::string> body;    ///< Body as written (nullopt when missing or malformed).
+        int line = 0;                       ///< Line of the record.
+        int column = 0;                     ///< Column of the record's name.
+        int bodyColumn = 0;                 ///< Column of Body's value.
+        int massColumn = 0;                 ///< Column of Mass's value; 0 when not given.
+        bool usable = true;                 ///< False when its shape or hull was refused (reported).
+    };
+
     /// A joint record waiting for finish(), when every body is known.
     struct PendingJoint {
         RecordValues values;  ///< What the record said.
@@ -245,12 +284,35 @@ private:
         body.orientation = orientationFromDegrees(values.triple("Rotation", kZero));
         body.angularVelocity = values.triple("AngularVelocity", kZero);
         body.hollow = values.choice<bool>("Hollow", kBooleanChoices, kDefaultHollow);
-        if (body.hollow && body.shape == Shape::Box) {
+        if (body.hollow && body.shape != Shape::Sphere) {
             // A hollow box would need a wall thickness; rather than guess one, refuse.
-            sink_.report(line.number, values.valueColumn("Hollow"), "Hollow", "false for a Box",
-                         values.text("Hollow").value_or("true"),
-                         "only a sphere can be hollow (a thin shell, I = 2/3 m r^2); boxes are solid");
+            sink_.report(line.number, values.valueColumn("Hollow"), "Hollow",
+                         std::string("false for a ") + toString(body.shape), values.text("Hollow").value_or("true"),
+                         std::string("only a sphere can be hollow (a thin shell, I = 2/3 m r^2); ") +
+                             (body.shape == Shape::Box ? "boxes are solid" : "every other shape is solid"));
         }
+        if (body.shape == Shape::Mesh) {
+            sink_.report(line.number, shapeColumn(values, line), "Shape", "a shape with an inside (Sphere, Box, "
+                         "Capsule, Cylinder, Hull or Compound) for a DynamicObject", values.text("Shape").value_or("Mesh"),
+                         "a triangle mesh is a surface with no volume, so no mass: use it on a KinematicsObject, or "
+                         "Shape=Hull for a convex solid read from the same OBJ file");
+        }
+        body.height = values.number("Height", body.scale.y);
+        BodyFrame frame;
+        if (checkShapeFields(values, line, body.shape)) {
+            if (body.shape == Shape::Hull) {
+                if (std::shared_ptr<ConvexHull> hull = readHull(values, line, body.scale)) {
+                    frame = moveToPrincipalFrame(*hull);
+                    body.hull = std::move(hull);
+                    body.scale = kUnitScale;  // the vertices carry the size now
+                }
+            } else if (body.shape == Shape::Compound) {
+                pendingCompounds_.push_back({true, scene_.dynamics.size(), line.number, shapeColumn(values, line),
+                                             values.isSet("Mass") ? values.valueColumn("Mass") : 0});
+            }
+        }
+        moveTo(body, frame);
+        dynamicFrames_.push_back(frame);
         scene_.dynamics.push_back(std::move(body));
     }
 
@@ -268,7 +330,328 @@ private:
         mover.orientation = orientationFromDegrees(values.triple("Rotation", kZero));
         mover.elasticity = values.number("Elasticity", kStaticElasticity);
         mover.friction = values.number("Friction", kStaticFriction);
+        mover.height = values.number("Height", mover.scale.y);
+        if (checkShapeFields(values, line, mover.shape)) {
+            if (mover.shape == Shape::Hull) {
+                if (std::shared_ptr<ConvexHull> hull = readHull(values, line, mover.scale)) {
+                    moveTo(mover, moveToPrincipalFrame(*hull));
+                    mover.hull = std::move(hull);
+                    mover.scale = kUnitScale;
+                }
+            } else if (mover.shape == Shape::Mesh) {
+                if (std::shared_ptr<TriangleMesh> mesh = readMesh(values, line, mover.scale)) {
+                    mover.mesh = std::move(mesh);
+                    mover.scale = kUnitScale;
+                }
+            } else if (mover.shape == Shape::Compound) {
+                pendingCompounds_.push_back({false, scene_.kinematics.size(), line.number, shapeColumn(values, line), 0});
+            }
+        }
         scene_.kinematics.push_back(std::move(mover));
+    }
+
+    // ---------------------------------------------------------- shapes with data
+
+    /// Column of the Shape value, or of the record's name when Shape was left out.
+    static int shapeColumn(const RecordValues& values, const SceneLine& line) {
+        const int column = values.valueColumn("Shape");
+        return column != 0 ? column : line.tokens.front().column;
+    }
+
+    /// Height, Vertices and File only where the shape uses them; a Hull has exactly one of
+    /// Vertices and File, a Mesh a File. Reports each misuse; true when none.
+    bool checkShapeFields(const RecordValues& values, const SceneLine& line, Shape shape) {
+        const std::size_t before = sink_.diagnostics().size();
+        const std::string shapeName = toString(shape);
+        const bool hasHeight = shape == Shape::Capsule || shape == Shape::Cylinder;
+        if (values.isSet("Height") && !hasHeight) {
+            sink_.report(line.number, values.valueColumn("Height"), "Height", "no Height for a " + shapeName,
+                         formatNumber(values.number("Height", 0)), std::string(kHeightMeaning));
+        }
+        if (shape == Shape::Cylinder && values.isSet("Height") && values.number("Height", 1) < kMinBodySize) {
+            sink_.report(line.number, values.valueColumn("Height"), "Height", describe(Range::Size) + " for a Cylinder",
+                         formatNumber(values.number("Height", 0)),
+                         "a cylinder of length 0 is a disc with no volume; a Capsule may have Height=0 (a ball)");
+        }
+        const bool vertices = values.isSet("Vertices");
+        const bool file = values.isSet("File");
+        if (vertices && shape != Shape::Hull) {
+            sink_.report(line.number, values.valueColumn("Vertices"), "Vertices", "no Vertices for a " + shapeName,
+                         values.asWritten("Vertices"),
+                         shape == Shape::Mesh ? "a Mesh reads its triangles from File=model.obj"
+                                              : "Vertices are the points a Shape=Hull wraps");
+        }
+        if (file && shape != Shape::Hull && shape != Shape::Mesh) {
+            sink_.report(line.number, values.valueColumn("File"), "File", "no File for a " + shapeName,
+                         values.text("File").value_or(""),
+                         "File=model.obj gives a Shape=Hull its points or a Shape=Mesh its triangles");
+        }
+        if (shape == Shape::Hull && vertices && file) {
+            sink_.report(line.number, values.valueColumn("File"), "File", "either Vertices or File for a Hull, not both",
+                         values.text("File").value_or(""), "the hull wraps the points of one of them");
+        }
+        if (shape == Shape::Hull && !vertices && !file) {
+            sink_.report(line.number, shapeColumn(values, line), "Shape",
+                         "Vertices=(x, y, z), ... or File=model.obj with a Hull", values.text("Shape").value_or("Hull"),
+                         "a hull is the convex solid around at least 4 points that are not coplanar, e.g. "
+                         "Vertices=(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)");
+        }
+        if (shape == Shape::Mesh && !file) {
+            sink_.report(line.number, shapeColumn(values, line), "Shape", "File=model.obj with a Mesh",
+                         values.text("Shape").value_or("Mesh"), "a Mesh's triangles come from an OBJ file");
+        }
+        return sink_.diagnostics().size() == before;
+    }
+
+    /// The path of a File field, relative to the scene file's folder.
+    std::filesystem::path resolvedFile(const std::string& written) const {
+        const std::filesystem::path file(written);
+        if (file.is_absolute()) return file;
+        return std::filesystem::path(scene_.sourcePath).parent_path() / file;
+    }
+
+    /// The OBJ file the record's File names, or nullopt after reporting why it cannot be read.
+    std::optional<ObjModel> readModel(const RecordValues& values, const SceneLine& line) {
+        const std::optional<std::string> written = values.text("File");
+        if (!written) return std::nullopt;  // malformed: reported by the reader
+        const int column = values.valueColumn("File");
+        if (!options_.readFiles) {
+            sink_.report(line.number, column, "File", "no File (this loader reads no files)", *written,
+                         "scenes parsed with SceneReadOptions::readFiles off must give a hull's points as Vertices");
+            return std::nullopt;
+        }
+        const std::string path = resolvedFile(*written).string();
+        try {
+            return readObjFile(path);
+        } catch (const ObjError& error) {
+            sink_.report(line.number, column, "File", "a readable OBJ file with vertices", *written,
+                         "cannot read " + path + ": " + error.what());
+            return std::nullopt;
+        }
+    }
+
+    /// Where a record's points came from, for messages: "Vertices" or the OBJ file's name.
+    static std::string pointsSource(const RecordValues& values) {
+        return values.isSet("Vertices") ? std::string("Vertices") : values.text("File").value_or("File");
+    }
+
+    /// The hull of the record's Vertices or File points, each scaled component-wise by
+    /// @p scale, in the record's own frame; nullptr after reporting a problem.
+    std::shared_ptr<ConvexHull> readHull(const RecordValues& values, const SceneLine& line, const Vec3& scale) {
+        std::vector<Vec3> points;
+        const bool fromFile = values.isSet("File");
+        if (fromFile) {
+            std::optional<ObjModel> model = readModel(values, line);
+            if (!model) return nullptr;
+            points = std::move(model->vertices);
+        } else {
+            points = values.points("Vertices");
+            if (reportedOn(line.number, "Vertices")) return nullptr;  // a bad point: reported by the reader
+        }
+        for (Vec3& p : points) p *= scale;
+        const std::string field = fromFile ? "File" : "Vertices";
+        const int column = values.valueColumn(field);
+        try {
+            return std::make_shared<ConvexHull>(buildConvexHull(points));
+        } catch (const HullError& error) {
+            const std::string found = fromFile ? values.text("File").value_or("") + " (" +
+                                                     std::to_string(points.size()) + " points)"
+                                               : std::to_string(points.size()) + " points";
+            sink_.report(line.number, column, field, "at least 4 points that are not coplanar (a hull with volume)",
+                         found, error.what());
+            return nullptr;
+        }
+    }
+
+    /// The triangles of the record's File as a mesh (points scaled by @p scale); nullptr after reporting.
+    std::shared_ptr<TriangleMesh> readMesh(const RecordValues& values, const SceneLine& line, const Vec3& scale) {
+        std::optional<ObjModel> model = readModel(values, line);
+        if (!model) return nullptr;
+        const std::string written = values.text("File").value_or("");
+        const int column = values.valueColumn("File");
+        if (model->triangles.empty()) {
+            sink_.report(line.number, column, "File", "an OBJ file with faces (f lines) for a Mesh", written,
+                         "it has " + std::to_string(model->vertices.size()) + " vertices but no faces");
+            return nullptr;
+        }
+        for (Vec3& p : model->vertices) p *= scale;
+        try {
+            return std::make_shared<TriangleMesh>(buildTriangleMesh(std::move(model->vertices), std::move(model->triangles)));
+        } catch (const MeshError& error) {
+            sink_.report(line.number, column, "File", "a mesh of triangles that each have an area", written,
+                         error.what());
+            return nullptr;
+        }
+    }
+
+    /// Has a problem with @p field on line @p line been reported?
+    bool reportedOn(int line, std::string_view field) const {
+        return std::any_of(sink_.diagnostics().begin(), sink_.diagnostics().end(),
+                           [&](const ConfigDiagnostic& d) { return d.line == line && d.field == field; });
+    }
+
+    /// The scene put the shape's frame at (position, orientation); its centre of mass and
+    /// principal axes are @p frame within it: x = x_scene + R_scene·c, q = q_scene·q_axes.
+    template <typename Object>
+    static void moveTo(Object& object, const BodyFrame& frame) {
+        object.position += object.orientation * frame.centre;
+        object.orientation = glm::normalize(object.orientation * frame.axes);
+    }
+
+    /// A Part record, checked now, joined to its body in finish() (the body may come later).
+    void addPart(const RecordValues& values, const SceneLine& line, int index) {
+        PendingPart pending;
+        pending.name = claimName(values, line, index);
+        pending.line = line.number;
+        pending.column = line.tokens.front().column;
+        pending.body = values.text("Body");
+        pending.bodyColumn = values.valueColumn("Body");
+        if (!values.isSet("Body")) {
+            sink_.report(line.number, pending.column, "Body", "the Name of a Shape=Compound object", lineText(line),
+                         "every Part names the compound it belongs to, e.g. Part, Body=robot, Shape=Box");
+        }
+        CompoundPart& part = pending.part;
+        part.shape = values.choice<Shape>("Shape", kShapeChoices, kDefaultPartShape);
+        part.position = values.triple("Position", kZero);
+        part.orientation = orientationFromDegrees(values.triple("Rotation", kZero));
+        part.scale = values.triple("Scale", kUnitScale);
+        part.radius = values.number("Radius", kRadiusPerDiameter * part.scale.x);
+        part.height = values.number("Height", part.scale.y);
+        pending.massColumn = values.isSet("Mass") ? values.valueColumn("Mass") : 0;
+        part.mass = values.number("Mass", 0);
+        if (part.shape == Shape::Compound || part.shape == Shape::Mesh) {
+            sink_.report(line.number, values.valueColumn("Shape"), "Shape",
+                         "a convex part (Sphere, Box, Capsule, Cylinder or Hull)", values.text("Shape").value_or(""),
+                         part.shape == Shape::Mesh ? "a mesh has no volume, so it cannot be part of a body's mass"
+                                                   : "a compound cannot hold a compound: give its parts to this body");
+            pending.usable = false;
+        } else if (!checkShapeFields(values, line, part.shape)) {
+            pending.usable = false;
+        } else if (part.shape == Shape::Hull) {
+            if (std::shared_ptr<ConvexHull> hull = readHull(values, line, part.scale)) {
+                // The part's own frame moves to the hull's centroid and axes, as a body's would.
+                const BodyFrame frame = moveToPrincipalFrame(*hull);
+                moveTo(part, frame);
+                part.hull = std::move(hull);
+                part.scale = kUnitScale;
+            } else {
+                pending.usable = false;
+            }
+        }
+        pendingParts_.push_back(std::move(pending));
+    }
+
+    /// Joins every Part to its compound, shares out the mass, and moves each compound to its
+    /// centre of mass and principal axes. A Shape=Compound object with no Part is an error.
+    void resolveCompounds() {
+        std::vector<std::vector<const PendingPart*>> partsOf(pendingCompounds_.size());
+        for (const PendingPart& pending : pendingParts_) {
+            if (!pending.body) continue;  // missing or malformed: reported
+            const std::optional<std::size_t> owner = compoundNamed(*pending.body, pending.line, pending.bodyColumn);
+            if (owner) partsOf[*owner].push_back(&pending);
+        }
+        for (std::size_t c = 0; c < pendingCompounds_.size(); ++c) {
+            const PendingCompound& compound = pendingCompounds_[c];
+            const std::string& name = compound.dynamic ? scene_.dynamics[compound.index].name
+                                                       : scene_.kinematics[compound.index].name;
+            if (partsOf[c].empty()) {
+                sink_.report(compound.line, compound.column, "Shape", "at least one Part record with Body=" + name,
+                             "Compound", "a compound body is made of its parts, e.g. Part, Body=" + name +
+                                             ", Shape=Box, Position=(0, 0, 0), Scale=(1, 1, 1)");
+                continue;
+            }
+            // A refused part was reported at its own line; the compound's sums would mean nothing.
+            const bool usable = std::all_of(partsOf[c].begin(), partsOf[c].end(),
+                                            [](const PendingPart* part) { return part->usable; });
+            if (!usable) continue;
+            auto shape = std::make_shared<CompoundShape>();
+            for (const PendingPart* part : partsOf[c]) shape->parts.push_back(part->part);
+            if (!shareMass(compound, partsOf[c], *shape)) continue;
+            const BodyFrame frame = moveToPrincipalFrame(*shape);
+            if (compound.dynamic) {
+                DynamicObject& body = scene_.dynamics[compound.index];
+                moveTo(body, frame);
+                dynamicFrames_[compound.index] = frame;
+                body.compound = std::move(shape);
+            } else {
+                KinematicsObject& mover = scene_.kinematics[compound.index];
+                moveTo(mover, frame);
+                mover.compound = std::move(shape);
+            }
+        }
+    }
+
+    /// The index in pendingCompounds_ of the compound called @p name; nullopt after reporting.
+    std::optional<std::size_t> compoundNamed(const std::string& name, int line, int column) {
+        std::vector<std::string> compounds;
+        for (std::size_t c = 0; c < pendingCompounds_.size(); ++c) {
+            const PendingCompound& compound = pendingCompounds_[c];
+            const std::string& candidate = compound.dynamic ? scene_.dynamics[compound.index].name
+                                                            : scene_.kinematics[compound.index].name;
+            if (equalsIgnoreCase(candidate, name)) return c;
+            compounds.push_back(candidate);
+        }
+        std::string hint;
+        if (const auto other = names_.find(toLower(name)); other != names_.end()) {
+            hint = quoted(other->second.name) + " is the " + std::string(other->second.record) + " on line " +
+                   std::to_string(other->second.line) + ", not a Shape=Compound object; parts belong to compounds";
+        } else if (const auto suggestion = closestMatch(name, compounds)) {
+            hint = "did you mean '" + *suggestion + "'?";
+        } else {
+            hint = "no object is called " + quoted(name) + "; a compound is a DynamicObject or KinematicsObject "
+                   "with Shape=Compound";
+        }
+        sink_.report(line, column, "Body", "the Name of a Shape=Compound object", name, std::move(hint));
+        return std::nullopt;
+    }
+
+    /// The mass rule: every part gives Mass (the body's is their sum, and the body gives
+    /// none), or no part does (the body's Mass is shared by volume: uniform density). A
+    /// kinematic compound has no mass: its parts give none. False after reporting.
+    bool shareMass(const PendingCompound& compound, const std::vector<const PendingPart*>& parts, CompoundShape& shape) {
+        std::size_t given = 0;
+        for (const PendingPart* part : parts) given += part->massColumn != 0 ? 1 : 0;
+        const std::string& name = compound.dynamic ? scene_.dynamics[compound.index].name
+                                                   : scene_.kinematics[compound.index].name;
+        if (!compound.dynamic && given > 0) {
+            const PendingPart& first = **std::find_if(parts.begin(), parts.end(), [](const PendingPart* p) { return p->massColumn != 0; });
+            sink_.report(first.line, first.massColumn, "Mass", "no Mass for a part of a KinematicsObject",
+                         formatNumber(first.part.mass), quoted(name) + " moves as prescribed and has no mass");
+            return false;
+        }
+        if (given > 0 && given < parts.size()) {
+            const PendingPart& missing = **std::find_if(parts.begin(), parts.end(), [](const PendingPart* p) { return p->massColumn == 0; });
+            sink_.report(missing.line, missing.column, "Mass", "a Mass on every Part of " + quoted(name) + " or on none",
+                         lineText(missing.line),
+                         "give each part of a compound its Mass, or give none and the body's Mass is shared by "
+                         "volume (uniform density)");
+            return false;
+        }
+        if (given == parts.size()) {
+            DynamicObject& body = scene_.dynamics[compound.index];
+            if (compound.massColumn != 0) {
+                sink_.report(compound.line, compound.massColumn, "Mass", "no Mass on a compound whose parts give theirs",
+                             formatNumber(body.mass), "the body's mass is the sum of its parts' Mass; leave one out");
+                return false;
+            }
+            Real total = 0;
+            for (const CompoundPart& part : shape.parts) total += part.mass;
+            body.setMass(total);
+            return true;
+        }
+        Real volume = 0;
+        for (const CompoundPart& part : shape.parts) volume += partVolume(part);
+        const Real total = compound.dynamic ? scene_.dynamics[compound.index].mass : kKinematicCompoundMass;
+        for (CompoundPart& part : shape.parts) part.mass = total * partVolume(part) / volume;
+        return true;
+    }
+
+    /// The text of line @p number as the tokenizer saw it (for messages about a whole Part).
+    std::string lineText(int number) const {
+        for (const auto& [key, text] : partLines_) {
+            if (key == number) return text;
+        }
+        return "";
     }
 
     void addPlane(const RecordValues& values, const SceneLine& line, int index) {
@@ -336,6 +719,7 @@ private:
         settings.continuousCollision =
             values.choice<bool>("ContinuousCollision", kBooleanChoices, defaults.continuousCollision);
         settings.threads = count("Threads", defaults.threads);
+        settings.narrowphase = values.choice<NarrowphaseKind>("Narrowphase", kNarrowphaseChoices, defaults.narrowphase);
     }
 
     /// An Expect record (src/world/expectations.hpp): exactly one quantity,
@@ -682,6 +1066,14 @@ private:
             Spring& spring = pending.spring;
             spring.bodyA = *a;
             spring.bodyB = *b;
+            // Anchors are written in the body's frame as the scene placed it; a hull or compound
+            // body's frame has moved to its centre of mass and axes: a' = q_axes⁻¹·(a − c).
+            const auto toBodyFrame = [&](std::size_t body, const Vec3& anchor) {
+                const BodyFrame& frame = dynamicFrames_[body];
+                return glm::conjugate(frame.axes) * (anchor - frame.centre);
+            };
+            spring.anchorA = toBodyFrame(*a, spring.anchorA);
+            if (*b != kFixedInWorld) spring.anchorB = toBodyFrame(*b, spring.anchorB);
             if (!pending.restLengthGiven) {
                 const SpringEnds ends = springEnds(spring, scene_.dynamics);
                 spring.restLength = glm::length(ends.b - ends.a);  // it starts relaxed
@@ -755,7 +1147,16 @@ private:
         std::vector<std::size_t> order(bodies.size());
         for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
         const auto reach = [](const DynamicObject& body) {
-            return body.shape == Shape::Sphere ? body.radius : Real(0.5) * glm::length(body.scale);
+            switch (body.shape) {
+                case Shape::Sphere: return body.radius;
+                case Shape::Capsule: return body.height / 2 + body.radius;
+                case Shape::Cylinder: return std::hypot(body.radius, body.height / 2);
+                case Shape::Hull: return body.hull ? body.hull->boundingRadius : Real(0);
+                case Shape::Compound: return body.compound ? body.compound->boundingRadius : Real(0);
+                case Shape::Box:
+                case Shape::Mesh: break;
+            }
+            return Real(0.5) * glm::length(body.scale);
         };
         std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) {
             return bodies[i].position.x - reach(bodies[i]) < bodies[j].position.x - reach(bodies[j]);
@@ -1074,6 +1475,11 @@ private:
     std::vector<int> springLines_;                ///< Line of each resolved spring in scene_.springs.
     std::vector<PendingJoint> pendingJoints_;    ///< Parallel to scene_.joints.
     int worldLine_ = 0;                     ///< Line of the World record; 0 before one is seen.
+    SceneReadOptions options_;              ///< What the loader may read besides the text.
+    std::vector<PendingCompound> pendingCompounds_;  ///< Shape=Compound objects, in file order.
+    std::vector<PendingPart> pendingParts_;          ///< Part records, joined in finish().
+    std::vector<std::pair<int, std::string>> partLines_;  ///< Each Part's line number and text.
+    std::vector<BodyFrame> dynamicFrames_;  ///< Parallel to scene_.dynamics: where each body's frame moved.
 };
 
 }  // namespace
@@ -1097,7 +1503,11 @@ ConfigError::ConfigError(std::vector<ConfigDiagnostic> diagnostics)
     : std::runtime_error(joinMessages(diagnostics)), diagnostics_(std::move(diagnostics)) {}
 
 Scene parseScene(std::string_view text, const std::string& sourceName) {
-    SceneAssembler assembler(sourceName);
+    return parseScene(text, sourceName, SceneReadOptions{});
+}
+
+Scene parseScene(std::string_view text, const std::string& sourceName, const SceneReadOptions& options) {
+    SceneAssembler assembler(sourceName, options);
     for (const SceneLine& line : tokenizeScene(text)) assembler.add(line);
     return assembler.finish();
 }

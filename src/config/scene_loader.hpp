@@ -39,9 +39,22 @@ private:
     std::vector<ConfigDiagnostic> diagnostics_;
 };
 
-/// @brief Parses scene text. @p sourceName is used in diagnostics and as Scene::sourcePath.
+/// @brief What the loader may read besides the scene's own text.
+struct SceneReadOptions {
+    /// Read the OBJ files that `File=` names (relative to the folder of the scene's
+    /// source name). Off, every File= is an error: the scene is then a function of its
+    /// text alone, which the scene fuzzer needs (tests/fuzz/fuzz_oracles.hpp).
+    bool readFiles = true;
+};
+
+/// @brief Parses scene text. @p sourceName is used in diagnostics and as Scene::sourcePath;
+/// a `File=` path is read relative to its folder.
 /// @throws ConfigError listing every problem found.
 Scene parseScene(std::string_view text, const std::string& sourceName);
+
+/// @brief Parses scene text, reading only what @p options allow.
+/// @throws ConfigError listing every problem found.
+Scene parseScene(std::string_view text, const std::string& sourceName, const SceneReadOptions& options);
 
 /// @brief Reads and parses the scene file at @p path.
 /// @throws ConfigError (also when the file cannot be opened, with line 0).

@@ -47,6 +47,8 @@ constexpr std::string_view kMuHint =
 constexpr std::string_view kForceHint = "a force in newtons; leave MaxForce out for a joint that never breaks";
 constexpr std::string_view kLengthHint = "a length in metres; leave Length out to use the distance at the start";
 constexpr std::string_view kTorqueHint = "a torque in newton metres; leave MaxMotorTorque out for an unlimited motor";
+constexpr std::string_view kHeightHint =
+    "Height is a capsule's segment between its two ball centres, or a cylinder's full length, in metres";
 
 // clang-format off
 /// DynamicObject: the classic 19 positional values, then named-only extras.
@@ -65,6 +67,9 @@ constexpr FieldSpec kDynamicFields[] = {
     {"Rotation",        FieldKind::Vector,     kNamedOnly, Range::Any},              // degrees about X, then Y, then Z
     {"AngularVelocity", FieldKind::Vector,     kNamedOnly, Range::Any},              // rad/s
     {"Hollow",          FieldKind::Boolean,    kNamedOnly, Range::Any},              // sphere only: a thin shell
+    {"Height",          FieldKind::Number,     kNamedOnly, Range::Length, kHeightHint}, // m, Capsule and Cylinder
+    {"Vertices",        FieldKind::Points,     kNamedOnly, Range::Any},              // m, Hull: the points it wraps
+    {"File",            FieldKind::File,       kNamedOnly, Range::Any},              // an OBJ file: Hull points
 };
 
 /// KinematicsObject: 10 positional values (no velocity, mass or radius among them).
@@ -80,6 +85,26 @@ constexpr FieldSpec kKinematicFields[] = {
     {"Radius",          FieldKind::Number,     kNamedOnly, Range::Radius, kSizeHint},
     {"Elasticity",      FieldKind::Number,     kNamedOnly, Range::UnitInterval, kElasticityHint},
     {"Friction",        FieldKind::Number,     kNamedOnly, Range::NonNegative, kFrictionHint},
+    {"Height",          FieldKind::Number,     kNamedOnly, Range::Length, kHeightHint}, // m, Capsule and Cylinder
+    {"Vertices",        FieldKind::Points,     kNamedOnly, Range::Any},              // m, Hull
+    {"File",            FieldKind::File,       kNamedOnly, Range::Any},              // an OBJ file: Hull points, Mesh triangles
+};
+
+/// Part: one part of a Shape=Compound body (docs/config-format.md#part), named fields only.
+/// Position and Rotation are in the body's frame as the scene writes it (its Position and
+/// Rotation), before the loader moves the body to its centre of mass.
+constexpr FieldSpec kPartFields[] = {
+    {"Name",            FieldKind::Name,       kNamedOnly, Range::Any},
+    {"Body",            FieldKind::Name,       kNamedOnly, Range::Any},              // a Shape=Compound object, required
+    {"Shape",           FieldKind::Shape,      kNamedOnly, Range::Any},              // Sphere, Box, Capsule, Cylinder, Hull
+    {"Position",        FieldKind::Vector,     kNamedOnly, Range::Any},              // m, in the body's frame
+    {"Rotation",        FieldKind::Vector,     kNamedOnly, Range::Any},              // degrees, in the body's frame
+    {"Scale",           FieldKind::Vector,     kNamedOnly, Range::Size, kSizeHint},  // m
+    {"Radius",          FieldKind::Number,     kNamedOnly, Range::Radius, kSizeHint},// m
+    {"Height",          FieldKind::Number,     kNamedOnly, Range::Length, kHeightHint}, // m
+    {"Vertices",        FieldKind::Points,     kNamedOnly, Range::Any},              // m, Hull
+    {"File",            FieldKind::File,       kNamedOnly, Range::Any},              // an OBJ file: Hull points
+    {"Mass",            FieldKind::Number,     kNamedOnly, Range::Mass, kMassHint},  // kg; see the Part section
 };
 
 /// CollisionPlane: a point and a normal, 6 positional values.
@@ -123,6 +148,7 @@ constexpr FieldSpec kWorldFields[] = {
     {"FastPath",            FieldKind::Boolean, kNamedOnly, Range::Any},          // src/fast/fast_path.hpp
     {"ContinuousCollision", FieldKind::Boolean, kNamedOnly, Range::Any},              // src/collision/continuous.hpp
     {"Threads",             FieldKind::Number,  kNamedOnly, Range::ThreadCount},      // 0: one per hardware thread
+    {"Narrowphase",         FieldKind::Narrowphase, kNamedOnly, Range::Any},          // convex pairs: Auto, GjkEpa, Mpr
 };
 
 /// Expect: one checked outcome (src/world/expectations.hpp), named fields only.
@@ -241,6 +267,7 @@ constexpr RecordSpec kRecords[] = {
     {RecordKind::BallJoint,        "BallJoint",        kBallJointFields},
     {RecordKind::HingeJoint,       "HingeJoint",       kHingeJointFields},
     {RecordKind::AngularMotor,     "AngularMotor",     kAngularMotorFields},
+    {RecordKind::Part,             "Part",             kPartFields},
 };
 // clang-format on
 static_assert(std::size(kRecords) == kRecordKindCount, "one record table per RecordKind");
@@ -260,10 +287,15 @@ std::string_view componentLetters(FieldKind kind) {
 
 }  // namespace
 
-const std::array<Choice<Shape>, 3> kShapeChoices = {{
+const std::array<Choice<Shape>, 8> kShapeChoices = {{
     {"Sphere", Shape::Sphere},
     {"Box", Shape::Box},
     {"Cube", Shape::Box},  // what most people call a box with equal edges
+    {"Capsule", Shape::Capsule},
+    {"Cylinder", Shape::Cylinder},
+    {"Hull", Shape::Hull},
+    {"Compound", Shape::Compound},
+    {"Mesh", Shape::Mesh},
 }};
 
 const std::array<Choice<IntegratorKind>, 6> kIntegratorChoices = {{
@@ -304,6 +336,12 @@ const std::array<Choice<ExpectCompare>, 3> kCompareChoices = {{
     {"Within", ExpectCompare::Within},
     {"AtLeast", ExpectCompare::AtLeast},
     {"AtMost", ExpectCompare::AtMost},
+}};
+
+const std::array<Choice<NarrowphaseKind>, 3> kNarrowphaseChoices = {{
+    {"Auto", NarrowphaseKind::Auto},
+    {"GjkEpa", NarrowphaseKind::GjkEpa},
+    {"Mpr", NarrowphaseKind::Mpr},
 }};
 
 std::span<const RecordSpec> allRecords() { return kRecords; }

@@ -34,6 +34,9 @@ enum class FieldKind : std::uint8_t {
     Boolean,     ///< Yes or no, a word from kBooleanChoices: `Hollow=true`, `Hollow=yes`, `Hollow=1`.
     Name,        ///< An object name (see parseName()).
     Compare,     ///< A word from kCompareChoices: `Compare=AtLeast` (Expect records).
+    Narrowphase, ///< A word from kNarrowphaseChoices.
+    Points,      ///< A list of points, each a vector: `Vertices=(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)`.
+    File,        ///< A file's path, relative to the scene file's folder: `File=models/ramp.obj`.
 };
 
 /// @brief firstPositional of a field that can only be given as `Field=Value`.
@@ -64,10 +67,11 @@ enum class RecordKind : std::uint8_t {
     HingeJoint,        ///< A shared point and axis; limits, motor.
     AngularMotor,      ///< A torque-limited spin about one axis.
     MayChange,         ///< A field a student may edit (`stepwise grade --expect` compares the rest with the starter).
+    Part,              ///< One part of a `Shape=Compound` body.
 };
 
 /// @brief Number of RecordKind values.
-inline constexpr std::size_t kRecordKindCount = 13;
+inline constexpr std::size_t kRecordKindCount = 14;
 
 /// @brief One record type: its name and its field table.
 struct RecordSpec {
@@ -86,7 +90,7 @@ struct FieldRef {
 };
 
 /// @brief Accepted spellings of Shape (any case). `Cube` is a synonym of `Box`.
-extern const std::array<Choice<Shape>, 3> kShapeChoices;
+extern const std::array<Choice<Shape>, 8> kShapeChoices;
 
 /// @brief Accepted spellings of IntegratorKind (any case), with synonyms.
 extern const std::array<Choice<IntegratorKind>, 6> kIntegratorChoices;
@@ -101,6 +105,9 @@ extern const std::array<Choice<bool>, 6> kBooleanChoices;
 
 /// @brief Accepted spellings of ExpectCompare (any case): Within, AtLeast, AtMost.
 extern const std::array<Choice<ExpectCompare>, 3> kCompareChoices;
+
+/// @brief Accepted spellings of NarrowphaseKind (any case): Auto, GjkEpa, Mpr.
+extern const std::array<Choice<NarrowphaseKind>, 3> kNarrowphaseChoices;
 
 /// @brief Every record type, in the order the documentation lists them.
 std::span<const RecordSpec> allRecords();

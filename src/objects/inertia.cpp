@@ -2,6 +2,8 @@
 /// @brief Inertia tensors of the shapes, the parallel-axis theorem, and world-frame conversions.
 #include "objects/inertia.hpp"
 
+#include "objects/mass_properties.hpp"
+
 namespace stepwise {
 
 /// Solid ball: I = k·m·r² with k = ⅖, the volume integral of r⊥² (the
@@ -53,9 +55,12 @@ Mat3 worldInertia(const Quat& orientation, const Vec3& inertiaBody) { return rot
 void initialiseMassProperties(DynamicObject& body) {
     if (body.shape == Shape::Box) {
         body.inertiaBody = solidBoxInertia(body.mass, body.scale);
-    } else {
+    } else if (body.shape == Shape::Sphere) {
         body.inertiaBody = body.hollow ? hollowSphereInertia(body.mass, body.radius)
                                        : solidSphereInertia(body.mass, body.radius);
+    } else {
+        // Capsules, cylinders, hulls and compounds (lecture 12): objects/mass_properties.hpp.
+        body.inertiaBody = shapeInertia(body);
     }
     body.inverseInertiaBody = Real(1) / body.inertiaBody;
     body.angularMomentum = worldInertia(body.orientation, body.inertiaBody) * body.angularVelocity;

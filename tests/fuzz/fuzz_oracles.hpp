@@ -41,7 +41,9 @@ inline bool cheapEnoughToStep(const Scene& scene) {
 inline bool checkSceneText(std::string_view text) {
     Scene scene;
     try {
-        scene = parseScene(text, "fuzz.scene");
+        // No File=: an input's outcome must depend on its bytes alone, and a path the fuzzer
+        // invents must not make it read whatever file it names (SceneReadOptions).
+        scene = parseScene(text, "fuzz.scene", SceneReadOptions{.readFiles = false});
     } catch (const ConfigError&) {
         return true;  // refused, with a diagnostic: what a bad file should get
     } catch (const std::exception& error) {

@@ -19,6 +19,7 @@
 /// Test it: ctest --preset student -L inertia
 #include "core/student_todo.hpp"
 #include "objects/inertia.hpp"
+#include "objects/mass_properties.hpp"
 
 namespace stepwise {
 
@@ -76,9 +77,12 @@ Mat3 worldInertia(const Quat& orientation, const Vec3& inertiaBody) { return rot
 void initialiseMassProperties(DynamicObject& body) {
     if (body.shape == Shape::Box) {
         body.inertiaBody = solidBoxInertia(body.mass, body.scale);
-    } else {
+    } else if (body.shape == Shape::Sphere) {
         body.inertiaBody = body.hollow ? hollowSphereInertia(body.mass, body.radius)
                                        : solidSphereInertia(body.mass, body.radius);
+    } else {
+        // Capsules, cylinders, hulls and compounds (lecture 12): objects/mass_properties.hpp.
+        body.inertiaBody = shapeInertia(body);
     }
     body.inverseInertiaBody = Real(1) / body.inertiaBody;
     body.angularMomentum = worldInertia(body.orientation, body.inertiaBody) * body.angularVelocity;
