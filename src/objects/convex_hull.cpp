@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -167,6 +168,26 @@ ConvexHull buildConvexHull(std::span<const Vec3> points) {
     if (hull.faces.size() < kMinHullPoints) {
         throw HullError(HullProblem::Flat, "the points' hull has fewer than 4 faces, so no volume");
     }
+
+    // The corners in a fixed order, by z, then y, then x: the numbering (the contacts' feature
+    // ids) then depends on the points alone, not on the order qhull met them in. A box's corners
+    // come out numbered as box_features.hpp numbers them (bit i set: + along axis i), so a hull
+    // cube's contacts with a plane are a box's, in the same order.
+    std::vector<std::uint32_t> byPosition(hull.vertices.size());
+    for (std::uint32_t i = 0; i < byPosition.size(); ++i) byPosition[i] = i;
+    std::sort(byPosition.begin(), byPosition.end(), [&](std::uint32_t x, std::uint32_t y) {
+        const Vec3& p = hull.vertices[x];
+        const Vec3& q = hull.vertices[y];
+        return std::tie(p.z, p.y, p.x) < std::tie(q.z, q.y, q.x);
+    });
+    std::vector<std::uint32_t> renumbered(byPosition.size());
+    std::vector<Vec3> sorted(byPosition.size());
+    for (std::uint32_t i = 0; i < byPosition.size(); ++i) {
+        renumbered[byPosition[i]] = i;
+        sorted[i] = hull.vertices[byPosition[i]];
+    }
+    hull.vertices = std::move(sorted);
+    for (std::uint32_t& index : hull.faceIndices) index = renumbered[index];
 
     // Plane offsets: the largest dot(n, v) over all corners, so dot(n, v) ≤ offset holds for
     // every vertex exactly, even where merging tilted a face by round-off.

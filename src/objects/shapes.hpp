@@ -54,7 +54,7 @@ struct HullFace {
 
 /// @brief A convex polyhedron in its body's frame (centre of mass at the origin, principal axes).
 struct ConvexHull {
-    std::vector<Vec3> vertices;                        ///< Corner points, m, body frame.
+    std::vector<Vec3> vertices;                        ///< Corner points, m, body frame; numbered by z, then y, then x as written.
     std::vector<std::uint32_t> faceIndices;            ///< Each face's loop, one after another.
     std::vector<HullFace> faces;                       ///< Faces, outward normals.
     std::vector<std::array<std::uint32_t, 2>> edges;   ///< Each edge once, as two vertex indices.
