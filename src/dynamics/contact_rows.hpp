@@ -14,12 +14,16 @@ namespace stepwise {
 /// levers (solver_body.hpp); the two friction rows together, as one impulse
 /// vector in the tangent plane.
 struct RoundRows {
-    const SolverContact& c;
+    const SolverContact& c;  ///< The contact: its normal, tangents and levers.
+    /// @brief v_n = J_n·v of the pair, m/s.
     Real normalVelocity(const SolverBody& a, const SolverBody& b) const { return roundNormalVelocity(a, b, c.normal); }
+    /// @brief Applies the normal impulse @p lambda, N·s: Δv = M⁻¹·J_nᵀ·λ.
     void applyNormal(SolverBody& a, SolverBody& b, Real lambda) const { applyRoundNormalImpulse(a, b, c.normal, lambda); }
+    /// @brief The two tangent velocities J_t·v into @p out, m/s.
     void tangentVelocities(const SolverBody& a, const SolverBody& b, Real (&out)[2]) const {
         roundFrictionVelocities(a, b, c.tangent, c.leverA, c.leverB, out);
     }
+    /// @brief Applies the friction impulses @p lambda0, @p lambda1 along the two tangents, N·s.
     void applyTangents(SolverBody& a, SolverBody& b, Real lambda0, Real lambda1) const {
         applyRoundFrictionImpulse(a, b, c.tangent, c.leverA, c.leverB, lambda0, lambda1);
     }
@@ -28,15 +32,19 @@ struct RoundRows {
 /// The three rows of any other contact, read from SolverWorkspace::rows; a
 /// kinematic B's own surface speed is part of J·v.
 struct StoredRows {
-    const SolverContact& c;
-    const ContactRows& r;
+    const SolverContact& c;  ///< The contact: its normal and tangents.
+    const ContactRows& r;    ///< Its rows of J, made once a step by prepareContacts().
+    /// @brief v_n = J_n·v of the pair plus a kinematic B's surface speed, m/s.
     Real normalVelocity(const SolverBody& a, const SolverBody& b) const {
         return rowVelocity(a, b, c.normal, r.normal) + r.normalSurfaceSpeed;
     }
+    /// @brief Applies the normal impulse @p lambda, N·s: Δv = M⁻¹·J_nᵀ·λ.
     void applyNormal(SolverBody& a, SolverBody& b, Real lambda) const { applyRowImpulse(a, b, c.normal, r.normal, lambda); }
+    /// @brief The two tangent velocities J_t·v (with the surface's own speed) into @p out, m/s.
     void tangentVelocities(const SolverBody& a, const SolverBody& b, Real (&out)[2]) const {
         for (int k = 0; k < 2; ++k) out[k] = rowVelocity(a, b, c.tangent[k], r.tangent[k]) + r.tangentSurfaceSpeed[k];
     }
+    /// @brief Applies the friction impulses @p lambda0, @p lambda1 along the two tangents, N·s.
     void applyTangents(SolverBody& a, SolverBody& b, Real lambda0, Real lambda1) const {
         applyRowImpulse(a, b, c.tangent[0], r.tangent[0], lambda0);
         applyRowImpulse(a, b, c.tangent[1], r.tangent[1], lambda1);
