@@ -53,6 +53,7 @@ figures=(
     "08-soft-contact.png:soft_contact"
     "08a-waves.png:waves"
     "09-stability-limit.png:stability_limit"
+    "12-capsule-roll.png:capsule_roll"
 )
 if [[ $list == 1 ]]; then
     for entry in "${figures[@]}"; do echo "${entry%%:*}"; done
@@ -172,6 +173,12 @@ stability_limit() {
     plot config/stress_spring_edge.scene --quantity position --component x --duration 1 --data "$work/spring-edge.csv"
     plot config/stress_spring_past.scene --quantity position --component x --duration 1 --data "$work/spring-past.csv"
     draw 09-stability-limit.gp "$1"
+}
+
+capsule_roll() {
+    plot config/lesson12_capsule_ramp.scene --quantity velocity --object capsule,cylinder --component norm \
+        --data "$work/capsule-roll.csv"
+    draw 12-capsule-roll.gp "$1"
 }
 
 failed=()
