@@ -15,6 +15,8 @@
 #include <vector>
 
 #include "collision/mesh_contacts.hpp"
+#include "config/scene_loader.hpp"
+#include "expectation_runner.hpp"
 #include "collision/mesh_query.hpp"
 #include "objects/triangle_mesh.hpp"
 #include "shape_fixtures.hpp"
@@ -459,4 +461,16 @@ TEST_CASE("A ball rolls down a 20 degree mesh ramp at 5/7 g sin(theta), across i
         previousTime = world.time();
     }
     CHECK(glm::dot(world.dynamics()[0].position, down) > 4);  // 5/7·g·sin20°·(2 s)²/2 = 4.8 m: many cells
+}
+
+TEST_CASE("The lesson-12 mesh ramp scene passes its Expect records: 5/7 g sin20 on an OBJ ramp", "[mesh]") {
+    // config/lesson12_mesh_ramp.scene: a ball on the 32 triangles of config/models/ramp.obj, its
+    // speed expected at a·t (a = 5/7·g·sin20° = 2.3966 m/s²) at 0.75 s and 1.5 s, each within 1 %.
+    const Scene scene = loadSceneFile(STEPWISE_SOURCE_DIR "/config/lesson12_mesh_ramp.scene");
+    REQUIRE(scene.expectations.size() == 2);
+    const Real a = Real(5) / 7 * kStandardGravity * std::sin(Real(20) * kPi / 180);
+    CHECK_THAT(double(scene.expectations[0].target), WithinRel(double(a * 0.75), 1e-4));  // the file's numbers are a·t
+    CHECK_THAT(double(scene.expectations[1].target), WithinRel(double(a * 1.5), 1e-4));
+    const test::ExpectationOutcome outcome = test::runExpectations(scene);
+    CHECK(outcome.passed() == 2);
 }
