@@ -463,10 +463,10 @@ TEST_CASE("A ball rolls down a 20 degree mesh ramp at 5/7 g sin(theta), across i
     CHECK(glm::dot(world.dynamics()[0].position, down) > 4);  // 5/7·g·sin20°·(2 s)²/2 = 4.8 m: many cells
 }
 
-TEST_CASE("The lesson-12 mesh ramp scene passes its Expect records: 5/7 g sin20 on an OBJ ramp", "[mesh]") {
-    // config/lesson12_mesh_ramp.scene: a ball on the 32 triangles of config/models/ramp.obj, its
+TEST_CASE("The mesh ramp scene passes its Expect records: 5/7 g sin20 on an OBJ ramp", "[mesh]") {
+    // config/mesh_ramp.scene: a ball on the 32 triangles of config/models/ramp.obj, its
     // speed expected at a·t (a = 5/7·g·sin20° = 2.3966 m/s²) at 0.75 s and 1.5 s, each within 1 %.
-    const Scene scene = loadSceneFile(STEPWISE_SOURCE_DIR "/config/lesson12_mesh_ramp.scene");
+    const Scene scene = loadSceneFile(STEPWISE_SOURCE_DIR "/config/mesh_ramp.scene");
     REQUIRE(scene.expectations.size() == 2);
     const Real a = Real(5) / 7 * kStandardGravity * std::sin(Real(20) * kPi / 180);
     CHECK_THAT(double(scene.expectations[0].target), WithinRel(double(a * 0.75), 1e-4));  // the file's numbers are a·t
