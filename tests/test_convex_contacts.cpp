@@ -89,7 +89,7 @@ Quat randomRotation(std::mt19937& random) {
 
 }  // namespace
 
-TEST_CASE("Every pair of convex shapes has a test, meshes and a plane as A have none yet", "[narrowphase]") {
+TEST_CASE("Every pair of convex shapes has a test, and a plane as A has none", "[narrowphase]") {
     const GeometryType convex[] = {GeometryType::Sphere, GeometryType::Box, GeometryType::Capsule, GeometryType::Cylinder,
                                    GeometryType::Hull};
     for (const GeometryType a : convex) {

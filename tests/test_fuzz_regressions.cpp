@@ -67,8 +67,12 @@ TEST_CASE("The fuzzers' seeds pass their oracles: command lines parse, and the s
     for (const fs::directory_entry& entry : fs::directory_iterator(fs::path(STEPWISE_SOURCE_DIR) / "config")) {
         if (entry.path().extension() != ".scene") continue;
         INFO(entry.path().filename().string());
+        const std::string text = readBytes(entry.path());
+        // The oracle reads no file (its input's outcome must depend on its bytes alone), so it
+        // refuses a scene that names an OBJ model; such a scene is no seed.
+        if (text.find("File=") != std::string::npos) continue;
         bool refused = true;
-        REQUIRE_NOTHROW(refused = stepwise::fuzz::checkSceneText(readBytes(entry.path())));
+        REQUIRE_NOTHROW(refused = stepwise::fuzz::checkSceneText(text));
         CHECK_FALSE(refused);
         ++scenes;
     }

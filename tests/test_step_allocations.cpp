@@ -6,10 +6,14 @@
 
 #if !defined(__SANITIZE_ADDRESS__)
 
+#include <array>
+#include <memory>
 #include <string>
+#include <vector>
 
 #include "allocation_counter.hpp"
 #include "config/scene_loader.hpp"
+#include "objects/triangle_mesh.hpp"
 #include "test_support.hpp"
 
 using namespace stepwise;
@@ -65,6 +69,43 @@ TEST_CASE("World::step allocates nothing in steady state", "[allocations]") {
 TEST_CASE("A box pyramid allocates nothing per step once it has settled", "[allocations]") {
     // The 210-box pyramid of lecture 8 (sequential impulse, the AABB tree chosen by Auto).
     CHECK(allocationsPerRun(configScene("lesson08_pyramid.scene"), true) == 0);
+}
+
+TEST_CASE("Bodies on a triangle mesh allocate nothing per step", "[allocations][mesh]") {
+    // A 10 x 10 grid of 200 triangles: a ball rolling across it at 1 m/s (still on it after the
+    // 3 s counted here) and a box that slides to rest on it. The hierarchy's query keeps its
+    // nodes in a fixed stack and the pair test gathers its points in fixed arrays (mesh_query.hpp,
+    // mesh_contacts.hpp). Sleep is off, so both are tested every step.
+    std::vector<Vec3> vertices;
+    std::vector<std::array<std::uint32_t, 3>> triangles;
+    constexpr std::uint32_t n = 10;
+    for (std::uint32_t i = 0; i <= n; ++i) {
+        for (std::uint32_t k = 0; k <= n; ++k) vertices.emplace_back(Real(i), 0, Real(k));
+    }
+    for (std::uint32_t i = 0; i < n; ++i) {
+        for (std::uint32_t k = 0; k < n; ++k) {
+            const std::uint32_t a = i * (n + 1) + k;
+            triangles.push_back({a, a + 1, a + n + 1});
+            triangles.push_back({a + n + 1, a + 1, a + n + 2});
+        }
+    }
+    Scene scene = test::emptyScene();
+    scene.settings.sleeping = false;
+    KinematicsObject floor;
+    floor.name = "floor";
+    floor.shape = Shape::Mesh;
+    floor.mesh = std::make_shared<const TriangleMesh>(buildTriangleMesh(vertices, triangles));
+    scene.kinematics.push_back(floor);
+    DynamicObject ball = test::sphere("ball", Vec3(1, 0.25, 2), Vec3(1, 0, 0.3), 0.25, 1, 0, 0.5);
+    ball.angularVelocity = glm::cross(Vec3(0, 1, 0), ball.velocity) / Real(0.25);
+    scene.dynamics.push_back(ball);
+    DynamicObject box = test::dynamicBox("box", Vec3(2, 0.25, 6), Vec3(0.5), 1, 0.3);
+    box.velocity = Vec3(2, 0, 0);
+    scene.dynamics.push_back(box);
+    for (const bool stepPlan : {true, false}) {
+        INFO((stepPlan ? "with the plan" : "with StepPlan=Off"));
+        CHECK(allocationsPerRun(scene, stepPlan) == 0);
+    }
 }
 
 #endif

@@ -1,5 +1,5 @@
 /// @file closest_points.cpp
-/// @brief Closest points of two segments (two dot-product equations, then clamping), and of a box to a point.
+/// @brief Closest points of two segments (two dot-product equations, then clamping), of a box to a point, of a triangle to a point.
 #include "collision/closest_points.hpp"
 
 #include <algorithm>
@@ -75,6 +75,50 @@ NearestFace nearestFace(const Vec3& local, const Vec3& halfExtents) {
     face.normal[axis] = local[axis] >= Real(0) ? Real(1) : Real(-1);
     face.inside = leastInside;
     return face;
+}
+
+TriangleClosestPoint closestPointOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+    // The regions in Ericson's order (§5.1.5): corner a, corner b, edge ab, corner c, edge ac,
+    // edge bc, then the face. Each weight triple says where the point is.
+    const Vec3 ab = b - a;
+    const Vec3 ac = c - a;
+    const Vec3 ap = p - a;
+    const Real d1 = glm::dot(ab, ap);
+    const Real d2 = glm::dot(ac, ap);
+    if (d1 <= 0 && d2 <= 0) return {a, {1, 0, 0}};
+
+    const Vec3 bp = p - b;
+    const Real d3 = glm::dot(ab, bp);
+    const Real d4 = glm::dot(ac, bp);
+    if (d3 >= 0 && d4 <= d3) return {b, {0, 1, 0}};
+
+    const Real vc = d1 * d4 - d3 * d2;
+    if (vc <= 0 && d1 >= 0 && d3 <= 0) {
+        const Real v = d1 / (d1 - d3);
+        return {a + v * ab, {1 - v, v, 0}};
+    }
+
+    const Vec3 cp = p - c;
+    const Real d5 = glm::dot(ab, cp);
+    const Real d6 = glm::dot(ac, cp);
+    if (d6 >= 0 && d5 <= d6) return {c, {0, 0, 1}};
+
+    const Real vb = d5 * d2 - d1 * d6;
+    if (vb <= 0 && d2 >= 0 && d6 <= 0) {
+        const Real w = d2 / (d2 - d6);
+        return {a + w * ac, {1 - w, 0, w}};
+    }
+
+    const Real va = d3 * d6 - d5 * d4;
+    if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) {
+        const Real w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+        return {b + w * (c - b), {0, 1 - w, w}};
+    }
+
+    const Real denominator = 1 / (va + vb + vc);
+    const Real v = vb * denominator;
+    const Real w = vc * denominator;
+    return {a + v * ab + w * ac, {1 - v - w, v, w}};
 }
 
 }  // namespace stepwise

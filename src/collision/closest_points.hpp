@@ -1,5 +1,6 @@
 /// @file closest_points.hpp
-/// @brief Closest points: of two line segments (the edge–edge contact of box_box.cpp), and of a box to a point (sphere_box.cpp, continuous.cpp).
+/// @brief Closest points: of two line segments (the edge–edge contact of box_box.cpp), of a box to a point (sphere_box.cpp,
+/// continuous.cpp), and of a triangle to a point (mesh_contacts.cpp).
 #pragma once
 
 #include "core/types.hpp"
@@ -57,5 +58,29 @@ struct NearestFace {
 /// A point inside gives no closest-point direction (the offset is zero), so
 /// a sphere whose centre is inside a box leaves through this face.
 NearestFace nearestFace(const Vec3& local, const Vec3& halfExtents);
+
+/// @brief The point of a triangle closest to a point, with its barycentric weights.
+///
+/// The weights say which feature holds it: all three above 0, the face; one
+/// of them 0, the edge opposite that corner; two of them 0, the remaining corner.
+struct TriangleClosestPoint {
+    Vec3 point{0, 0, 0};         ///< The closest point of the triangle, m.
+    Real weights[3] = {1, 0, 0}; ///< point = w₀·a + w₁·b + w₂·c, each in [0, 1], summing to 1.
+};
+
+/// @brief The point of the triangle @p a, @p b, @p c closest to @p p (Ericson, *Real-Time Collision
+/// Detection*, §5.1.5).
+///
+/// The plane of the triangle is cut by the lines through its edges and the
+/// perpendiculars at its corners into seven *Voronoi regions*: three of the
+/// corners, three of the edges, one of the face. The tests go from the
+/// corners to the edges to the face, each by dot products of ab = b − a,
+/// ac = c − a and the vectors to p: with d₁ = ab·ap and d₂ = ac·ap, p lies in
+/// a's region when d₁ ≤ 0 and d₂ ≤ 0; in ab's when the signed area
+/// vc = d₁d₄ − d₃d₂ (d₃ = ab·bp, d₄ = ac·bp) is ≤ 0 with 0 ≤ d₁ and d₃ ≤ 0, and
+/// its point is then a + (d₁/(d₁ − d₃))·ab; and so on. In the face region the
+/// point is p's projection, a + v·ab + w·ac with v = vb/(va + vb + vc),
+/// w = vc/(va + vb + vc). A triangle of zero area is not handled (a mesh has none).
+TriangleClosestPoint closestPointOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c);
 
 }  // namespace stepwise

@@ -210,6 +210,16 @@ SidePlane sidePlane(const Feature& reference, int edge) {
     return {outward, glm::dot(outward, from)};
 }
 
+/// Keeps the incident point if it lies inside every side plane of the reference face (a sphere's centre over a triangle).
+int clipPoint(const Feature& reference, const Feature& incident, ClipVertex* out) {
+    for (int side = 0; side < reference.count; ++side) {
+        const SidePlane plane = sidePlane(reference, side);
+        if (glm::dot(plane.normal, incident.points[0]) - plane.offset > kTouchTolerance) return 0;
+    }
+    out[0] = {incident.points[0], 0, 0};
+    return 1;
+}
+
 /// Clips the incident segment by the reference face's side planes (a two-point Sutherland–Hodgman).
 int clipSegment(const Feature& reference, const Feature& incident, ClipVertex* out) {
     out[0] = {incident.points[0], 0, 0};
@@ -323,40 +333,18 @@ int keepSpreadContactPoints(ContactPoint* points, int count, const Vec3& normal)
     return keptCount;
 }
 
-bool convexManifold(const Geometry& a, const Geometry& b, const Vec3& normal, const Vec3& onA, const Vec3& onB,
-                    Real depth, Real maxGap, ContactManifold& out) {
-    Feature fa, fb;
-    featureOf(a, normal, fa);
-    featureOf(b, -normal, fb);
+namespace {
 
-    // Step 2: the reference face. SAT's rule (box_box.cpp section 2) on the two faces most
-    // aligned with the normal: B's face only if it separates the shapes clearly more than A's,
-    // and a face at all only if the algorithm's own direction (an edge against an edge, a rim)
-    // does not separate them clearly more than that face.
-    const bool faceOfA = fa.count >= 3;
-    const bool faceOfB = fb.count >= 3;
-    if (!faceOfA && !faceOfB) return singlePoint(fa, fb, normal, onA, onB, depth, maxGap, out);
-    const ConvexShape sa = convexShapeOf(a);
-    const ConvexShape sb = convexShapeOf(b);
-    const Real tolerance = kFaceBiasAbsolute * std::min(innerSize(a), innerSize(b));
-    const Real separationA = faceOfA ? separationAlong(sa, sb, fa.normal) : std::numeric_limits<Real>::lowest();
-    const Real separationB = faceOfB ? separationAlong(sa, sb, -fb.normal) : std::numeric_limits<Real>::lowest();
-    const bool referenceIsB = !faceOfA || (faceOfB && separationB > kFaceBiasRelative * separationA + tolerance);
-    const Real faceSeparation = referenceIsB ? separationB : separationA;
-    const Feature& reference = referenceIsB ? fb : fa;
-    const Feature& incident = referenceIsB ? fa : fb;
-    if (-depth > kFaceBiasRelative * faceSeparation + tolerance || incident.count < 2) {
-        return singlePoint(fa, fb, normal, onA, onB, depth, maxGap, out);
-    }
-
-    // Step 3: clip.
+/// Steps 3 and 4: the incident feature clipped by the reference face's side planes, and the
+/// points within @p maxGap at the middle of the overlap (all of them: the caller cuts them down).
+/// @return how many points @p found holds
+int clipAndKeep(const Feature& reference, const Feature& incident, bool referenceIsB, Real maxGap, ContactPoint* found) {
     ClipVertex polygon[kMaxClipped];
-    const int count = incident.count == 2 ? clipSegment(reference, incident, polygon) : clipFace(reference, incident, polygon);
-
-    // Step 4: the points within reach, at the middle of the overlap.
+    const int count = incident.count == 1   ? clipPoint(reference, incident, polygon)
+                      : incident.count == 2 ? clipSegment(reference, incident, polygon)
+                                            : clipFace(reference, incident, polygon);
     const Vec3 referenceNormal = reference.normal;  // points at the incident shape
     const Vec3 onReference = reference.points[0];
-    ContactPoint found[kMaxClipped];
     int foundCount = 0;
     const std::uint32_t faces = (referenceIsB ? kReferenceIsB : 0u) | ((reference.id & kByte) << kReferenceShift) |
                                 ((incident.id & kByte) << kIncidentShift) | kClippedPoint;
@@ -367,13 +355,84 @@ bool convexManifold(const Geometry& a, const Geometry& b, const Vec3& normal, co
         const std::uint32_t labels = (polygon[i].inEdge & kLabelMask) | ((polygon[i].outEdge & kLabelMask) << kOutLabelShift);
         found[foundCount++] = {surface - referenceNormal * (Real(0.5) * gap), -gap, faces | labels};
     }
-    if (foundCount == 0) return singlePoint(fa, fb, normal, onA, onB, depth, maxGap, out);
-    foundCount = keepSpreadContactPoints(found, foundCount, referenceNormal);
+    return foundCount;
+}
 
-    out.normal = referenceIsB ? -referenceNormal : referenceNormal;
+/// Steps 2 to 4 on the features @p fa and @p fb the two shapes show along the normal.
+/// @param tolerance the absolute part of the face bias, kFaceBiasAbsolute × the smaller shape's innerSize(), m
+bool manifoldOfFeatures(const Feature& fa, const Feature& fb, const ConvexShape& sa, const ConvexShape& sb,
+                        Real tolerance, const Vec3& normal, const Vec3& onA, const Vec3& onB, Real depth, Real maxGap,
+                        ContactManifold& out) {
+    // Step 2: the reference face. SAT's rule (box_box.cpp section 2) on the two faces most
+    // aligned with the normal: B's face only if it separates the shapes clearly more than A's,
+    // and a face at all only if the algorithm's own direction (an edge against an edge, a rim)
+    // does not separate them clearly more than that face.
+    const bool faceOfA = fa.count >= 3;
+    const bool faceOfB = fb.count >= 3;
+    if (!faceOfA && !faceOfB) return singlePoint(fa, fb, normal, onA, onB, depth, maxGap, out);
+    const Real separationA = faceOfA ? separationAlong(sa, sb, fa.normal) : std::numeric_limits<Real>::lowest();
+    const Real separationB = faceOfB ? separationAlong(sa, sb, -fb.normal) : std::numeric_limits<Real>::lowest();
+    const bool referenceIsB = !faceOfA || (faceOfB && separationB > kFaceBiasRelative * separationA + tolerance);
+    const Real faceSeparation = referenceIsB ? separationB : separationA;
+    const Feature& reference = referenceIsB ? fb : fa;
+    const Feature& incident = referenceIsB ? fa : fb;
+    if (-depth > kFaceBiasRelative * faceSeparation + tolerance || incident.count < 2) {
+        return singlePoint(fa, fb, normal, onA, onB, depth, maxGap, out);
+    }
+
+    // Steps 3 and 4: clip, and keep the points within reach.
+    ContactPoint found[kMaxClipped];
+    const int foundCount =
+        keepSpreadContactPoints(found, clipAndKeep(reference, incident, referenceIsB, maxGap, found), reference.normal);
+    if (foundCount == 0) return singlePoint(fa, fb, normal, onA, onB, depth, maxGap, out);
+    out.normal = referenceIsB ? -reference.normal : reference.normal;
     out.pointCount = 0;
     for (int i = 0; i < foundCount; ++i) out.add(found[i].position, found[i].depth, found[i].featureId);
     return true;
+}
+
+/// What a triangle shows along @p direction: its face seen from that side, counter-clockwise
+/// seen from there (id 0 the front, whose normal is (p₁ − p₀) × (p₂ − p₀); id 1 the back).
+void triangleFeature(const ConvexShape& triangle, const Vec3& direction, Feature& f) {
+    const Vec3* p = triangle.corners;
+    const Vec3 front = glm::normalize(glm::cross(p[1] - p[0], p[2] - p[0]));
+    const bool seenFromFront = glm::dot(front, direction) >= 0;
+    f.count = 3;
+    f.points[0] = p[0];
+    f.points[1] = seenFromFront ? p[1] : p[2];
+    f.points[2] = seenFromFront ? p[2] : p[1];
+    f.normal = seenFromFront ? front : -front;
+    f.id = seenFromFront ? 0u : 1u;
+}
+
+}  // namespace
+
+bool convexManifold(const Geometry& a, const Geometry& b, const Vec3& normal, const Vec3& onA, const Vec3& onB,
+                    Real depth, Real maxGap, ContactManifold& out) {
+    Feature fa, fb;
+    featureOf(a, normal, fa);
+    featureOf(b, -normal, fb);
+    const Real tolerance = kFaceBiasAbsolute * std::min(innerSize(a), innerSize(b));
+    return manifoldOfFeatures(fa, fb, convexShapeOf(a), convexShapeOf(b), tolerance, normal, onA, onB, depth, maxGap, out);
+}
+
+bool triangleManifold(const Geometry& a, const ConvexShape& triangle, const Vec3& normal, const Vec3& onA,
+                      const Vec3& onB, Real depth, Real maxGap, ContactManifold& out) {
+    Feature fa, fb;
+    featureOf(a, normal, fa);
+    triangleFeature(triangle, -normal, fb);
+    // A triangle has no thickness: the bias scales with A alone.
+    const Real tolerance = kFaceBiasAbsolute * innerSize(a);
+    return manifoldOfFeatures(fa, fb, convexShapeOf(a), triangle, tolerance, normal, onA, onB, depth, maxGap, out);
+}
+
+int triangleFacePoints(const Geometry& a, const ConvexShape& triangle, Real maxGap, ContactPoint* points) {
+    Feature fa, fb;
+    const Vec3* p = triangle.corners;
+    const Vec3 front = glm::normalize(glm::cross(p[1] - p[0], p[2] - p[0]));
+    triangleFeature(triangle, front, fb);
+    featureOf(a, -front, fa);  // what A shows towards the triangle
+    return clipAndKeep(fb, fa, true, maxGap, points);
 }
 
 }  // namespace stepwise

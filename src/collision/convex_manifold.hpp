@@ -42,6 +42,7 @@
 #pragma once
 
 #include "collision/narrowphase.hpp"
+#include "collision/support.hpp"
 
 namespace stepwise {
 
@@ -72,6 +73,42 @@ inline constexpr int kMaxFeatureVertices = 64;
 /// @return true when at least one point was kept
 bool convexManifold(const Geometry& a, const Geometry& b, const Vec3& normal, const Vec3& onA, const Vec3& onB,
                     Real depth, Real maxGap, ContactManifold& out);
+
+/// @brief The manifold of A and one triangle of a mesh (as B) around a normal found by GJK, EPA or closest points.
+///
+/// The triangle shows the face that looks towards A (its front, whose normal
+/// is (p₁ − p₀) × (p₂ − p₀), or its back), and the steps of the file comment
+/// follow, with the face bias scaled by A alone (a triangle has no thickness).
+/// @param triangle its three corners, world (convexShapeOfTriangle())
+/// @param normal   unit, from A towards the triangle
+/// @param onA      the deepest (or closest) point of A, m
+/// @param onB      the deepest (or closest) point of the triangle, m
+/// @param depth    the depth along @p normal, m (negative: a gap)
+/// @param maxGap   points whose surfaces are farther apart than this are left out, m
+/// @param out      the manifold
+/// @return true when at least one point was kept
+bool triangleManifold(const Geometry& a, const ConvexShape& triangle, const Vec3& normal, const Vec3& onA,
+                      const Vec3& onB, Real depth, Real maxGap, ContactManifold& out);
+
+/// Most points triangleFacePoints() gives: a clipped face of kMaxFeatureVertices corners, plus one per side plane.
+inline constexpr int kMaxTriangleFacePoints = 2 * kMaxFeatureVertices;
+
+/// @brief The points of A that lie over a triangle's front face, pushed along its normal: steps 3 and 4
+/// of the file comment with the triangle's front as the reference face, whatever A shows.
+///
+/// A's feature towards the triangle (a box's face, a capsule's segment, a
+/// sphere's centre) is clipped by the triangle's three side planes, and every
+/// point within @p maxGap is kept at the middle of the overlap, with its depth
+/// along the face normal; none is dropped for being a fifth (the caller
+/// gathers the points of many triangles, then cuts them down). What does not
+/// lie over the triangle gives nothing: that is what the mesh test asks of a
+/// contact it has turned to the face normal (mesh_contacts.hpp), whose other
+/// part lies over the neighbouring triangle.
+/// @param triangle its three corners, counter-clockwise seen from the front (convexShapeOfTriangle())
+/// @param maxGap   points whose surfaces are farther apart than this are left out, m
+/// @param points   room for kMaxTriangleFacePoints points
+/// @return how many points were written (their normal, from A, is minus the face normal)
+int triangleFacePoints(const Geometry& a, const ConvexShape& triangle, Real maxGap, ContactPoint* points);
 
 /// @brief Keeps the deepest of @p count points and those that span the widest area around it, up to kMaxManifoldPoints.
 ///

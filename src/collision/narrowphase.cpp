@@ -11,6 +11,7 @@
 
 #include "collision/continuous.hpp"
 #include "collision/convex_pairs.hpp"
+#include "collision/mesh_contacts.hpp"
 
 namespace stepwise {
 
@@ -24,18 +25,20 @@ constexpr std::size_t kGeometryTypes = static_cast<std::size_t>(GeometryType::Co
 /// have one). Box–sphere is sphere–box with the roles swapped and the normal
 /// flipped (box_sphere.cpp). Capsules, cylinders and hulls meet the other
 /// convex shapes by GJK + EPA (collideConvexPair(), convex_pairs.hpp), a
-/// capsule meets a capsule or a sphere by closest points of segments. These
+/// capsule meets a capsule or a sphere by closest points of segments. Every
+/// convex shape meets a triangle mesh triangle by triangle (collideConvexMesh(),
+/// mesh_contacts.hpp); the table's entry hands back one manifold, the step
+/// keeps one per direction of push (collideMeshShapes()). These
 /// are the tests of NarrowphaseKind::Auto; collidePair() sends a pair to
-/// another algorithm when the World asks for one. nullptr: no test yet
-/// (meshes), the pair never touches.
+/// another algorithm when the World asks for one. nullptr: the pair never touches.
 constexpr PairTest kPairTests[kGeometryTypes][kGeometryTypes] = {
     //                B: Sphere                Box                Plane                 Capsule                Cylinder           Hull               Mesh
-    /* A: Sphere   */ {collideSphereSphere,  collideSphereBox,  collideSpherePlane,   collideSphereCapsule,  collideConvexPair, collideConvexPair, nullptr},
-    /* A: Box      */ {collideBoxSphere,     collideBoxBox,     collideBoxPlane,      collideConvexPair,     collideConvexPair, collideConvexPair, nullptr},
+    /* A: Sphere   */ {collideSphereSphere,  collideSphereBox,  collideSpherePlane,   collideSphereCapsule,  collideConvexPair, collideConvexPair, collideConvexMesh},
+    /* A: Box      */ {collideBoxSphere,     collideBoxBox,     collideBoxPlane,      collideConvexPair,     collideConvexPair, collideConvexPair, collideConvexMesh},
     /* A: Plane    */ {nullptr,              nullptr,           nullptr,              nullptr,               nullptr,           nullptr,           nullptr},
-    /* A: Capsule  */ {collideCapsuleSphere, collideConvexPair, collideCapsulePlane,  collideCapsuleCapsule, collideConvexPair, collideConvexPair, nullptr},
-    /* A: Cylinder */ {collideConvexPair,    collideConvexPair, collideCylinderPlane, collideConvexPair,     collideConvexPair, collideConvexPair, nullptr},
-    /* A: Hull     */ {collideConvexPair,    collideConvexPair, collideHullPlane,     collideConvexPair,     collideConvexPair, collideConvexPair, nullptr},
+    /* A: Capsule  */ {collideCapsuleSphere, collideConvexPair, collideCapsulePlane,  collideCapsuleCapsule, collideConvexPair, collideConvexPair, collideConvexMesh},
+    /* A: Cylinder */ {collideConvexPair,    collideConvexPair, collideCylinderPlane, collideConvexPair,     collideConvexPair, collideConvexPair, collideConvexMesh},
+    /* A: Hull     */ {collideConvexPair,    collideConvexPair, collideHullPlane,     collideConvexPair,     collideConvexPair, collideConvexPair, collideConvexMesh},
     /* A: Mesh     */ {nullptr,              nullptr,           nullptr,              nullptr,               nullptr,           nullptr,           nullptr},
 };
 
@@ -274,11 +277,32 @@ void collideConvexShapes(const BodySet& bodies, const CandidatePair& pair, const
     for (int i = 0; i < found.pointCount; ++i) appendContacts(pair, found.normal, found.points[i], parts, contacts);
 }
 
+/// A convex shape against a triangle mesh (mesh_contacts.hpp), with the reach of collideConvexShapes().
+/// The mesh test may find several manifolds, one per direction of push (a box in a corner of
+/// two walls): all their points are appended as contacts of the one pair, each with its own normal.
+void collideMeshShapes(const BodySet& bodies, const CandidatePair& pair, const Geometry& a, const Geometry& b,
+                       bool continuousCollision, Real speculativeDistance, const PartPair& parts,
+                       std::vector<Contact>& contacts) {
+    if (pairTestFor(a.type, b.type) == nullptr) return;
+    const Real reach = reachOf(bodies, pair, innerRadius(bodies.dynamics[pair.a]), false, continuousCollision,
+                               speculativeDistance);
+    const Real maxGap = kSpeculativeDistance + std::max(reach - speculativeDistance, Real(0));
+    MeshContacts found;
+    if (!meshContacts(a, b, maxGap, found)) return;
+    for (int m = 0; m < found.count; ++m) {
+        const ContactManifold& manifold = found.manifolds[m];
+        for (int i = 0; i < manifold.pointCount; ++i) appendContacts(pair, manifold.normal, manifold.points[i], parts, contacts);
+    }
+}
+
 /// One geometry of A against one of B, by the routine @p narrowphase gives their shapes.
+/// A mesh has one routine whatever @p narrowphase says: triangle by triangle (mesh_contacts.hpp).
 void collideGeometries(const BodySet& bodies, const CandidatePair& pair, const Geometry& a, const Geometry& b,
                        NarrowphaseKind narrowphase, bool continuousCollision, Real speculativeDistance,
                        const PartPair& parts, std::vector<Contact>& contacts) {
-    if (isClassicPair(a.type, b.type, narrowphase)) {
+    if (b.type == GeometryType::Mesh) {
+        collideMeshShapes(bodies, pair, a, b, continuousCollision, speculativeDistance, parts, contacts);
+    } else if (isClassicPair(a.type, b.type, narrowphase)) {
         collideClassic(bodies, pair, a, b, continuousCollision, speculativeDistance, parts, contacts);
     } else {
         collideConvexShapes(bodies, pair, a, b, narrowphase, continuousCollision, speculativeDistance, parts, contacts);
