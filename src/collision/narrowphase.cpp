@@ -277,15 +277,18 @@ void collideConvexShapes(const BodySet& bodies, const CandidatePair& pair, const
     for (int i = 0; i < found.pointCount; ++i) appendContacts(pair, found.normal, found.points[i], parts, contacts);
 }
 
-/// A convex shape against a triangle mesh (mesh_contacts.hpp), with the reach of collideConvexShapes().
+/// A convex shape against a triangle mesh (mesh_contacts.hpp), with a plane's reach: the continuous
+/// stage sweeps bodies against convex shapes only, so a mesh, like a plane, gets contacts as far
+/// ahead as the body can move this step, uncapped, and the solver stops a fast body at its surface.
 /// The mesh test may find several manifolds, one per direction of push (a box in a corner of
 /// two walls): all their points are appended as contacts of the one pair, each with its own normal.
 void collideMeshShapes(const BodySet& bodies, const CandidatePair& pair, const Geometry& a, const Geometry& b,
                        bool continuousCollision, Real speculativeDistance, const PartPair& parts,
                        std::vector<Contact>& contacts) {
     if (pairTestFor(a.type, b.type) == nullptr) return;
-    const Real reach = reachOf(bodies, pair, innerRadius(bodies.dynamics[pair.a]), false, continuousCollision,
-                               speculativeDistance);
+    constexpr bool kUncappedLikeAPlane = true;
+    const Real reach = reachOf(bodies, pair, innerRadius(bodies.dynamics[pair.a]), kUncappedLikeAPlane,
+                               continuousCollision, speculativeDistance);
     const Real maxGap = kSpeculativeDistance + std::max(reach - speculativeDistance, Real(0));
     MeshContacts found;
     if (!meshContacts(a, b, maxGap, found)) return;
