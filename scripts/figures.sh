@@ -53,6 +53,8 @@ figures=(
     "08-soft-contact.png:soft_contact"
     "08a-waves.png:waves"
     "09-stability-limit.png:stability_limit"
+    "10-gjk-bounds.png:gjk_bounds"
+    "11-mpr-depth.png:mpr_depth"
 )
 if [[ $list == 1 ]]; then
     for entry in "${figures[@]}"; do echo "${entry%%:*}"; done
@@ -172,6 +174,16 @@ stability_limit() {
     plot config/stress_spring_edge.scene --quantity position --component x --duration 1 --data "$work/spring-edge.csv"
     plot config/stress_spring_past.scene --quantity position --component x --duration 1 --data "$work/spring-past.csv"
     draw 09-stability-limit.gp "$1"
+}
+
+gjk_bounds() {
+    "$figures_program" gjk-bounds > "$work/gjk-bounds.dat"
+    draw 10-gjk-bounds.gp "$1"
+}
+
+mpr_depth() {
+    "$figures_program" mpr-depth > "$work/mpr-depth.dat"
+    draw 11-mpr-depth.gp "$1"
 }
 
 failed=()
