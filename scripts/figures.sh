@@ -53,6 +53,8 @@ figures=(
     "08-soft-contact.png:soft_contact"
     "08a-waves.png:waves"
     "09-stability-limit.png:stability_limit"
+    "10-gjk-bounds.png:gjk_bounds"
+    "11-mpr-depth.png:mpr_depth"
     "12-capsule-roll.png:capsule_roll"
 )
 if [[ $list == 1 ]]; then
@@ -179,6 +181,16 @@ capsule_roll() {
     plot config/lesson12_capsule_ramp.scene --quantity velocity --object capsule,cylinder --component norm \
         --data "$work/capsule-roll.csv"
     draw 12-capsule-roll.gp "$1"
+}
+
+gjk_bounds() {
+    "$figures_program" gjk-bounds > "$work/gjk-bounds.dat"
+    draw 10-gjk-bounds.gp "$1"
+}
+
+mpr_depth() {
+    "$figures_program" mpr-depth > "$work/mpr-depth.dat"
+    draw 11-mpr-depth.gp "$1"
 }
 
 failed=()

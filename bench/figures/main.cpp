@@ -18,6 +18,8 @@
 ///   stepwise-figures sat-axes           lecture 5: both boxes' shadows on each of the 15 axes
 ///   stepwise-figures clipping           lecture 6: the incident face clipped by each side plane in turn
 ///   stepwise-figures waves              appendix 8a: the waves and batches of the 1000-ball rain
+///   stepwise-figures gjk-bounds         lecture 10: GJK's upper and lower bounds on the distance, per iteration
+///   stepwise-figures mpr-depth          lecture 11: SAT, EPA and MPR's depth and normal as a box slides off a table
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -30,6 +32,10 @@
 #include "collision/box_features.hpp"
 #include "collision/clip_polygon.hpp"
 #include "collision/contact.hpp"
+#include "collision/convex_pairs.hpp"
+#include "collision/epa.hpp"
+#include "collision/gjk.hpp"
+#include "collision/mpr.hpp"
 #include "config/scene_loader.hpp"
 #include "dynamics/contact_solver.hpp"
 #include "fast/fast_workspace.hpp"
@@ -421,9 +427,97 @@ int waves(std::uint64_t step) {
     return 0;
 }
 
+// ------------------------------------------------------------------ lecture 10
+
+/// lesson10_gjk.scene, the narrowphase of step 1: GJK on spike–table and can–table, with the
+/// simplex recorded after every iteration (gjk()'s record). For each iteration: |v|, the upper
+/// bound on the distance, and v·w/|v|, the lower bound, with w = s(−v) the support point the next
+/// iteration asks for (gjk.hpp, step 3). Both bounds must close on the gap worked out by hand from
+/// where the step left each body: the spike's lowest vertex is 0.3 m below its centre, the can's
+/// lowest rim point 0.2·cos 60° + 0.2·sin 60° below its centre, the table's top at y = 1.
+/// Distances of the cores, m (neither shape has a margin).
+int gjkBounds() {
+    World world = loadWorld("lesson10_gjk.scene");
+    const Real canReach = Real(0.2) * std::cos(kPi / 3) + Real(0.2) * std::sin(kPi / 3);
+    int printed = 0;
+    StageWatcher watcher(Stage::Narrowphase, [&](const StageEvent&, const World& w) {
+        const Geometry table = geometryOf(w.kinematics()[0]);
+        const Real tableTop = table.centre.y + table.halfExtents.y;
+        for (const char* name : {"spike", "can"}) {
+            const DynamicObject& body = w.dynamics()[dynamicIndex(w, name)];
+            const Real below = std::string(name) == "spike" ? Real(0.3) : canReach;
+            const Real gap = body.position.y - below - tableTop;
+            const ConvexShape a = convexShapeOf(geometryOf(body));
+            const ConvexShape b = convexShapeOf(table);
+            std::vector<Simplex> record;
+            const GjkResult result = gjk(a, b, &record);
+            if (result.overlap || std::abs(double(result.distance - gap)) > 1e-9)
+                throw FigureError(std::string("GJK's distance for ") + name + " is not the gap worked out by hand");
+            if (printed++ > 0) std::printf("\n\n");
+            std::printf("# %s|table, step 1: gap by hand %.9f m; GJK %.9f m in %d support queries\n", name, double(gap),
+                        double(result.distance), result.iterations);
+            std::printf("# iteration simplex-points upper=|v| lower=v.w/|v| (m)\n");
+            for (std::size_t i = 0; i < record.size(); ++i) {
+                const Vec3 v = record[i].closest;
+                const Vec3 wPoint = coreSupport(a, -v) - coreSupport(b, v);
+                const Real length = glm::length(v);
+                std::printf("%zu %d %.12f %.12f\n", i + 1, record[i].count, double(length),
+                            double(glm::dot(v, wPoint) / length));
+            }
+        }
+        return true;
+    });
+    stepUntil(world, watcher, 1);
+    return 0;
+}
+
+// ------------------------------------------------------------------ lecture 11
+
+/// A flat box (0.4 × 0.2 × 0.4 m) sunk 5 cm into the top of lesson 11's table (2 × 1 × 2 m, top at
+/// y = 1), slid along x from the middle to past the table's edge: the depth and the normal's y that
+/// SAT (collideBoxBox), GJK+EPA and MPR give at each offset. By hand, the least overlap is
+/// min(0.05, 1.2 − x) (the top face, or the side face x = 1 once the box hangs over), and MPR's
+/// ray from the centres' difference v₀ = (x, 0.55, 0) to the origin leaves A − B through its
+/// bottom face while x·0.05/0.55 < 1.2 − x, through its side face after.
+int mprDepth() {
+    const Real sunk = Real(0.05);
+    Geometry table;
+    table.type = GeometryType::Box;
+    table.centre = Vec3(0, 0.5, 0);
+    table.halfExtents = Vec3(1, 0.5, 1);
+    Geometry brick = table;
+    brick.halfExtents = Vec3(0.2, 0.1, 0.2);
+    std::printf("# x (m)  least-overlap-by-hand  SAT-depth SAT-ny  EPA-depth EPA-ny  MPR-depth MPR-ny  MPR-by-hand (m)\n");
+    constexpr int kSamples = 240;
+    for (int i = 0; i <= kSamples; ++i) {
+        const Real x = Real(0.8) + Real(0.39) * Real(i) / Real(kSamples);  // from 0.8 m to 1 cm short of falling off
+        brick.centre = Vec3(x, 1 + brick.halfExtents.y - sunk, 0);
+        const Real reachX = table.halfExtents.x + brick.halfExtents.x - x;  // overlap along x
+        const Real least = std::min(sunk, reachX);
+        const Real centresY = brick.centre.y - table.centre.y;
+        const Real mprByHand = x * sunk / centresY < reachX ? sunk : reachX;
+        ContactManifold sat;
+        if (!collideBoxBox(brick, table, sat)) throw FigureError("SAT finds no contact");
+        const ConvexShape a = convexShapeOf(brick), b = convexShapeOf(table);
+        const GjkResult g = gjk(a, b);
+        const EpaResult e = g.overlap ? epa(a, b, g.simplex) : EpaResult{};
+        const MprResult m = mpr(a, b);
+        if (!e.valid || !m.overlap) throw FigureError("EPA or MPR finds no overlap");
+        Real satDepth = 0;
+        for (int p = 0; p < sat.pointCount; ++p) satDepth = std::max(satDepth, sat.points[p].depth);
+        if (std::abs(double(e.depth - least)) > 1e-6 || std::abs(double(satDepth - least)) > 1e-6)
+            throw FigureError("SAT or EPA's depth is not the least overlap worked out by hand");
+        if (std::abs(double(m.depth - mprByHand)) > 1e-6) throw FigureError("MPR's depth is not the face its ray leaves by");
+        std::printf("%.6f %.9f %.9f %.6f %.9f %.6f %.9f %.6f %.9f\n", double(x), double(least), double(satDepth),
+                    double(sat.normal.y), double(e.depth), double(e.normal.y), double(m.depth), double(m.normal.y),
+                    double(mprByHand));
+    }
+    return 0;
+}
+
 int usage() {
     std::fprintf(stderr, "usage: stepwise-figures impulse-geometry | bounce-impulses | sat-axes | clipping | "
-                         "waves [STEP]\n");
+                         "waves [STEP] | gjk-bounds | mpr-depth\n");
     return 2;
 }
 
@@ -437,6 +531,8 @@ int main(int argc, char** argv) {
         if (command == "bounce-impulses" && argc == 2) return bounceImpulses();
         if (command == "sat-axes" && argc == 2) return satAxes();
         if (command == "clipping" && argc == 2) return clipping();
+        if (command == "gjk-bounds" && argc == 2) return gjkBounds();
+        if (command == "mpr-depth" && argc == 2) return mprDepth();
         if (command == "waves" && argc <= 3) {
             const long step = argc == 3 ? std::strtol(argv[2], nullptr, 10) : 120;
             if (step < 1) return usage();
