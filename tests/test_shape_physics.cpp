@@ -107,6 +107,23 @@ Real tiltDegrees(const DynamicObject& body, const Quat& start, Vec3 axis = Vec3(
     return std::acos(std::clamp(c, Real(-1), Real(1))) * 180 / kPi;
 }
 
+/// Steps @p scene for @p settle seconds, then @p watch more: the farthest any body moved from
+/// where it had settled, m.
+Real driftAfterSettling(const Scene& scene, Real settle, Real watch) {
+    World world(scene);
+    while (world.time() < settle) world.step();
+    std::vector<Vec3> settled;
+    for (const DynamicObject& body : world.dynamics()) settled.push_back(body.position);
+    Real drift = 0;
+    while (world.time() < settle + watch) {
+        world.step();
+        for (std::size_t i = 0; i < settled.size(); ++i) {
+            drift = std::max(drift, glm::length(world.dynamics()[i].position - settled[i]));
+        }
+    }
+    return drift;
+}
+
 std::size_t contactsOf(const World& world, std::uint32_t body) {
     return std::size_t(std::count_if(world.contacts().begin(), world.contacts().end(),
                                       [&](const Contact& c) { return c.a == body && c.depth > -kTouchTolerance; }));
@@ -352,17 +369,7 @@ TEST_CASE("A log stack of 10 capsules stands for 10 s without sleep", "[shapes][
             scene.dynamics.push_back(log);
         }
     }
-    World world(scene);
-    while (world.time() < 1) world.step();
-    std::vector<Vec3> settled;
-    for (const DynamicObject& body : world.dynamics()) settled.push_back(body.position);
-    Real drift = 0;
-    while (world.time() < 11) {
-        world.step();
-        for (std::size_t i = 0; i < settled.size(); ++i) {
-            drift = std::max(drift, glm::length(world.dynamics()[i].position - settled[i]));
-        }
-    }
+    const Real drift = driftAfterSettling(scene, 1, 10);
     INFO("largest drift " << drift << " m");
     CHECK(drift < 0.01);
 }
@@ -384,17 +391,7 @@ TEST_CASE("A pyramid of 55 hull cubes stands for 10 s without sleep", "[shapes][
         }
     }
     REQUIRE(scene.dynamics.size() == 55);
-    World world(scene);
-    while (world.time() < 1) world.step();
-    std::vector<Vec3> settled;
-    for (const DynamicObject& body : world.dynamics()) settled.push_back(body.position);
-    Real drift = 0;
-    while (world.time() < 11) {
-        world.step();
-        for (std::size_t i = 0; i < settled.size(); ++i) {
-            drift = std::max(drift, glm::length(world.dynamics()[i].position - settled[i]));
-        }
-    }
+    const Real drift = driftAfterSettling(scene, 1, 10);
     INFO("largest drift " << drift << " m");
     CHECK(drift < 0.01);
 }

@@ -24,6 +24,25 @@ inline constexpr Real kTouchTolerance = Real(1e-6);
 /// tests for contacts this far apart (findContacts() in narrowphase.hpp says why).
 inline constexpr Real kSpeculativeDistance = Real(0.01);
 
+/// @brief MurmurHash3's 32-bit finaliser (Appleby): spreads every bit of @p h over the result.
+///
+/// Feature ids that must also name a compound's parts or a mesh's triangle are mixed by it
+/// (narrowphase.cpp, mesh_contacts.cpp): two different inputs give the same id with odds of
+/// 2⁻³², so warm starting never matches a point of one part or triangle with another's.
+constexpr std::uint32_t mixFeatureBits(std::uint32_t h) {
+    constexpr std::uint32_t kMix1 = 0x85EBCA6Bu;  // the finaliser's two multipliers
+    constexpr std::uint32_t kMix2 = 0xC2B2AE35u;
+    h ^= h >> 16;
+    h *= kMix1;
+    h ^= h >> 13;
+    h *= kMix2;
+    h ^= h >> 16;
+    return h;
+}
+
+/// 2³²/φ: an odd multiplier with well mixed bits, to spread a small index before mixFeatureBits().
+inline constexpr std::uint32_t kGoldenRatioBits = 0x9E3779B9u;
+
 /// @brief Which array a body lives in.
 enum class BodyKind : std::uint8_t {
     Dynamic,    ///< World dynamics array.

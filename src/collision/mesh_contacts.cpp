@@ -280,20 +280,10 @@ bool triangleContact(const Geometry& a, const ConvexShape& shapeA, const WorldTr
     return out.count > 0;
 }
 
-/// A feature id that also names the triangle: MurmurHash3's 32-bit finaliser (Appleby) over the
-/// pair, as narrowphase.cpp mixes in a compound's parts. Two different pairs give the same id with
-/// odds of 2⁻³², so warm starting does not match points of two triangles.
+/// A feature id that also names the triangle (mixFeatureBits(), contact.hpp), as narrowphase.cpp
+/// mixes in a compound's parts: warm starting does not match points of two triangles.
 std::uint32_t withTriangle(std::uint32_t featureId, std::uint32_t triangle) {
-    constexpr std::uint32_t kGoldenRatio = 0x9E3779B9u;  // 2³²/φ: odd, with well mixed bits
-    constexpr std::uint32_t kMix1 = 0x85EBCA6Bu;         // the finaliser's two multipliers
-    constexpr std::uint32_t kMix2 = 0xC2B2AE35u;
-    std::uint32_t h = featureId ^ ((triangle + 1u) * kGoldenRatio);
-    h ^= h >> 16;
-    h *= kMix1;
-    h ^= h >> 13;
-    h *= kMix2;
-    h ^= h >> 16;
-    return h;
+    return mixFeatureBits(featureId ^ ((triangle + 1u) * kGoldenRatioBits));
 }
 
 /// The points gathered under one normal, before they are cut down to four.

@@ -191,20 +191,10 @@ bool isClassicPair(GeometryType a, GeometryType b, NarrowphaseKind narrowphase) 
 }
 
 /// A feature id that also names the two parts (0 for a body that is no compound), so that warm
-/// starting never matches a point of one part with a point of another. The parts and the pair
-/// test's id are mixed by MurmurHash3's 32-bit finaliser (Appleby), which spreads every input
-/// bit over the result: two different (id, part, part) give the same number with odds of 2⁻³².
+/// starting never matches a point of one part with a point of another (mixFeatureBits(), contact.hpp).
 std::uint32_t withParts(std::uint32_t featureId, std::uint32_t partA, std::uint32_t partB) {
-    constexpr std::uint32_t kGoldenRatio = 0x9E3779B9u;  // 2³²/φ: odd, with well mixed bits
-    constexpr std::uint32_t kMix1 = 0x85EBCA6Bu;         // the finaliser's two multipliers
-    constexpr std::uint32_t kMix2 = 0xC2B2AE35u;
-    std::uint32_t h = featureId ^ (partA * kGoldenRatio) ^ ((partB + 1u) * kMix1);
-    h ^= h >> 16;
-    h *= kMix1;
-    h ^= h >> 13;
-    h *= kMix2;
-    h ^= h >> 16;
-    return h;
+    constexpr std::uint32_t kPartMultiplier = 0x85EBCA6Bu;  // any odd number unlike kGoldenRatioBits
+    return mixFeatureBits(featureId ^ (partA * kGoldenRatioBits) ^ ((partB + 1u) * kPartMultiplier));
 }
 
 /// Which parts of two compound bodies a pair of geometries is: their ids go into the feature ids.
