@@ -888,6 +888,46 @@ TEST_CASE("A screenshot shows the bodies where the physics puts them, and drawin
     }
 }
 
+TEST_CASE("A screenshot draws capsules, hulls, cylinders and compounds where their bodies are", "[viewer][xvfb]") {
+    // No gravity: each body stays where the scene puts it. A pixel at each body's projected centre
+    // of mass must show that body's own colour (the floor and sky are grey), so each new shape
+    // is drawn, and drawn where the physics has it (a hull's and a compound's position is its
+    // centre of mass, which lies inside these convex shapes).
+    if (const std::string why = screenshotsUnavailable(); !why.empty()) STEPWISE_SKIP(why);
+    const int width = 320, height = 240;
+    const TempFile png("shapes.png"), scenePath("shapes.scene");
+    std::ofstream(scenePath.path) << "World, Gravity=(0, 0, 0)\n"
+                                     "CollisionPlane, Name=floor\n"
+                                     "DynamicObject, Name=pill, Shape=Capsule, Radius=0.3, Height=1, Position=(-1.5, 1, 0), "
+                                     "Rotation=(0, 0, 90), Color=(0.9, 0.1, 0.1)\n"
+                                     "DynamicObject, Name=gem, Shape=Hull, Vertices=(0, -0.5, 0), (0, 0.5, 0), (0.5, 0, 0), "
+                                     "(-0.5, 0, 0), (0, 0, 0.5), (0, 0, -0.5), Position=(0, 1, 0), Color=(0.1, 0.9, 0.1)\n"
+                                     "DynamicObject, Name=can, Shape=Cylinder, Radius=0.4, Height=0.8, Position=(1.5, 1, 0), "
+                                     "Color=(0.1, 0.1, 0.9)\n"
+                                     "DynamicObject, Name=pair, Shape=Compound, Position=(0, 2.5, 0), Color=(0.9, 0.1, 0.1)\n"
+                                     "Part, Body=pair, Shape=Box, Scale=(0.8, 0.8, 0.8), Position=(-0.3, 0, 0)\n"
+                                     "Part, Body=pair, Shape=Sphere, Radius=0.45, Position=(0.3, 0, 0)\n";
+    const Result shot = viewUnderXvfb(scenePath.quoted() + " --screenshot " + png.quoted() + " --at 0.1 --size 320x240 --keys O");
+    INFO(shot.output);
+    REQUIRE(shot.exitCode == 0);
+    const Image image = decodePng(readBytes(png.path));
+    const World world(loadSceneFile(scenePath.path.string()));
+    const OrbitCamera camera = cameraForScene(world);
+    auto colourAt = [&](const Vec3& p) {
+        const Vec3 pixel = camera.project(p, width, height);
+        REQUIRE(pixel.x >= 0);
+        REQUIRE(pixel.x < width);
+        REQUIRE(pixel.y >= 0);
+        REQUIRE(pixel.y < height);
+        return dominant(image.at(static_cast<int>(pixel.x), static_cast<int>(pixel.y)));
+    };
+    CHECK(colourAt(world.findDynamic("pill")->position) == 'r');
+    CHECK(colourAt(world.findDynamic("gem")->position) == 'g');
+    CHECK(colourAt(world.findDynamic("can")->position) == 'b');
+    CHECK(colourAt(world.findDynamic("pair")->position) == 'r');
+    CHECK(colourAt(Vec3(0, 1.8, 0)) == '-');  // between the gem and the pair: nothing drawn
+}
+
 TEST_CASE("A screenshot with the overlays shows the heads-up display's text", "[viewer][xvfb]") {
     if (const std::string why = screenshotsUnavailable(); !why.empty()) STEPWISE_SKIP(why);
     const TempFile png("viewer-hud.png");
