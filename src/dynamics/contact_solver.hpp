@@ -165,7 +165,7 @@ struct ContactRows {
 
 /// @brief The anchors of a contact that turn with their body, in body frames (zero for a side that does not turn), m.
 struct TurningAnchors {
-    Vec3 localA{0, 0, 0};  ///< l_A: the point in A's body frame (a box's material point).
+    Vec3 localA{0, 0, 0};  ///< l_A: the point in A's body frame (a box's material point; a capsule's axis point under the contact).
     Vec3 localB{0, 0, 0};  ///< l_B: the same in B's body frame.
 };
 

@@ -63,6 +63,24 @@ std::uint32_t planePose(const BodySet& bodies) {
     return static_cast<std::uint32_t>(bodies.dynamics.size() + bodies.kinematics.size());
 }
 
+/// A turning anchor split in two: the part the body's turn carries, and the rest, which stays fixed.
+struct RoundedAnchor {
+    Vec3 turning;  ///< From the body's centre to the anchor point that turns with it, m.
+    Vec3 rest;     ///< From that point to the contact point, m; only its part along n is used.
+};
+
+/// For a capsule, the point of its axis segment nearest the contact turns with the body and the
+/// radius is the fixed rest (the capsule is a segment grown by r: its surface under a contact is
+/// always r from the axis); for any other shape the whole lever @p lever (centre to contact) turns.
+template <class Body>
+RoundedAnchor roundedAnchor(const Body& body, const Vec3& lever) {
+    if (body.shape != Shape::Capsule) return {lever, Vec3(0)};
+    const Vec3 axis = body.orientation * Vec3(0, 1, 0);
+    const Real halfHeight = Real(0.5) * body.height;
+    const Vec3 core = std::clamp(glm::dot(lever, axis), -halfHeight, halfHeight) * axis;
+    return {core, lever - core};
+}
+
 /// The contact's pass record (returned) and its start record @p start.
 SolverContact prepareOne(const BodySet& bodies, const Contact& contact, Real h, SolverWorkspace& w,
                          ContactStart& start) {
@@ -108,9 +126,20 @@ SolverContact prepareOne(const BodySet& bodies, const Contact& contact, Real h, 
     c.separationOffset = start.startSeparation + (turnsB ? Real(0) : glm::dot(offsetB, c.normal)) -
                          (turnsA ? Real(0) : glm::dot(rA, c.normal));
     if (turnsA || turnsB) {
+        // A turning anchor is a point of the body, carried by its turn through the substeps. A
+        // capsule's is the point of its axis under the contact, with the rest of the way to the
+        // contact, along n, kept fixed (roundedAnchor()): a capsule rolling about its axis keeps
+        // the point under it touching, as a ball does, instead of lifting its surface point by
+        // r·(1 − cos ωh) in a step.
+        const RoundedAnchor anchorA = turnsA ? roundedAnchor(a, rA) : RoundedAnchor{rA, Vec3(0)};
+        const RoundedAnchor anchorB =
+            turnsB && other.dynamic != nullptr ? roundedAnchor(*other.dynamic, offsetB)
+            : turnsB && contact.b.kind == BodyKind::Kinematic ? roundedAnchor(bodies.kinematics[contact.b.index], offsetB)
+                                                              : RoundedAnchor{offsetB, Vec3(0)};
+        c.separationOffset += glm::dot(anchorB.rest, c.normal) - glm::dot(anchorA.rest, c.normal);
         TurningAnchors anchors;
-        if (turnsA) anchors.localA = glm::conjugate(a.orientation) * rA;
-        if (turnsB) anchors.localB = glm::conjugate(*orientationB) * offsetB;
+        if (turnsA) anchors.localA = glm::conjugate(a.orientation) * anchorA.turning;
+        if (turnsB) anchors.localB = glm::conjugate(*orientationB) * anchorB.turning;
         c.turningAnchors = static_cast<std::uint32_t>(w.turningAnchors.size());
         w.turningAnchors.push_back(anchors);
     }
