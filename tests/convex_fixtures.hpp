@@ -1,5 +1,5 @@
 /// @file convex_fixtures.hpp
-/// @brief Small convex hulls built by hand (a cube, a tetrahedron) and geometry makers for the convex tests.
+/// @brief Small convex hulls built by hand (a tetrahedron; the cube is shape_fixtures.hpp's) and geometry makers for the convex tests.
 ///
 /// The hull builder of the scene loader comes from another stage; these
 /// hulls are written out vertex by vertex and face by face, so a test of
@@ -14,6 +14,7 @@
 
 #include "collision/narrowphase.hpp"
 #include "objects/shapes.hpp"
+#include "shape_fixtures.hpp"
 
 namespace stepwise::test {
 
@@ -50,14 +51,7 @@ inline std::shared_ptr<ConvexHull> hullOf(const std::vector<Vec3>& vertices,
     return hull;
 }
 
-/// A cube of half edge @p h centred on the origin: 8 vertices (bit i set ⇒ +h on axis i), 6 square faces.
-inline std::shared_ptr<ConvexHull> cubeHull(Real h) {
-    std::vector<Vec3> v;
-    for (int k = 0; k < 8; ++k) v.emplace_back((k & 1) ? h : -h, (k & 2) ? h : -h, (k & 4) ? h : -h);
-    auto hull = hullOf(v, {{0, 2, 6, 4}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 5, 7, 6}});
-    hull->volume = 8 * h * h * h;
-    return hull;
-}
+// A cube: cubeHull() of shape_fixtures.hpp, the one written out face by face.
 
 /// The tetrahedron with corners (0,0,0), (s,0,0), (0,s,0), (0,0,s), moved so its centroid is the origin.
 inline std::shared_ptr<ConvexHull> tetrahedronHull(Real s) {

@@ -162,7 +162,7 @@ TEST_CASE("Capsules side by side touch at both ends of their overlap, crossing o
 }
 
 TEST_CASE("A hull cube on a box gives the same manifold as a box on the box (SAT)", "[narrowphase]") {
-    const auto cube = cubeHull(0.5);
+    const auto cube = cubeHull(Vec3(Real(0.5)));
     const Geometry table = boxAt(Vec3(0), Vec3(1, 0.5, 1));
     std::mt19937 random(7);
     std::uniform_real_distribution<Real> shift(-0.3, 0.3), yaw(-kPi, kPi), sink(-0.005, 0.02);

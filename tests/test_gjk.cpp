@@ -78,7 +78,7 @@ TEST_CASE("GJK: capsules crossing and parallel are apart by their axes' distance
 }
 
 TEST_CASE("GJK: a point's distance from a hull cube is its distance from the nearest face, edge or corner", "[gjk]") {
-    const auto cube = cubeHull(0.5);
+    const auto cube = cubeHull(Vec3(Real(0.5)));
     const Geometry hull = hullAt(*cube, Vec3(0));
     // Beyond a face: 2 − 0.5. Beyond an edge: |(0.5, 0.5)|. Beyond a corner: |(0.5, 0.5, 0.5)|.
     CHECK_THAT(gjkOf(sphereAt(Vec3(2, 0.2, 0.1), 0), hull).distance, WithinAbs(1.5, kRoundOff));
