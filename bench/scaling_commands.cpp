@@ -12,6 +12,7 @@
 #include "scaling.hpp"
 #include "stage_costs.hpp"
 #include "sphere_rain_scene.hpp"
+#include "wall_rain_scene.hpp"
 #ifdef STEPWISE_HAVE_BULLET
 #include "bullet/side_by_side.hpp"
 #endif
@@ -45,9 +46,11 @@ const char* const kScalingUsage =
     "  benchmark's reference problems at 1/60, 1/240 and 1/960 s; then the verdicts on the\n"
     "  targets of issue #7. Needs a build with -DSTEPWISE_WITH_BULLET=ON.\n"
     "\n"
-    "usage: stepwise-bench rain-scene --count N [--seed S] --out FILE\n"
+    "usage: stepwise-bench rain-scene --count N [--seed S] [--walls planes|boxes] --out FILE\n"
     "\n"
-    "  Writes the sphere-rain scene of N spheres (config/bench_sphere_rain_1k.scene is N = 1000).\n";
+    "  Writes the sphere-rain scene of N spheres (config/bench_sphere_rain_1k.scene is N = 1000);\n"
+    "  --walls boxes writes the wall rain instead: a floor and walls of static boxes, e = 0.5,\n"
+    "  columns 1.25 m apart, Sleep=false (issue #33).\n";
 
 namespace {
 
@@ -197,14 +200,16 @@ int rainSceneCommand(const std::vector<std::string>& args) {
     std::optional<std::size_t> n;
     std::uint64_t seed = 1;
     std::string out;
+    bool boxWalls = false;  // --walls boxes: the wall rain (wall_rain_scene.hpp)
     const int status = parse(args, {},
                              {{"--count", [&](const std::string& v) { n = count(v); return n.has_value(); }},
+                              {"--walls", [&](const std::string& v) { boxWalls = v == "boxes"; return v == "boxes" || v == "planes"; }},
                               {"--seed", [&](const std::string& v) { seed = std::strtoull(v.c_str(), nullptr, 10); return true; }},
                               {"--out", [&](const std::string& v) { out = v; return true; }}});
     if (status) return status;
     if (!n || out.empty()) return usage("rain-scene needs --count N and --out FILE");
     std::ofstream file(out);
-    file << sphereRainSceneText(*n, seed);
+    file << (boxWalls ? wallRainSceneText(*n, seed) : sphereRainSceneText(*n, seed));
     if (!file) {
         std::fprintf(stderr, "stepwise-bench: cannot write %s\n", out.c_str());
         return 1;

@@ -1,0 +1,65 @@
+/// @file wall_rain_scene.cpp
+/// @brief Writes the sphere rain into a box of static walls (wall_rain_scene.hpp).
+#include "wall_rain_scene.hpp"
+
+#include "config/scene_writing.hpp"
+#include "sphere_rain_scene.hpp"
+
+namespace stepwise::bench {
+
+namespace {
+
+using namespace scene_writing;
+
+constexpr double kJitter = 0.05;       ///< Largest random offset of a sphere from its column, m.
+constexpr double kDensity = 1000;      ///< kg/m³ (water): 524 kg per sphere.
+constexpr double kElasticity = 0.5;    ///< e = 0.5, spheres and walls alike (combined by product: 0.25).
+constexpr double kFriction = 0.5;      ///< μ = 0.5, spheres and walls alike.
+constexpr double kHeadroom = 1.0;      ///< How far the walls reach above the top layer, m.
+constexpr double kPi = 3.14159265358979323846;
+
+/// One static box: a KinematicsObject with no velocity, centred at (x, y, z), of size (sx, sy, sz).
+void appendStaticBox(std::string& text, const char* name, double x, double y, double z, double sx, double sy,
+                     double sz) {
+    append(text,
+           "KinematicsObject, Name=%s, Shape=Box, Position=(%.4f, %.4f, %.4f), Scale=(%.4f, %.4f, %.4f), "
+           "Color=(0.5, 0.5, 0.5), Elasticity=%.1f, Friction=%.1f\n",
+           name, x, y, z, sx, sy, sz, kElasticity, kFriction);
+}
+
+}  // namespace
+
+std::string wallRainSceneText(std::size_t count, std::uint64_t seed) {
+    const double r = double(kRainRadius);
+    const double side = double(latticeColumns(count)) * kWallRainPitch;  // inside width of the box, m
+    const double top = kLatticeClearance + kLatticeLayers * kWallRainPitch;  // the top layer's top, m
+    const double height = top + kHeadroom;
+    const double mass = kDensity * 4.0 / 3.0 * kPi * r * r * r;
+    const double t = kWallThickness;
+    SplitMix64 random(seed);
+
+    std::string text;
+    append(text,
+           "# Wall rain (issue #33): %zu spheres of radius %.1f m into a box %.2f m wide whose floor and walls\n"
+           "# are static boxes, seed %llu.\n",
+           count, r, side, static_cast<unsigned long long>(seed));
+    append(text, "# Written by: stepwise-bench rain-scene --walls boxes --count %zu --seed %llu (bench/wall_rain_scene.cpp).\n",
+           count, static_cast<unsigned long long>(seed));
+    text += "World, TimeStep=1/60, Duration=10, Sleep=false\n";
+    // The floor's top face is y = 0; the walls stand on it, outside the square [0, side]².
+    appendStaticBox(text, "floor", side / 2, -t / 2, side / 2, side + 2 * t, t, side + 2 * t);
+    appendStaticBox(text, "wall_x0", -t / 2, height / 2, side / 2, t, height, side + 2 * t);
+    appendStaticBox(text, "wall_x1", side + t / 2, height / 2, side / 2, t, height, side + 2 * t);
+    appendStaticBox(text, "wall_z0", side / 2, height / 2, -t / 2, side, height, t);
+    appendStaticBox(text, "wall_z1", side / 2, height / 2, side + t / 2, side, height, t);
+    appendLattice(count, random, kWallRainPitch, kJitter, [&](std::size_t n, double x, double y, double z, double vx,
+                                                              double vz) {
+        append(text,
+               "DynamicObject, Name=s%zu, Shape=Sphere, Position=(%.4f, %.4f, %.4f), Velocity=(%.3f, 0, %.3f), "
+               "Radius=%.1f, Mass=%.2f, Elasticity=%.1f, Friction=%.1f\n",
+               n, x, y, z, vx, vz, r, mass, kElasticity, kFriction);
+    });
+    return text;
+}
+
+}  // namespace stepwise::bench
