@@ -5,11 +5,13 @@
 
 #include <atomic>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "config/scene_generator.hpp"
 #include "config/scene_loader.hpp"
 #include "core/thread_pool.hpp"
+#include "fast/fast_path_counts.hpp"
 #include "test_support.hpp"
 
 using namespace stepwise;
@@ -57,6 +59,24 @@ TEST_CASE("The thread pool runs every chunk exactly once, job after job", "[thre
         pool.run(kChunks, chunk);
     }
     for (std::size_t i = 0; i < kChunks; ++i) REQUIRE(runs[i].load() == 50);
+}
+
+TEST_CASE("The thread pool hands over jobs in quick succession and after its workers fall asleep", "[threads]") {
+    // Thousands of tiny jobs back to back meet the workers spinning; a pause longer than
+    // kSpinBeforeSleep finds them asleep. Either way each chunk runs once per job, and what a
+    // chunk wrote is visible when run() returns (the plain, non-atomic writes are read back).
+    const unsigned threads = GENERATE(2u, 4u);
+    ThreadPool pool(threads);
+    constexpr std::size_t kChunks = 8;
+    std::vector<long> written(kChunks, 0);
+    long expected = 0;
+    for (int job = 0; job < 5000; ++job) {
+        auto chunk = [&](std::size_t i) { written[i] += job; };
+        pool.run(kChunks, chunk);
+        expected += job;
+        if (job % 1000 == 999) std::this_thread::sleep_for(kSpinBeforeSleep * 5);  // let the workers sleep
+    }
+    for (std::size_t i = 0; i < kChunks; ++i) REQUIRE(written[i] == expected);
 }
 
 TEST_CASE("Threads=0 means one thread per hardware thread", "[threads]") {
@@ -124,4 +144,32 @@ TEST_CASE("The 210-box pyramid runs bit-identically with 1, 2 and 4 threads", "[
     REQUIRE(mostPairs > kPairsPerChunk);
     requireIdentical(one, runWith(scene, 2, 30));
     requireIdentical(one, runWith(scene, 4, 30));
+}
+
+TEST_CASE("The fast path's contact passes run bit-identically with 1, 2 and 4 threads", "[threads][fast]") {
+    // 1200 balls heaped for 60 steps: waves of hundreds of contacts, which the threads split
+    // between them (parallel_waves.hpp). Each piece of a wave touches bodies no other piece
+    // touches, so the velocities, and the whole trajectory, must be one thread's to the bit.
+    GeneratorOptions options;
+    options.scene = GeneratedScene::SphereRain;
+    options.count = 1200;
+    Scene scene = parseScene(generateSceneText(options), "sphere-rain");
+    scene.settings.fastPath = true;  // the debug build's default is the plain path
+    const auto run = [&](int threads, std::uint64_t* splitWaves) {
+        Scene copy = scene;
+        copy.settings.threads = threads;
+        World world(std::move(copy));
+        for (int step = 0; step < 60; ++step) world.step();
+        *splitWaves = world.fastPathCounts().splitWaves;
+        REQUIRE(world.fastPathCounts().steps > 0);
+        return world.dynamics();
+    };
+    std::uint64_t split = 0;
+    const std::vector<DynamicObject> one = run(1, &split);
+    REQUIRE(split == 0);  // one thread never splits a wave
+    for (const int threads : {2, 4}) {
+        INFO(threads << " threads");
+        requireIdentical(one, run(threads, &split));
+        REQUIRE(split > 0);  // the split really ran
+    }
 }

@@ -5,7 +5,15 @@
 /// variable between jobs: a step creates no thread and allocates nothing.
 /// A job is "run this function on chunks 0 … n−1"; the workers and the
 /// calling thread take chunk numbers from one atomic counter until none are
-/// left, and run() returns when every chunk is done. Which thread runs which
+/// left, and run() returns when every chunk is done.
+///
+/// **Jobs in quick succession.** The solver hands out a job per wave of
+/// contacts, hundreds of times a step, each a few microseconds long. Waking
+/// a sleeping thread through the operating system takes tens of
+/// microseconds, longer than such a job. So a worker that finishes a job
+/// first *spins* (keeps checking for the next one) for kSpinBeforeSleep and
+/// only then sleeps: within a step the next job finds it awake, and between
+/// steps, or in a program that never calls run(), it sleeps and costs nothing. Which thread runs which
 /// chunk changes from run to run, so a job must write only into the slots of
 /// its own chunk and the caller must merge the chunks in chunk order: that is
 /// what keeps the results bit-identical whatever the number of threads
@@ -13,6 +21,8 @@
 #pragma once
 
 #include <atomic>
+#include <chrono>
+#include <cstdint>
 #include <condition_variable>
 #include <cstddef>
 #include <mutex>
@@ -20,6 +30,11 @@
 #include <vector>
 
 namespace stepwise {
+
+/// How long an idle worker keeps checking for the next job before it sleeps. A little over the
+/// longest gap between two jobs of one step's contact passes (a serial stage of a large scene),
+/// and short enough that an idle pool gives its cores back almost at once.
+inline constexpr std::chrono::microseconds kSpinBeforeSleep{200};
 
 /// @brief How many threads `Threads=0` (Auto) means: the machine's hardware threads, at least 1.
 unsigned autoThreadCount();
@@ -61,20 +76,24 @@ private:
     void dispatch(std::size_t chunks, void* context, Trampoline call);
     void workerLoop();
     void takeChunks();
+    /// Waits for a job newer than @p seen: spinning for up to kSpinBeforeSleep, then asleep on wake_.
+    /// Returns false when the pool is stopping.
+    bool waitForJob(std::uint64_t seen);
 
     std::vector<std::thread> workers_;
-    std::mutex mutex_;
-    std::condition_variable wake_;      ///< Workers wait here for a new job (or for stop_).
-    std::condition_variable finished_;  ///< run() waits here for the last worker to leave the job.
+    std::mutex mutex_;                  ///< Held only to fall asleep and to publish a job to sleepers.
+    std::condition_variable wake_;      ///< Workers that spun long enough sleep here.
 
-    // The current job, written under mutex_ before generation_ is bumped.
+    // The current job. Its fields are written before generation_ is bumped (a release), and
+    // read after a worker sees the new generation (an acquire).
     void* context_ = nullptr;
     Trampoline call_ = nullptr;
     std::size_t chunkCount_ = 0;
     std::atomic<std::size_t> nextChunk_{0};
-    std::uint64_t generation_ = 0;  ///< Bumped once per job: a worker runs each job once.
-    unsigned busyWorkers_ = 0;      ///< Workers still inside the current job.
-    bool stop_ = false;
+    std::atomic<std::uint64_t> generation_{0};  ///< Bumped once per job: a worker runs each job once.
+    std::atomic<unsigned> busyWorkers_{0};      ///< Workers still inside the current job.
+    std::atomic<unsigned> sleepers_{0};         ///< Workers asleep on wake_ (only those need a notify).
+    std::atomic<bool> stop_{false};
 };
 
 }  // namespace stepwise

@@ -7,6 +7,7 @@
 #include "dynamics/velocity_change_drift.hpp"
 #include "fast/fast_workspace.hpp"
 #include "fast/packed_substeps.hpp"
+#include "fast/parallel_waves.hpp"
 #include "fast/round_contact_lanes.hpp"
 #include "integrators/integrators.hpp"
 #include "objects/finite_state.hpp"
@@ -101,8 +102,9 @@ void warmStartContactsInLanes(SolverWorkspace& w, FastWorkspace& fast, bool accu
 }
 
 /// solveContacts() with the round contacts in lanes: the same order, the same numbers.
-void solveContactsInLanes(SolverWorkspace& w, FastWorkspace& fast, const ContactSolverSettings& settings, bool useBias) {
-    solveRoundContacts(w, fast, settings, useBias);
+void solveContactsInLanes(SolverWorkspace& w, FastWorkspace& fast, const ContactSolverSettings& settings, bool useBias,
+                          ThreadPool& pool) {
+    solveRoundContactsOnThreads(w, fast, settings, useBias, pool);
     for (const std::uint32_t index : w.otherContacts) solveContact(w, index, settings, useBias);
 }
 
@@ -157,7 +159,7 @@ void substepsOnObjects(const FastSubsteps& in, FastWorkspace& fast) {
             }
             for (int pass = 0; pass < in.velocityIterations; ++pass) {
                 if (in.jointSolver) solveJointsBetweenContactPasses(in.joints, w, in.jointSettings, true);
-                solveContactsInLanes(w, fast, in.contactSettings, true);
+                solveContactsInLanes(w, fast, in.contactSettings, true, in.pool);
             }
             driftByVelocityChange(w, hs, in.integrator, lastSubstep);
             recordCentres(w, fast);  // the relax measures separations where the drift moved the bodies
@@ -168,7 +170,7 @@ void substepsOnObjects(const FastSubsteps& in, FastWorkspace& fast) {
             recordKinematicPoses(bodies, w);
             for (int pass = 0; pass < in.relaxIterations; ++pass) {
                 if (in.jointSolver) solveJointsBetweenContactPasses(in.joints, w, in.jointSettings, false);
-                solveContactsInLanes(w, fast, in.contactSettings, false);
+                solveContactsInLanes(w, fast, in.contactSettings, false, in.pool);
             }
             copyVelocitiesOut(w);
             requireFiniteRecords(in.dynamics, w, fast, kMotion, at(Stage::RelaxConstraints));
@@ -202,14 +204,14 @@ void substepsOnRecords(const FastSubsteps& in, FastWorkspace& fast) {
         // 6. Warm start (the first substep from the contacts; later ones rode along with the kick), solve, move
         timeStage(in.records, Stage::SolveConstraints, [&] {
             if (substep == 0) warmStartContactsInLanes(w, fast, true);
-            for (int pass = 0; pass < in.velocityIterations; ++pass) solveRoundContacts(w, fast, in.contactSettings, true);
+            for (int pass = 0; pass < in.velocityIterations; ++pass) solveRoundContactsOnThreads(w, fast, in.contactSettings, true, in.pool);
             if (driftPackedRecords(w, fast, hs, lastSubstep) != Real(0)) {
                 failOnRecords(w, fast, RecordsHold::PackedPoses, at(Stage::SolveConstraints));
             }
         });
         // 7. Relax; after the last one the objects get their balls' state back
         timeStage(in.records, Stage::RelaxConstraints, [&] {
-            for (int pass = 0; pass < in.relaxIterations; ++pass) solveRoundContacts(w, fast, in.contactSettings, false);
+            for (int pass = 0; pass < in.relaxIterations; ++pass) solveRoundContactsOnThreads(w, fast, in.contactSettings, false, in.pool);
             if (probeRecords(w, fast, RecordsHold::Velocities) != Real(0)) {
                 failOnRecords(w, fast, RecordsHold::Velocities, at(Stage::RelaxConstraints));
             }
@@ -249,7 +251,7 @@ SolverFootprint fastFootprint(const SolverWorkspace& w, const FastWorkspace& fas
     // A pass reads the records, their centres and the batches, and for each other contact its SolverContact and rows.
     f.passBytes = bytesOf(w.bodies) + bytesOf(fast.centres) + bytesOf(fast.roundBatches) + bytesOf(w.rows) +
                   w.otherContacts.size() * sizeof(SolverContact);
-    f.allBytes = solverFootprint(w).allBytes + bytesOf(fast.roundBatches) + bytesOf(fast.nextWave) +
+    f.allBytes = solverFootprint(w).allBytes + bytesOf(fast.roundBatches) + bytesOf(fast.nextWave) + bytesOf(fast.waveBatches) +
                  bytesOf(fast.waveOf) + bytesOf(fast.waveStart) + bytesOf(fast.waveOrder) + bytesOf(fast.centres) +
                  bytesOf(fast.orientations) + bytesOf(fast.freeFlight) + bytesOf(fast.startMomentum);
     return f;

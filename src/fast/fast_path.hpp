@@ -7,7 +7,7 @@
 /// bit for bit. A student never needs to read this folder: every number the
 /// engine computes, the plain path computes too. Nothing here is new physics.
 ///
-/// **How it is faster.** Two things, each a file of this folder:
+/// **How it is faster.** Three things, each a file of this folder:
 /// 1. *Round contacts four at a time* (round_contact_lanes.hpp). Contacts
 ///    between balls, or a ball and a plane, are put in waves of contacts that
 ///    share no body and solved four at a time in SIMD lanes (lanes.hpp). Each
@@ -19,6 +19,11 @@
 ///    uniform forces, a ball's whole state stays in arrays beside its solver
 ///    record for the step: the objects are read once at its start and written
 ///    once at its end, instead of four times a substep.
+///
+/// 3. *Threads* (parallel_waves.hpp). The contacts of one wave share no
+///    body, so a large wave is cut into pieces that the World's threads
+///    (`Threads=`) solve at once; the next wave waits for all of them. The
+///    numbers are the same with any number of threads.
 ///
 /// **When it runs.** The step plan decides (StepPlan::fastPath,
 /// world/step_plan.hpp): sequential impulse, the plan on, `FastPath=true`, and
@@ -37,6 +42,7 @@
 #include <span>
 
 #include "core/stages.hpp"
+#include "core/thread_pool.hpp"
 #include "core/world_settings.hpp"
 #include "dynamics/contact_solver.hpp"
 #include "dynamics/joints/joint.hpp"
@@ -67,6 +73,7 @@ struct FastSubsteps {
     bool canTurn = true;                          ///< The plan: a body can start to turn.
     bool packedSubsteps = false;                  ///< The plan: a step of balls may run on packed records.
     StageRecords& records;                        ///< Where each stage's time goes (World::stageRecords()).
+    ThreadPool& pool;                             ///< The World's threads: large waves are split between them (parallel_waves.hpp).
     std::uint64_t step = 0;                       ///< The step being taken, from 1 (StageAtStep::step), to name in an error.
     double time = 0;                              ///< Simulated time at the step's start, s.
 };

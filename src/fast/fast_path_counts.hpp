@@ -1,5 +1,5 @@
 /// @file fast_path_counts.hpp
-/// @brief What the fast path reports: how many steps it ran.
+/// @brief What the fast path reports: how many steps it ran, and how many waves it split between threads.
 #pragma once
 
 #include <cstdint>
@@ -10,6 +10,7 @@ namespace stepwise {
 struct FastPathCounts {
     std::uint64_t steps = 0;        ///< Steps whose substeps ran on the fast path.
     std::uint64_t packedSteps = 0;  ///< Of those, the steps whose substeps ran on the packed records.
+    std::uint64_t splitWaves = 0;   ///< Waves of a contact pass cut between several threads (parallel_waves.hpp).
 };
 
 }  // namespace stepwise

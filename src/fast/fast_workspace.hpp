@@ -45,6 +45,9 @@ struct FastWorkspace {
     std::vector<std::uint32_t> waveStart;  ///< Per wave: where its contacts start in waveOrder (scratch).
     std::vector<std::uint32_t> waveOrder;  ///< The round contacts, wave by wave (scratch).
     std::uint32_t waves = 0;               ///< How many waves the batching opened (scratch).
+    /// Per wave, the index of its first batch in roundBatches, and one more entry: the batch count.
+    /// The threads split a wave's batches between them (parallel_waves.hpp).
+    std::vector<std::uint32_t> waveBatches;
     /// Per record: its body's centre at the poses last recorded (record 0: the origin), where the
     /// lanes measure a round contact's separation.
     std::vector<SolverCentre> centres;

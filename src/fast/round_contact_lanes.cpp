@@ -197,8 +197,10 @@ void batchRoundContacts(const SolverWorkspace& solver, FastWorkspace& fast) {
     // Placing moved each start to its wave's end; the batches walk the waves in turn.
     fast.roundBatches.clear();
     fast.roundBatches.reserve(batches);
+    fast.waveBatches.clear();
     std::uint32_t first = 0;
     for (std::uint32_t wave = 0; wave < waves; ++wave) {
+        fast.waveBatches.push_back(static_cast<std::uint32_t>(fast.roundBatches.size()));
         const std::uint32_t end = fast.waveStart[wave];
         for (std::uint32_t k = first; k < end; ++k) {
             if (k + kBatchingLookAhead < fast.waveOrder.size()) {
@@ -216,6 +218,7 @@ void batchRoundContacts(const SolverWorkspace& solver, FastWorkspace& fast) {
         }
         first = end;
     }
+    fast.waveBatches.push_back(static_cast<std::uint32_t>(fast.roundBatches.size()));
 }
 
 STEPWISE_LANES_COPIES
@@ -350,15 +353,15 @@ STEPWISE_LANES_INLINE void solveBatches(RoundBatch* batches, std::vector<SolverB
     }
 }
 
-/// One pass: wave by wave, up to kBatchesSideBySide batches of a wave at a time. With
-/// @p PushOut a template argument, the relax pass (no push) is compiled without the soft
-/// bias's selects and scales, which are 1 and 0 there (the same bits).
+/// One pass over the batches [@p from, @p count): wave by wave, up to kBatchesSideBySide batches of
+/// a wave at a time. With @p PushOut a template argument, the relax pass (no push) is compiled
+/// without the soft bias's selects and scales, which are 1 and 0 there (the same bits).
 template <bool PushOut, bool Friction>
-STEPWISE_LANES_INLINE void solveWaves(SolverWorkspace& solver, FastWorkspace& fast, const PassConstants& k) {
-    SolverBody discard;  // where the static record's lanes go (scatter())
+STEPWISE_LANES_INLINE void solveWaves(SolverWorkspace& solver, FastWorkspace& fast, const PassConstants& k,
+                                      std::size_t from, std::size_t count) {
+    SolverBody discard;  // where the static record's lanes go (scatter()); each caller has its own
     RoundBatch* const batches = fast.roundBatches.data();
-    const std::size_t count = fast.roundBatches.size();
-    for (std::size_t first = 0; first < count;) {
+    for (std::size_t first = from; first < count;) {
         std::size_t run = 1;  // batches from `first` on in its wave, at most kBatchesSideBySide
         while (run < kBatchesSideBySide && first + run < count && batches[first + run].wave == batches[first].wave) ++run;
         static_assert(kBatchesSideBySide == 3, "one solveBatches<N> below for each N up to kBatchesSideBySide");
@@ -372,8 +375,13 @@ STEPWISE_LANES_INLINE void solveWaves(SolverWorkspace& solver, FastWorkspace& fa
 }  // namespace
 
 // Compiled three times (STEPWISE_LANES_COPIES, lanes.hpp): AVX-512, AVX2 and any x86-64, the same numbers.
-STEPWISE_LANES_COPIES
 void solveRoundContacts(SolverWorkspace& solver, FastWorkspace& fast, const ContactSolverSettings& settings, bool useBias) {
+    solveRoundContactRange(solver, fast, settings, useBias, 0, fast.roundBatches.size());
+}
+
+STEPWISE_LANES_COPIES
+void solveRoundContactRange(SolverWorkspace& solver, FastWorkspace& fast, const ContactSolverSettings& settings,
+                            bool useBias, std::size_t first, std::size_t end) {
     PassConstants k;
     k.accumulate = settings.accumulate;
     k.zero = splat(0);
@@ -383,9 +391,9 @@ void solveRoundContacts(SolverWorkspace& solver, FastWorkspace& fast, const Cont
     k.slowestPushOut = splat(-kMaxPushOutSpeed);
     k.softMassScale = splat(settings.softness.massScale);
     k.softImpulseScale = splat(settings.softness.impulseScale);
-    if (useBias && settings.positionCorrection) solveWaves<true, true>(solver, fast, k);  // the soft bias pushes overlaps apart
-    else if (passSolvesRoundFriction(settings, useBias)) solveWaves<false, true>(solver, fast, k);
-    else solveWaves<false, false>(solver, fast, k);  // a relax pass: the normal rows only
+    if (useBias && settings.positionCorrection) solveWaves<true, true>(solver, fast, k, first, end);  // the soft bias pushes overlaps apart
+    else if (passSolvesRoundFriction(settings, useBias)) solveWaves<false, true>(solver, fast, k, first, end);
+    else solveWaves<false, false>(solver, fast, k, first, end);  // a relax pass: the normal rows only
 }
 
 void syncRoundContacts(const FastWorkspace& fast, SolverWorkspace& solver) {

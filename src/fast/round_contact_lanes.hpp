@@ -47,6 +47,7 @@
 /// "Iterative Rigid Body Solvers" (GDC 2012, independent batches).
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -108,6 +109,11 @@ void clearRoundContactImpulses(FastWorkspace& fast);
 /// @brief One Gauss–Seidel pass over the batched contacts, four at a time: solveContacts()'s first
 /// half, the round contacts in their order. Separations are measured at FastWorkspace::centres.
 void solveRoundContacts(SolverWorkspace& solver, FastWorkspace& fast, const ContactSolverSettings& settings, bool useBias);
+
+/// @brief The same pass over the batches [@p first, @p end) only: whole waves, or part of one wave
+/// (whose batches share no body, so any part of it may be solved apart from the rest, on any thread).
+void solveRoundContactRange(SolverWorkspace& solver, FastWorkspace& fast, const ContactSolverSettings& settings,
+                            bool useBias, std::size_t first, std::size_t end);
 
 /// @brief Copies the batched contacts' impulses back into SolverWorkspace::contacts.
 void syncRoundContacts(const FastWorkspace& fast, SolverWorkspace& solver);

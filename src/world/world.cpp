@@ -405,6 +405,7 @@ void World::runFastPath(const AccelerationFunction& forces, const ContactSolverS
                             .canTurn = plan_.rotation.runs,
                             .packedSubsteps = plan_.packedSubsteps.runs,
                             .records = stageRecords_,
+                            .pool = *threadPool_,
                             .step = stepCount_ + 1,
                             .time = static_cast<double>(time_)};
     runFastSubsteps(step, *fastWorkspace_);
