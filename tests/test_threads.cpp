@@ -12,6 +12,7 @@
 #include "config/scene_loader.hpp"
 #include "core/thread_pool.hpp"
 #include "fast/fast_path_counts.hpp"
+#include "fast/parallel_records.hpp"
 #include "test_support.hpp"
 
 using namespace stepwise;
@@ -171,5 +172,26 @@ TEST_CASE("The fast path's contact passes run bit-identically with 1, 2 and 4 th
         INFO(threads << " threads");
         requireIdentical(one, run(threads, &split));
         REQUIRE(split > 0);  // the split really ran
+    }
+}
+
+TEST_CASE("The per-record stages cover every record once, in ranges that start where the drift groups", "[threads][fast]") {
+    // forRecordRanges() hands out [1, records): each record exactly once, every range starting
+    // at 1 + 8k (the drift's groups of eight), and the probes summed from every range.
+    const unsigned threads = GENERATE(1u, 2u, 4u);
+    ThreadPool pool(threads);
+    for (const std::size_t records : {std::size_t(10), kParallelRecords - 1, kParallelRecords, std::size_t(10007)}) {
+        INFO(records << " records, " << threads << " threads");
+        std::vector<int> visits(records, 0);
+        std::atomic<int> badStarts{0};
+        const Real sum = forRecordRanges(pool, records, [&](std::size_t first, std::size_t end) {
+            if ((first - 1) % kRecordRangeAlignment != 0) badStarts.fetch_add(1);
+            for (std::size_t i = first; i < end; ++i) visits[i] += 1;
+            return Real(end - first);  // a probe that counts the records it saw
+        });
+        REQUIRE(visits[0] == 0);  // record 0 is the static one: never visited
+        for (std::size_t i = 1; i < records; ++i) REQUIRE(visits[i] == 1);
+        REQUIRE(badStarts.load() == 0);
+        REQUIRE(sum == Real(records - 1));
     }
 }

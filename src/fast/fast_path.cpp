@@ -7,6 +7,7 @@
 #include "dynamics/velocity_change_drift.hpp"
 #include "fast/fast_workspace.hpp"
 #include "fast/packed_substeps.hpp"
+#include "fast/parallel_records.hpp"
 #include "fast/parallel_waves.hpp"
 #include "fast/round_contact_lanes.hpp"
 #include "integrators/integrators.hpp"
@@ -188,7 +189,10 @@ void substepsOnRecords(const FastSubsteps& in, FastWorkspace& fast) {
         auto at = [&](Stage stage) { return StageAtStep{stage, in.step, in.time}; };
         // 5. Free flight: the kick on the records (the move follows the solve), whole flight for the bodies without one
         timeStage(in.records, Stage::Integrate, [&] {
-            if (kickPackedRecords(w, fast, hs, in.canTurn, substep == 0) != Real(0)) {
+            const Real kicked = forRecordRanges(in.pool, w.bodies.size(), [&](std::size_t first, std::size_t end) {
+                return kickPackedRecords(w, fast, hs, in.canTurn, substep == 0, first, end);
+            });
+            if (kicked != Real(0)) {
                 failOnRecords(w, fast, RecordsHold::Velocities, at(Stage::Integrate));
             }
             moveInProbedRuns(
@@ -205,7 +209,10 @@ void substepsOnRecords(const FastSubsteps& in, FastWorkspace& fast) {
         timeStage(in.records, Stage::SolveConstraints, [&] {
             if (substep == 0) warmStartContactsInLanes(w, fast, true);
             for (int pass = 0; pass < in.velocityIterations; ++pass) solveRoundContactsOnThreads(w, fast, in.contactSettings, true, in.pool);
-            if (driftPackedRecords(w, fast, hs, lastSubstep) != Real(0)) {
+            const Real drifted = forRecordRanges(in.pool, w.bodies.size(), [&](std::size_t first, std::size_t end) {
+                return driftPackedRecords(w, fast, hs, lastSubstep, first, end);
+            });
+            if (drifted != Real(0)) {
                 failOnRecords(w, fast, RecordsHold::PackedPoses, at(Stage::SolveConstraints));
             }
         });

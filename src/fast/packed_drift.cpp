@@ -171,10 +171,10 @@ STEPWISE_LANES_INLINE void storeFourRecords(SolverWorkspace& workspace, FastWork
 /// stored, so that their chains run side by side. The probes are summed as the numbers are
 /// written, not by reading the records again.
 template <bool LastSubstep>
-STEPWISE_LANES_INLINE Real driftRecords(SolverWorkspace& workspace, FastWorkspace& fast, Real h) {
-    const std::size_t end = workspace.bodies.size();
+STEPWISE_LANES_INLINE Real driftRecords(SolverWorkspace& workspace, FastWorkspace& fast, Real h, std::size_t first,
+                                        std::size_t end) {
     Lanes probes = splat(0);
-    std::size_t i = 1;  // record 0 is the static one
+    std::size_t i = first;
     for (; i + 2 * kLanes <= end; i += 2 * kLanes) {
         FourRecordDrift low = turnFourRecords<LastSubstep>(workspace, fast, i, h);
         FourRecordDrift high = turnFourRecords<LastSubstep>(workspace, fast, i + kLanes, h);
@@ -194,8 +194,10 @@ STEPWISE_LANES_INLINE Real driftRecords(SolverWorkspace& workspace, FastWorkspac
 
 // Compiled for AVX-512, AVX2 and any x86-64 (lanes.hpp); the last substep, which turns, is its own copy.
 STEPWISE_LANES_COPIES
-Real driftPackedRecords(SolverWorkspace& workspace, FastWorkspace& fast, Real h, bool lastSubstep) {
-    return lastSubstep ? driftRecords<true>(workspace, fast, h) : driftRecords<false>(workspace, fast, h);
+Real driftPackedRecords(SolverWorkspace& workspace, FastWorkspace& fast, Real h, bool lastSubstep, std::size_t first,
+                        std::size_t end) {
+    return lastSubstep ? driftRecords<true>(workspace, fast, h, first, end)
+                       : driftRecords<false>(workspace, fast, h, first, end);
 }
 
 }  // namespace stepwise

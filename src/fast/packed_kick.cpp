@@ -90,10 +90,11 @@ STEPWISE_LANES_INLINE Lanes kickRecordRows(SolverWorkspace& workspace, const Fas
 }
 
 template <bool FirstSubstep>
-STEPWISE_LANES_INLINE Real kickTurningRecords(SolverWorkspace& workspace, const FastWorkspace& fast, Real h) {
+STEPWISE_LANES_INLINE Real kickTurningRecords(SolverWorkspace& workspace, const FastWorkspace& fast, Real h,
+                                              std::size_t first, std::size_t end) {
     const Lanes hs = splat(h);
     Lanes probes = splat(0);
-    for (std::size_t i = 1; i < workspace.bodies.size(); ++i) probes += kickRecordRows<FirstSubstep>(workspace, fast, i, hs);
+    for (std::size_t i = first; i < end; ++i) probes += kickRecordRows<FirstSubstep>(workspace, fast, i, hs);
     return (probes[0] + probes[1]) + (probes[2] + probes[3]);
 }
 
@@ -102,13 +103,15 @@ STEPWISE_LANES_INLINE Real kickTurningRecords(SolverWorkspace& workspace, const 
 // Compiled three times like the lanes (lanes.hpp): for the rows above, and for the AVX
 // encoding's three-operand instructions, which spare the scalar loop its register copies.
 STEPWISE_LANES_COPIES
-Real kickPackedRecords(SolverWorkspace& workspace, const FastWorkspace& fast, Real h, bool canTurn, bool firstSubstep) {
+Real kickPackedRecords(SolverWorkspace& workspace, const FastWorkspace& fast, Real h, bool canTurn, bool firstSubstep,
+                       std::size_t first, std::size_t end) {
     if (canTurn) {
-        return firstSubstep ? kickTurningRecords<true>(workspace, fast, h) : kickTurningRecords<false>(workspace, fast, h);
+        return firstSubstep ? kickTurningRecords<true>(workspace, fast, h, first, end)
+                            : kickTurningRecords<false>(workspace, fast, h, first, end);
     }
     // Frictionless balls without spin: ω is left exactly as it is (skipsTurn), line by line
     Real probe = 0;
-    for (std::size_t i = 1; i < workspace.bodies.size(); ++i) probe += kickOneRecord(workspace, fast, i, h, canTurn, firstSubstep);
+    for (std::size_t i = first; i < end; ++i) probe += kickOneRecord(workspace, fast, i, h, canTurn, firstSubstep);
     return probe;
 }
 

@@ -26,6 +26,8 @@
 /// velocity, as warmStartFromLastSubstep() adds it on the plain path.
 #pragma once
 
+#include <cstddef>
+
 #include "dynamics/contact_solver.hpp"
 #include "fast/fast_workspace.hpp"
 
@@ -47,9 +49,12 @@ void unpackRecords(SolverWorkspace& solver, const FastWorkspace& fast);
 ///
 /// In a later substep (@p firstSubstep false) the warm start rides along (above). @p canTurn: the
 /// step plan's rotation decision (skipsRotation()).
+/// Each record is kicked on its own: the records [@p first, @p end) may be kicked apart from the
+/// others, on another thread (parallel_records.hpp).
 /// @return The finite probe (zeroIfFinite(), core/types.hpp) of every velocity it wrote: zero
 /// exactly when all are finite, summed as they are written instead of read again afterwards.
-Real kickPackedRecords(SolverWorkspace& solver, const FastWorkspace& fast, Real h, bool canTurn, bool firstSubstep);
+Real kickPackedRecords(SolverWorkspace& solver, const FastWorkspace& fast, Real h, bool canTurn, bool firstSubstep,
+                       std::size_t first, std::size_t end);
 
 /// @brief The drift on the records, after the kick and the passes: each ball moves by h·v with its
 /// kicked v, as the integrator would have moved it, then by h·Δv (velocity_change_drift.hpp), and adds
@@ -57,7 +62,10 @@ Real kickPackedRecords(SolverWorkspace& solver, const FastWorkspace& fast, Real 
 /// in the @p lastSubstep it turns once, from the step's orientation, by h·Σω. Writes
 /// FastWorkspace::centres and `turnSums`, and in the last substep FastWorkspace::orientations; the
 /// objects are not touched.
+/// The records [@p first, @p end) only, each on its own; eight at a time from @p first on, so a range
+/// that starts at 1 + 8k groups its records as the whole array does.
 /// @return The finite probe of every record's solved velocities and of what it wrote.
-Real driftPackedRecords(SolverWorkspace& solver, FastWorkspace& fast, Real h, bool lastSubstep);
+Real driftPackedRecords(SolverWorkspace& solver, FastWorkspace& fast, Real h, bool lastSubstep, std::size_t first,
+                        std::size_t end);
 
 }  // namespace stepwise
