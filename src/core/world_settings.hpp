@@ -157,7 +157,7 @@ struct WorldSettings {
     bool stepPlan = true;                              ///< Skip the stages the scene cannot need (src/world/step_plan.hpp).
     bool fastPath = kFastPathByDefault;                ///< Let the step plan send the substeps to the fast path (src/fast/).
     bool continuousCollision = true;                   ///< Fast bodies stop where their path first touches (src/collision/continuous.hpp).
-    int threads = kAutoThreads;                        ///< Threads for the narrowphase, ≥ 0 (kAutoThreads: one per hardware thread).
+    int threads = kAutoThreads;                        ///< Threads for the narrowphase and the fast path's passes, ≥ 0 (kAutoThreads: one per hardware thread).
 };
 
 /// @brief The step the integrator takes, s: TimeStep, or TimeStep/Substeps under
