@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace stepwise::bench {
@@ -66,11 +67,14 @@ void JointMeter::observe(std::span<const BodyState> bodies) {
         Real error = apart;
         if (j.kind == JointKind::Distance) error = std::abs(apart - j.length);
         if (j.kind == JointKind::Rope) error = std::max(Real(0), apart - j.length);
+        // A body at NaN has blown up: its gap is counted as infinite (std::max would skip a NaN).
+        if (std::isnan(error)) error = std::numeric_limits<Real>::infinity();
         gap = std::max(gap, error);
         sum += error;
         if (j.kind == JointKind::Hinge) {
             // The angle between unit vectors from atan2(|k_A × k_B|, k_A·k_B): exact near 0, where acos is not.
-            const Real angle = std::atan2(glm::length(glm::cross(kA, kB)), glm::dot(kA, kB));
+            Real angle = std::atan2(glm::length(glm::cross(kA, kB)), glm::dot(kA, kB));
+            if (std::isnan(angle)) angle = std::numeric_limits<Real>::infinity();
             worstAngle_ = std::max(worstAngle_, angle);
         }
     }

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <stdexcept>
 
@@ -68,6 +69,12 @@ void BoxPileMeter::observe(std::span<const BodyState> bodies) {
                                               {pj, bodies[j].orientation, half_[j]}));
         }
     }
+    // A body at NaN has blown up; every comparison with NaN is false, so the loops
+    // above skipped it: count it as an infinite overlap.
+    const bool blownUp = std::any_of(bodies.begin(), bodies.begin() + static_cast<std::ptrdiff_t>(n), [](const BodyState& b) {
+        return std::isnan(b.position.x) || std::isnan(b.position.y) || std::isnan(b.position.z);
+    });
+    if (blownUp) box = wall = std::numeric_limits<Real>::infinity();
     lastBox_ = box;
     lastWall_ = wall;
     worstBox_ = std::max(worstBox_, box);

@@ -7,6 +7,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "box_pile_scene.hpp"
@@ -187,4 +188,18 @@ TEST_CASE("The shipped chain and ragdoll hold every joint at the start, the ragd
     BoxPileMeter floor(boxHalfExtentsOf(ragdoll), staticBoxesOf(ragdoll));
     floor.observe(startOf(ragdoll));
     CHECK(floor.lastWallOverlap() == Approx(0).margin(kTight));  // kept at 0 when every box is above
+}
+
+TEST_CASE("A body at NaN counts as an infinite gap and overlap, not as none", "[bench]") {
+    const Scene scene = parseScene("DynamicObject, Name=a, Shape=Box, Position=(0, 2, 0)\n"
+                                   "BallJoint, Name=top, BodyA=a, Anchor=(0, 2.5, 0)\n",
+                                   "nan");
+    JointMeter joints(scene);
+    std::vector<BodyState> bodies = startOf(scene);
+    bodies[0].position.x = std::numeric_limits<Real>::quiet_NaN();
+    joints.observe(bodies);
+    CHECK(std::isinf(joints.worstSeparation()));
+    BoxPileMeter pile(boxHalfExtentsOf(scene), {});
+    pile.observe(bodies);
+    CHECK(std::isinf(pile.worstBoxOverlap()));
 }
