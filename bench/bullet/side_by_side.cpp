@@ -179,12 +179,14 @@ void printIssue33Targets(std::FILE* out, const Targets& t, bool markdown) {
     for (const SceneFigure& f : t.scenes) {
         const double speed = f.theirCpu / f.ourCpu;
         // Better: a smaller figure; both at zero (nothing to improve on) counts as met.
+        // A figure a run could not measure (NaN: too few steps for a period) has no verdict.
         const bool better = f.ours < f.theirs || (f.ours == 0 && f.theirs == 0);
+        const bool measured = !std::isnan(f.ours) && !std::isnan(f.theirs);
         rows.push_back({f.scene,
                         format("%.3f", kMs * f.ourCpu) + " / " + format("%.3f", kMs * f.theirCpu) + " ms (" +
                             format("%.2f×", speed) + ")",
                         verdict(speed >= kSpeedTarget), f.accuracy,
-                        format("%.3g", f.ours) + " / " + format("%.3g", f.theirs), verdict(better)});
+                        format("%.3g", f.ours) + " / " + format("%.3g", f.theirs), measured ? verdict(better) : "—"});
     }
     if (markdown) {
         std::fprintf(out, "\n**Against the targets of issue #33** (same run; Stepwise / Bullet, CPU medians, the "
