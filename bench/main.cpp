@@ -5,7 +5,7 @@
 ///                              [--config DIR] [--problems a,b,...]
 ///     stepwise-bench stress [--quick] [--markdown PATH] [--config DIR] [--cases a,b,...]
 ///
-///     stepwise-bench scaling | stage-costs | bullet | rain-scene ...   (scaling_commands.cpp)
+///     stepwise-bench scaling | stage-costs | bullet | rain-scene | pile-scene ...   (scaling_commands.cpp)
 ///     stepwise-bench narrowphase [--quick] [--pairs N] [--repeats N] [--seed S]   (narrowphase_bench.cpp)
 #include <cstdio>
 #include <cstdlib>
@@ -35,6 +35,7 @@ const char* const kUsage =
     "  soak          random valid scenes of every kind for a million steps\n"
     "  narrowphase   SAT, GJK+EPA and MPR on the same shape pairs: ns per pair, iterations\n"
     "  rain-scene    writes a sphere-rain scene file\n"
+    "  pile-scene    writes a box-pile scene file (boxes into a box of static walls)\n"
     "\n"
     "usage: stepwise-bench precision [--quick] [--repeats N] [--csv PATH] [--markdown PATH] [--config DIR]\n"
     "                                [--problems a,b,...]\n"
@@ -115,6 +116,7 @@ int main(int argc, char** argv) {
     if (args[0] == "stage-costs") return stepwise::bench::stageCostsCommand({args.begin() + 1, args.end()});
     if (args[0] == "bullet") return stepwise::bench::bulletCommand({args.begin() + 1, args.end()});
     if (args[0] == "rain-scene") return stepwise::bench::rainSceneCommand({args.begin() + 1, args.end()});
+    if (args[0] == "pile-scene") return stepwise::bench::pileSceneCommand({args.begin() + 1, args.end()});
     if (args[0] == "soak") return stepwise::bench::soakCommand({args.begin() + 1, args.end()});
     if (args[0] == "narrowphase") return stepwise::bench::narrowphaseCommand({args.begin() + 1, args.end()});
     if (args[0] != "precision") return usageError("unknown subcommand '" + args[0] + "'");

@@ -13,6 +13,7 @@
 #include "stage_costs.hpp"
 #include "sphere_rain_scene.hpp"
 #include "wall_rain_scene.hpp"
+#include "box_pile_scene.hpp"
 #ifdef STEPWISE_HAVE_BULLET
 #include "bullet/side_by_side.hpp"
 #endif
@@ -37,20 +38,31 @@ const char* const kScalingUsage =
     "  them): each stage's cost in ns per body per step, and the megabytes of each size's arrays.\n"
     "\n"
     "usage: stepwise-bench bullet [--quick] [--sizes 1000,4000,16000] [--steps 600] [--config DIR]\n"
-    "                             [--scenarios rain,rain-sweep,stacks,free-box,bounce,incline,reference]\n"
-    "                             [--markdown PATH] [--sweep-csv PATH]\n"
+    "                             [--scenarios rain,rain-sweep,stacks,free-box,bounce,incline,reference,\n"
+    "                                          wall-rain,box-pile,chain,ragdoll]\n"
+    "                             [--markdown PATH] [--sweep-csv PATH] [--ratios-csv PATH]\n"
     "\n"
     "  The same scene files in Stepwise and in Bullet 3, one table per scenario: sphere rain\n"
     "  (--sizes, --steps), the 1k rain's run time against overlap (its runs as CSV: --sweep-csv),\n"
     "  pyramid and tower, free box, bounce at 1/60 and 1/240 s, incline, and the precision\n"
-    "  benchmark's reference problems at 1/60, 1/240 and 1/960 s; then the verdicts on the\n"
-    "  targets of issue #7. Needs a build with -DSTEPWISE_WITH_BULLET=ON.\n"
+    "  benchmark's reference problems at 1/60, 1/240 and 1/960 s; then issue #33's scenes: the\n"
+    "  wall rain (spheres into a box of static boxes, --sizes, --steps), a pile of 1000 boxes\n"
+    "  into static walls, a 100-link chain (config/bench_chain.scene) and a 20-box ragdoll\n"
+    "  (config/bench_ragdoll.scene), each with its accuracy beside its speed, and the largest\n"
+    "  wall rain and the pile on 1 and 2 threads; then the verdicts on the targets of issues\n"
+    "  #7 and #33. --ratios-csv writes each scene's times, speed ratio and accuracy as CSV.\n"
+    "  --quick: small versions of each, a smoke test. Needs a build with -DSTEPWISE_WITH_BULLET=ON.\n"
     "\n"
     "usage: stepwise-bench rain-scene --count N [--seed S] [--walls planes|boxes] --out FILE\n"
     "\n"
     "  Writes the sphere-rain scene of N spheres (config/bench_sphere_rain_1k.scene is N = 1000);\n"
     "  --walls boxes writes the wall rain instead: a floor and walls of static boxes, e = 0.5,\n"
-    "  columns 1.25 m apart, Sleep=false (issue #33).\n";
+    "  columns 1.25 m apart, Sleep=false (issue #33).\n"
+    "\n"
+    "usage: stepwise-bench pile-scene --count N [--seed S] --out FILE\n"
+    "\n"
+    "  Writes the box pile of N boxes (edges 0.8 to 1.2 m, turned at random) dropped into a box\n"
+    "  of static walls, Sleep=false (issue #33; config/bench_box_pile_1k.scene is N = 1000).\n";
 
 namespace {
 
@@ -186,7 +198,8 @@ int bulletCommand([[maybe_unused]] const std::vector<std::string>& args) {
                               {"--steps", wholeNumberInto(o.rainSteps)},
                               {"--scenarios", [&](const std::string& v) { o.scenarios = names(v); return true; }},
                               {"--markdown", pathInto(o.markdownPath)},
-                              {"--sweep-csv", pathInto(o.sweepCsvPath)}});
+                              {"--sweep-csv", pathInto(o.sweepCsvPath)},
+                              {"--ratios-csv", pathInto(o.ratiosCsvPath)}});
     return status ? status : runSideBySide(o);
 #else
     std::fprintf(stderr,
@@ -215,6 +228,26 @@ int rainSceneCommand(const std::vector<std::string>& args) {
         return 1;
     }
     std::printf("wrote %s: %zu spheres, seed %llu\n", out.c_str(), *n, static_cast<unsigned long long>(seed));
+    return 0;
+}
+
+int pileSceneCommand(const std::vector<std::string>& args) {
+    std::optional<std::size_t> n;
+    std::uint64_t seed = 1;
+    std::string out;
+    const int status = parse(args, {},
+                             {{"--count", [&](const std::string& v) { n = count(v); return n.has_value(); }},
+                              {"--seed", seedInto(seed)},
+                              {"--out", [&](const std::string& v) { out = v; return true; }}});
+    if (status) return status;
+    if (!n || out.empty()) return usage("pile-scene needs --count N and --out FILE");
+    std::ofstream file(out);
+    file << boxPileSceneText(*n, seed);
+    if (!file) {
+        std::fprintf(stderr, "stepwise-bench: cannot write %s\n", out.c_str());
+        return 1;
+    }
+    std::printf("wrote %s: %zu boxes, seed %llu\n", out.c_str(), *n, static_cast<unsigned long long>(seed));
     return 0;
 }
 

@@ -1,5 +1,5 @@
 /// @file scaling_commands.hpp
-/// @brief The command lines of `stepwise-bench scaling`, `stage-costs`, `bullet` and `rain-scene` (bench/main.cpp dispatches).
+/// @brief The command lines of `stepwise-bench scaling`, `stage-costs`, `bullet`, `rain-scene` and `pile-scene` (bench/main.cpp dispatches).
 #pragma once
 
 #include <string>
@@ -21,7 +21,10 @@ int bulletCommand(const std::vector<std::string>& args);
 /// @brief `stepwise-bench rain-scene --count N [--seed S] --out FILE`: writes the sphere-rain scene.
 int rainSceneCommand(const std::vector<std::string>& args);
 
-/// @brief Usage of the four commands, for `stepwise-bench --help`.
+/// @brief `stepwise-bench pile-scene --count N [--seed S] --out FILE`: writes the box pile (box_pile_scene.hpp).
+int pileSceneCommand(const std::vector<std::string>& args);
+
+/// @brief Usage of these commands, for `stepwise-bench --help`.
 extern const char* const kScalingUsage;
 
 }  // namespace stepwise::bench

@@ -34,13 +34,17 @@ void statesOf(const World& world, std::vector<BodyState>& out) {
     }
 }
 
-RainMeter::RainMeter(std::vector<CollisionPlane> planes, Real radius) : planes_(std::move(planes)), radius_(radius) {}
+RainMeter::RainMeter(std::vector<CollisionPlane> planes, Real radius, std::vector<OrientedBox> walls)
+    : planes_(std::move(planes)), walls_(std::move(walls)), radius_(radius) {}
 
 void RainMeter::observe(std::span<const BodyState> bodies) {
     if (bodies.empty()) return;
     for (const BodyState& b : bodies) {
         for (const CollisionPlane& plane : planes_) {
             worstOverlap_ = std::max(worstOverlap_, radius_ - plane.signedDistance(b.position));
+        }
+        for (const OrientedBox& wall : walls_) {
+            worstOverlap_ = std::max(worstOverlap_, sphereBoxOverlap(b.position, radius_, wall));
         }
     }
     // Counting sort of the bodies into cells of at least 2r: two overlapping
@@ -96,7 +100,8 @@ void RainMeter::observe(std::span<const BodyState> bodies) {
 std::size_t RainMeter::escaped(std::span<const BodyState> bodies) const {
     return static_cast<std::size_t>(std::count_if(bodies.begin(), bodies.end(), [&](const BodyState& b) {
         return std::any_of(planes_.begin(), planes_.end(),
-                           [&](const CollisionPlane& plane) { return plane.signedDistance(b.position) < 0; });
+                           [&](const CollisionPlane& plane) { return plane.signedDistance(b.position) < 0; }) ||
+               outsideLevel(b.position, walls_);
     }));
 }
 

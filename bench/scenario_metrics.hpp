@@ -16,6 +16,7 @@
 
 #include "core/types.hpp"
 #include "objects/game_object.hpp"
+#include "overlap_depth.hpp"
 #include "world/scene.hpp"
 #include "world/world.hpp"
 
@@ -47,26 +48,30 @@ struct StepwiseEngine {
 /// benchmark (bench/threads/main.cpp).
 Scene onOneThread(Scene scene);
 
-/// @brief Worst overlap of equal spheres (with each other and with planes) and how many left the box.
+/// @brief Worst overlap of equal spheres (with each other, planes and static boxes) and how many left the box.
 ///
 /// The overlap of two spheres of radius r is 2r − |x_i − x_j| when positive;
-/// of a sphere and a plane, r − n·(x − p). Pairs are found with a uniform
+/// of a sphere and a plane, r − n·(x − p); of a sphere and a static box,
+/// r − d(x) with d the signed distance from the box (sphereBoxOverlap()). Pairs are found with a uniform
 /// grid of cells 2r wide (a sphere can only touch spheres in the 27 cells
 /// around its own), rebuilt on every observe(): O(n) per step.
 class RainMeter {
 public:
     /// @param planes the container's planes (every sphere starts on their open side)
     /// @param radius the spheres' common radius, m
-    RainMeter(std::vector<CollisionPlane> planes, Real radius);
+    /// @param walls  the container's static boxes, if it is built of boxes (staticBoxesOf())
+    RainMeter(std::vector<CollisionPlane> planes, Real radius, std::vector<OrientedBox> walls = {});
 
     /// @brief Measures the overlaps of one step's states and keeps the worst.
     void observe(std::span<const BodyState> bodies);
-    /// @brief Spheres whose centre is behind a plane (escaped through it), in @p bodies.
+    /// @brief Spheres whose centre is behind a plane (escaped through it) or has left
+    /// the level of static boxes (outsideLevel()), in @p bodies.
     std::size_t escaped(std::span<const BodyState> bodies) const;
     Real worstOverlap() const { return worstOverlap_; }  ///< Deepest overlap seen so far, m.
 
 private:
     std::vector<CollisionPlane> planes_;
+    std::vector<OrientedBox> walls_;
     Real radius_;
     Real worstOverlap_ = 0;
     std::vector<std::uint32_t> cellOf_;     ///< Each body's cell.

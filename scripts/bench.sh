@@ -174,18 +174,24 @@ step_range=$(awk -F, 'NR > 1 { n = sprintf("%.0f", 1 / $3); if (lo == "" || n + 
 problem_count=$(awk -F, 'NR > 1 && !($1 in seen) { seen[$1] = 1; ++n } END { print n + 0 }' "$csv")
 # The stress suite's cases that passed, of all.
 stress_passed=$(awk -F'|' '/^\| `/ { ++all; gsub(/ /, "", $5); if ($5 == "pass") ++ok } END { printf "%d of %d", ok, all }' "$stress_table")
-# The side by side's verdicts: how many of issue #7's targets were met, and which were not.
+# The side by side's verdicts: how many of the targets of issues #7 and #33 were met, and which were not.
 bullet_data=docs/data/bench-bullet.txt
 bullet_verdicts=""
 if [[ -f $bullet_data ]]; then
     bullet_verdicts=$(awk -F'|' '
-        /^\*\*Against the targets/ { inside = 1; next }
-        /^\*\*/ { inside = 0 }
-        inside && /^\| / && !/^\| target/ {
-            verdict = $4; gsub(/ /, "", verdict)
+        function judge(verdict, name) {
+            gsub(/ /, "", verdict); sub(/^ /, "", name); sub(/ $/, "", name)
             if (verdict == "yes") ++met
             if (verdict == "yes" || verdict == "no") ++all
-            if (verdict == "no") { name = $2; sub(/^ /, "", name); sub(/ $/, "", name); missed = missed (missed == "" ? "" : "; ") name }
+            if (verdict == "no") missed = missed (missed == "" ? "" : "; ") name
+        }
+        /^\*\*Against the targets/ { inside = 1; next }
+        /^\*\*/ { inside = 0 }
+        # Issue #7: | target | measured | met? |. Issue #33: a row per scene,
+        # | scene | time | at least 2x? | figure | Stepwise / Bullet | better? |.
+        inside && /^\| / && !/^\| (target|scene) / {
+            if (NF == 8) { judge($4, $2 ": speed"); judge($7, $2 ": accuracy") }
+            else judge($4, $2)
         }
         END { if (all) printf "%d of %d met%s", met, all, missed == "" ? "" : "; not met: " missed }' "$bullet_data")
 fi
@@ -213,7 +219,7 @@ At a glance:
 - [Narrowphase](#benchmarks-narrowphase): SAT, GJK+EPA and MPR on the same shape pairs, time and iterations.
 - [Scaling](#benchmarks-scaling) and [stage by stage](#benchmarks-stage-costs): the cost
   of a step per body from a thousand bodies to tens of thousands.
-- [Side by side with Bullet](#benchmarks-bullet): issue #7's targets, ${bullet_verdicts:-not measured yet}.
+- [Side by side with Bullet](#benchmarks-bullet): the targets of issues #7 and #33, ${bullet_verdicts:-not measured yet}.
 - [Threads and continuous collision](#threads-and-continuous-collision).
 - [How to reproduce](#benchmarks-reproduce).
 

@@ -5,9 +5,12 @@
 #include <btBulletDynamicsCommon.h>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <stdexcept>
 #include <utility>
+
+#include <glm/gtc/constants.hpp>
 
 #include "objects/inertia.hpp"
 
@@ -16,14 +19,23 @@ namespace stepwise::bench {
 namespace {
 
 btVector3 bt(const Vec3& v) { return {btScalar(v.x), btScalar(v.y), btScalar(v.z)}; }
+btQuaternion bt(const Quat& q) { return {btScalar(q.x), btScalar(q.y), btScalar(q.z), btScalar(q.w)}; }
 Vec3 toVec3(const btVector3& v) { return {Real(v.x()), Real(v.y()), Real(v.z())}; }
 
 }  // namespace
 
 BulletWorld::BulletWorld(const Scene& scene)
     : timeStep_(double(scene.settings.timeStep)), springs_(scene.springs), attractors_(scene.attractors) {
-    if (!scene.kinematics.empty()) {
-        throw std::invalid_argument(scene.sourcePath + ": the Bullet side does not translate kinematic bodies");
+    for (const KinematicsObject& k : scene.kinematics) {
+        if (k.velocity != Vec3(0, 0, 0) || k.angularVelocity != Vec3(0, 0, 0)) {
+            throw std::invalid_argument(scene.sourcePath + ": " + k.name +
+                                        ": the Bullet side translates only kinematic bodies at rest (static boxes); "
+                                        "this one has a velocity");
+        }
+        if (k.shape != Shape::Box) {
+            throw std::invalid_argument(scene.sourcePath + ": " + k.name + ": a kinematic " + toString(k.shape) +
+                                        " is not translated to Bullet (static boxes are)");
+        }
     }
     configuration_ = std::make_unique<btDefaultCollisionConfiguration>();
     dispatcher_ = std::make_unique<btCollisionDispatcher>(configuration_.get());
@@ -76,22 +88,7 @@ BulletWorld::BulletWorld(const Scene& scene)
         if (!scene.settings.sleeping) rigid.setActivationState(DISABLE_DEACTIVATION);
         world_->addRigidBody(&rigid);
     }
-    for (const JointDef& joint : scene.joints) {
-        const auto body = std::find_if(scene.dynamics.begin(), scene.dynamics.end(),
-                                       [&](const DynamicObject& b) { return b.name == joint.bodyA; });
-        const bool pendulumRod = joint.kind == JointKind::Distance && joint.bodyB.empty() &&
-                                 body != scene.dynamics.end() && glm::length(joint.anchorA - body->position) == 0;
-        if (!pendulumRod) {
-            throw std::invalid_argument(scene.sourcePath + ": " + joint.name +
-                                        ": the Bullet side translates only a DistanceJoint from a body's centre to a "
-                                        "fixed point");
-        }
-        // The pin: the fixed point, in the body's own frame, stays where it is in the world.
-        btRigidBody& rigid = *dynamics_[std::size_t(body - scene.dynamics.begin())];
-        const btVector3 pivotInBody = rigid.getWorldTransform().inverse() * bt(joint.anchorB);
-        joints_.push_back(std::make_unique<btPoint2PointConstraint>(rigid, pivotInBody));
-        world_->addConstraint(joints_.back().get());
-    }
+    for (const JointDef& joint : scene.joints) addJoint(scene, joint);
     if (!springs_.empty() || !attractors_.empty()) world_->setInternalTickCallback(&BulletWorld::applyForces, this, true);
     for (const CollisionPlane& plane : scene.planes) {
         const Vec3 n = glm::normalize(plane.normal);
@@ -103,6 +100,86 @@ BulletWorld::BulletWorld(const Scene& scene)
         statics_.push_back(std::make_unique<btRigidBody>(info));
         world_->addRigidBody(statics_.back().get());
     }
+    // Static boxes: mass 0 is Bullet's static body; one shape per box (a level has few).
+    for (const KinematicsObject& k : scene.kinematics) {
+        shapes_.push_back(std::make_unique<btBoxShape>(bt(k.halfExtents())));
+        motionStates_.push_back(std::make_unique<btDefaultMotionState>(btTransform(bt(k.orientation), bt(k.position))));
+        btRigidBody::btRigidBodyConstructionInfo info(0, motionStates_.back().get(), shapes_.back().get());
+        info.m_restitution = btScalar(k.elasticity);
+        info.m_friction = btScalar(k.friction);
+        statics_.push_back(std::make_unique<btRigidBody>(info));
+        world_->addRigidBody(statics_.back().get());
+    }
+}
+
+void BulletWorld::addJoint(const Scene& scene, const JointDef& joint) {
+    const auto bodyNamed = [&](const std::string& name) -> btRigidBody* {
+        if (name.empty()) return nullptr;  // the world
+        const auto found = std::find_if(scene.dynamics.begin(), scene.dynamics.end(),
+                                        [&](const DynamicObject& b) { return b.name == name; });
+        if (found == scene.dynamics.end()) {
+            throw std::invalid_argument(scene.sourcePath + ": " + joint.name + ": no DynamicObject named '" + name + "'");
+        }
+        return dynamics_[std::size_t(found - scene.dynamics.begin())].get();
+    };
+    if (joint.maxForce != kUnbreakable) {
+        throw std::invalid_argument(scene.sourcePath + ": " + joint.name + ": MaxForce is not translated to Bullet");
+    }
+    btRigidBody* a = bodyNamed(joint.bodyA);
+    btRigidBody* b = bodyNamed(joint.bodyB);
+    const auto body = std::find_if(scene.dynamics.begin(), scene.dynamics.end(),
+                                   [&](const DynamicObject& d) { return d.name == joint.bodyA; });
+    const bool pendulumRod = joint.kind == JointKind::Distance && !b && glm::length(joint.anchorA - body->position) == 0;
+    // A world point in a body's own frame (Bullet's constraints take their points there).
+    const auto inBody = [](const btRigidBody& rigid, const Vec3& point) { return rigid.getWorldTransform().inverse() * bt(point); };
+    if (pendulumRod) {
+        // The pin: the fixed point, in the body's own frame, stays where it is in the world.
+        joints_.push_back(std::make_unique<btPoint2PointConstraint>(*a, inBody(*a, joint.anchorB)));
+    } else if (joint.kind == JointKind::Ball) {
+        if (b) {
+            joints_.push_back(std::make_unique<btPoint2PointConstraint>(*a, *b, inBody(*a, joint.anchorA), inBody(*b, joint.anchorA)));
+        } else {
+            joints_.push_back(std::make_unique<btPoint2PointConstraint>(*a, inBody(*a, joint.anchorA)));
+        }
+    } else if (joint.kind == JointKind::Hinge && !joint.motor) {
+        joints_.push_back(hinge(joint, *a, b));
+    } else {
+        throw std::invalid_argument(scene.sourcePath + ": " + joint.name + ": the Bullet side translates BallJoints, "
+                                    "HingeJoints without motor or MaxForce, and a DistanceJoint from a body's centre "
+                                    "to a fixed point; this is a " + toString(joint.kind));
+    }
+    // Stepwise's joined bodies do not collide unless CollideConnected=true; Bullet's flag says the same.
+    world_->addConstraint(joints_.back().get(), !joint.collideConnected);
+}
+
+std::unique_ptr<btTypedConstraint> BulletWorld::hinge(const JointDef& joint, btRigidBody& a, btRigidBody* b) {
+    // One world frame F at the anchor whose z is the axis; each body gets F in its own
+    // frame, so Bullet's hinge angle is 0 at the start, as Stepwise's is.
+    const Vec3 z = glm::normalize(joint.axis);
+    const Vec3 helper = std::abs(z.x) < Real(0.9) ? Vec3(1, 0, 0) : Vec3(0, 1, 0);
+    const Vec3 x = glm::normalize(glm::cross(helper, z));
+    const Vec3 y = glm::cross(z, x);
+    const btTransform frame(btMatrix3x3(btScalar(x.x), btScalar(y.x), btScalar(z.x), btScalar(x.y), btScalar(y.y),
+                                        btScalar(z.y), btScalar(x.z), btScalar(y.z), btScalar(z.z)),
+                            bt(joint.anchorA));
+    std::unique_ptr<btHingeConstraint> hinge;
+    // Stepwise's angle is A's about the axis as seen from B. Bullet's two-body hinge
+    // with useReferenceFrameA = true measures its body B as seen from its body A, so
+    // Stepwise's B is Bullet's A; its one-body hinge (the world as the other end),
+    // with useReferenceFrameA = false, measures the body's own turn. Both were checked
+    // against btHingeConstraint::getHingeAngle() for a body turned +0.3 rad: +0.3.
+    if (b) {
+        hinge = std::make_unique<btHingeConstraint>(*b, a, b->getWorldTransform().inverse() * frame,
+                                                    a.getWorldTransform().inverse() * frame, true);
+    } else {
+        hinge = std::make_unique<btHingeConstraint>(a, a.getWorldTransform().inverse() * frame, false);
+    }
+    if (joint.lowerAngle || joint.upperAngle) {
+        // No limit on one side: Bullet's limits span at most ±π, so the open side is ±π.
+        hinge->setLimit(btScalar(joint.lowerAngle.value_or(-glm::pi<Real>())),
+                        btScalar(joint.upperAngle.value_or(glm::pi<Real>())));
+    }
+    return hinge;
 }
 
 BulletWorld::~BulletWorld() {

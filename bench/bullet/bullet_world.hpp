@@ -18,6 +18,10 @@
 /// | Spring                    | its force, F = (k·(l − L₀) + c·(v_B − v_A)·n)·n, applied at the anchors before each step |
 /// | Attractor                 | its pull, m·a with a = −μ·r/\|r\|³ (attractorAcceleration()), at the centre before each step |
 /// | DistanceJoint from a body's centre to a fixed point | btPoint2PointConstraint at the fixed point: the body turns with the rod |
+/// | KinematicsObject, Box, no velocity | a static body (mass 0) of btBoxShape(scale/2): a level's floor and walls |
+/// | BallJoint                 | btPoint2PointConstraint at the anchor (to the world when there is no BodyB) |
+/// | HingeJoint (no motor)     | btHingeConstraint about the axis at the anchor; LowerAngle, UpperAngle as setLimit (Bullet's default softness) |
+/// | CollideConnected=false    | addConstraint(…, disableCollisionsBetweenLinkedBodies = true)          |
 ///
 /// Bullet has no force generators: its manual's way to add a force is a
 /// callback before each internal step (setInternalTickCallback(…, true)) that
@@ -30,8 +34,9 @@
 ///
 /// Everything else is Bullet's default: btDbvtBroadphase, btSequentialImpulseConstraintSolver
 /// with 10 iterations, split impulse on, ERP 0.2, no continuous collision detection,
-/// implicit gyroscopic term on. Kinematic bodies, other joints and per-body
-/// accelerations are not translated (the constructor throws).
+/// implicit gyroscopic term on. Moving kinematic bodies, other joints (ropes,
+/// motors, breakable joints) and per-body accelerations are not translated
+/// (the constructor throws, naming the record).
 #pragma once
 
 #include <LinearMath/btScalar.h>
@@ -79,6 +84,10 @@ public:
     void setSolverIterations(int iterations);
 
 private:
+    /// Translates one joint record (the table above), or throws naming it.
+    void addJoint(const Scene& scene, const JointDef& joint);
+    /// A btHingeConstraint for @p joint between @p a and @p b (nullptr: the world), limits included.
+    static std::unique_ptr<btTypedConstraint> hinge(const JointDef& joint, btRigidBody& a, btRigidBody* b);
     /// Bullet's pre-step callback: adds the springs' and attractors' forces for the step about to run.
     static void applyForces(btDynamicsWorld* world, btScalar timeStep);
 
@@ -91,7 +100,7 @@ private:
     std::vector<std::unique_ptr<btCollisionShape>> shapes_;
     std::vector<std::unique_ptr<btDefaultMotionState>> motionStates_;
     std::vector<std::unique_ptr<btRigidBody>> dynamics_;  ///< In the scene's order.
-    std::vector<std::unique_ptr<btRigidBody>> statics_;   ///< The planes.
+    std::vector<std::unique_ptr<btRigidBody>> statics_;   ///< The planes and static boxes.
     std::vector<Vec3> inertiaBody_;                       ///< Principal moments, for L = I_world·ω.
     std::vector<Spring> springs_;                         ///< The scene's, as it gives them.
     std::vector<Attractor> attractors_;                   ///< The scene's, as it gives them.

@@ -27,6 +27,8 @@
 #include "../scenario_metrics.hpp"
 #include "../sphere_rain_scene.hpp"
 #include "bullet_world.hpp"
+#include "level_scenes.hpp"
+#include "side_by_side_table.hpp"
 #include "config/scene_loader.hpp"
 #include "world/world.hpp"
 
@@ -34,86 +36,12 @@ namespace stepwise::bench {
 
 namespace {
 
-constexpr int kQuickSteps = 60;             ///< Steps of every long run in --quick mode.
 constexpr std::size_t kQuickRain = 300;     ///< Spheres of the --quick rain.
+constexpr std::size_t kPileBoxes = 1000;    ///< Boxes of the box pile (issue #33).
+constexpr std::size_t kQuickPile = 100;     ///< Boxes of the --quick box pile.
 constexpr Real kFineTimeStep = Real(1) / Real(240);  ///< The bounce's second time step, s.
 constexpr Real kInclineTime = 2;            ///< Incline: accelerations measured over the first 2 s.
 constexpr int kApexesCompared = 4;          ///< Bounce: the first four apexes, e^(2n)·h₀, n = 1…4.
-constexpr double kMs = 1e3;                 ///< ms per s (and mm per m).
-
-/// Median times per step, s.
-struct Timing {
-    double cpu = 0;
-    double wall = 0;
-};
-
-/// Steps @p engine @p steps times, timing each step; calls @p observe(states, t) after each.
-template <class Engine>
-Timing runSteps(Engine& engine, int steps, Real h, const std::function<void(const std::vector<BodyState>&, Real)>& observe) {
-    std::vector<BodyState> states;
-    StepTimer timer(static_cast<std::size_t>(steps));
-    for (int i = 0; i < steps; ++i) {
-        timer.start();
-        engine.step();
-        timer.stop();
-        engine.states(states);
-        observe(states, Real(i + 1) * h);
-    }
-    return {timer.medianCpu(), timer.medianWall()};
-}
-
-std::string format(const char* fmt, double value) {
-    char text[64];
-    std::snprintf(text, sizeof text, fmt, value);
-    return text;
-}
-
-/// One table: a row per figure, Stepwise, Bullet and Bullet/Stepwise.
-struct Table {
-    std::string title;
-    struct Row {
-        std::string figure, stepwise, bullet, ratio;
-    };
-    std::vector<Row> rows;
-    /// Column heads; the default is the side-by-side's (a sweep lists runs, not engines).
-    std::array<std::string, 4> header{"figure", "Stepwise", "Bullet", "Bullet / Stepwise"};
-
-    /// A figure where smaller is better: the ratio column is bullet/stepwise, unless
-    /// Stepwise's figure prints as 0 (rounding error only: the ratio would be noise).
-    /// A figure a run could not measure (NaN: a flip or a crossing that never came) shows as "—".
-    void add(const std::string& figure, const char* fmt, double stepwise, double bullet) {
-        std::string ratio = "—";
-        const std::string shown = std::isnan(stepwise) ? "—" : format(fmt, stepwise);
-        if (std::strtod(shown.c_str(), nullptr) > 0 && bullet >= 0 && std::isfinite(stepwise) && std::isfinite(bullet)) {
-            ratio = format("%.2f", bullet / stepwise);
-        }
-        rows.push_back({figure, shown, std::isnan(bullet) ? "—" : format(fmt, bullet), ratio});
-    }
-    /// A figure without a meaningful ratio.
-    void addText(const std::string& figure, std::string stepwise, std::string bullet) {
-        rows.push_back({figure, std::move(stepwise), std::move(bullet), "—"});
-    }
-
-    void print(std::FILE* out, bool markdown) const {
-        if (markdown) {
-            const bool threeColumns = header[3].empty();
-            std::fprintf(out, "\n**%s**\n\n| %s | %s | %s |", title.c_str(), header[0].c_str(), header[1].c_str(),
-                         header[2].c_str());
-            std::fprintf(out, threeColumns ? "\n|---|---:|---:|\n" : " %s |\n|---|---:|---:|---:|\n", header[3].c_str());
-            for (const Row& r : rows) {
-                std::fprintf(out, "| %s | %s | %s |", r.figure.c_str(), r.stepwise.c_str(), r.bullet.c_str());
-                std::fprintf(out, threeColumns ? "\n" : " %s |\n", r.ratio.c_str());
-            }
-            return;
-        }
-        std::fprintf(out, "\n%s\n  %-40s %14s %14s %18s\n", title.c_str(), header[0].c_str(), header[1].c_str(),
-                     header[2].c_str(), header[3].c_str());
-        for (const Row& r : rows) {
-            std::fprintf(out, "  %-40s %14s %14s %18s\n", r.figure.c_str(), r.stepwise.c_str(), r.bullet.c_str(),
-                         r.ratio.c_str());
-        }
-    }
-};
 
 /// @brief What one run measured of the targets of issue #7, filled in by the scenarios that ran.
 ///
@@ -141,6 +69,10 @@ struct Targets {
         double ours = 0, theirs = 0;
     };
     std::vector<Timed> others;
+    /// Issue #33: every scene's speed and main accuracy figure in both engines.
+    std::vector<SceneFigure> scenes;
+    /// Issue #33: the wall rain and box pile on one thread and on two.
+    std::vector<ThreadFigure> threads;
 };
 
 constexpr double kSpeedTarget = 2;                 ///< Stepwise at least 2× Bullet's speed on the rain.
@@ -234,6 +166,69 @@ void printTargets(std::FILE* out, const Targets& t, bool markdown) {
     if (!slower.empty()) std::fprintf(out, "  Where Bullet is faster (Stepwise's time ÷ Bullet's): %s\n", slower.c_str());
 }
 
+/// Issue #33: two threads at least this much faster than one on the wall rain and the pile.
+constexpr double kThreadTarget = 1.7;
+
+/// @brief The table of verdicts of issue #33, a row per scene: its speed against
+/// Bullet's (at least 2×?) and its main accuracy figure against Bullet's (better?);
+/// then a row per threaded scene (two threads at least 1.7× one?). All from this run.
+void printIssue33Targets(std::FILE* out, const Targets& t, bool markdown) {
+    if (t.scenes.empty() && t.threads.empty()) return;
+    const auto verdict = [](bool met) { return std::string(met ? "yes" : "no"); };
+    std::vector<std::array<std::string, 6>> rows;
+    for (const SceneFigure& f : t.scenes) {
+        const double speed = f.theirCpu / f.ourCpu;
+        // Better: a smaller figure; both at zero (nothing to improve on) counts as met.
+        // A figure a run could not measure (NaN: too few steps for a period) has no verdict.
+        const bool better = f.ours < f.theirs || (f.ours == 0 && f.theirs == 0);
+        const bool measured = !std::isnan(f.ours) && !std::isnan(f.theirs);
+        rows.push_back({f.scene,
+                        format("%.3f", kMs * f.ourCpu) + " / " + format("%.3f", kMs * f.theirCpu) + " ms (" +
+                            format("%.2f×", speed) + ")",
+                        verdict(speed >= kSpeedTarget), f.accuracy,
+                        format("%.3g", f.ours) + " / " + format("%.3g", f.theirs), measured ? verdict(better) : "—"});
+    }
+    if (markdown) {
+        std::fprintf(out, "\n**Against the targets of issue #33** (same run; Stepwise / Bullet, CPU medians, the "
+                          "pendulum's whole-run wall-clock medians; speed-up = Bullet's time ÷ Stepwise's)\n\n"
+                          "| scene | time per step | ≥ 2× Bullet? | accuracy figure | Stepwise / Bullet | better? |\n"
+                          "|---|---|---|---|---|---|\n");
+        for (const auto& r : rows) {
+            std::fprintf(out, "| %s | %s | %s | %s | %s | %s |\n", r[0].c_str(), r[1].c_str(), r[2].c_str(), r[3].c_str(),
+                         r[4].c_str(), r[5].c_str());
+        }
+    } else {
+        std::fprintf(out, "\nAgainst the targets of issue #33 (Stepwise / Bullet)\n  %-28s %-34s %-6s %-44s %-22s %s\n",
+                     "scene", "time per step (speed-up)", "≥ 2×?", "accuracy figure", "Stepwise / Bullet", "better?");
+        for (const auto& r : rows) {
+            std::fprintf(out, "  %-28s %-34s %-6s %-44s %-22s %s\n", r[0].c_str(), r[1].c_str(), r[2].c_str(),
+                         r[3].c_str(), r[4].c_str(), r[5].c_str());
+        }
+    }
+    for (const ThreadFigure& f : t.threads) {
+        const double speedUp = f.oneThread / f.twoThreads;
+        const std::string measured = format("%.2f", kMs * f.oneThread) + " → " + format("%.2f", kMs * f.twoThreads) +
+                                     " ms wall (" + format("%.2f×", speedUp) + ")";
+        if (markdown) {
+            // A paragraph each: Markdown would join lines that end without a blank one.
+            std::fprintf(out, "\n%s: 2 threads at least 1.7× faster than 1: %s: **%s**.\n", f.scene.c_str(),
+                         measured.c_str(), verdict(speedUp >= kThreadTarget).c_str());
+        } else {
+            std::fprintf(out, "  %s: 2 threads at least 1.7× faster than 1: %s: %s\n", f.scene.c_str(), measured.c_str(),
+                         verdict(speedUp >= kThreadTarget).c_str());
+        }
+    }
+}
+
+/// @brief The per-scene ratios as CSV, one row a scene (for a figure in the lectures).
+void writeRatiosCsv(std::FILE* csv, const Targets& t) {
+    std::fprintf(csv, "scene,stepwise_ms,bullet_ms,speed_ratio,accuracy,stepwise_accuracy,bullet_accuracy\n");
+    for (const SceneFigure& f : t.scenes) {
+        std::fprintf(csv, "\"%s\",%.4f,%.4f,%.3f,\"%s\",%.6g,%.6g\n", f.scene.c_str(), kMs * f.ourCpu, kMs * f.theirCpu,
+                     f.theirCpu / f.ourCpu, f.accuracy.c_str(), f.ours, f.theirs);
+    }
+}
+
 int stepsOf(const Scene& scene, bool quick) {
     const int steps = static_cast<int>(std::lround(scene.settings.duration / scene.settings.timeStep));
     return quick ? std::min(steps, kQuickSteps) : steps;
@@ -282,6 +277,8 @@ Table sphereRain(std::size_t count, int rainSteps, bool quick, Targets& targets)
               kMs * double(theirMeter.worstOverlap()));
     table.add(fewerLabel + "spheres out of the box", "%.0f", double(fewerMeter.escaped(fewerEnd)),
               double(theirMeter.escaped(theirEnd)));
+    targets.scenes.push_back({"rain " + std::to_string(count), ourSeconds.cpu, theirSeconds.cpu, "worst overlap (mm)",
+                              kMs * double(ourMeter.worstOverlap()), kMs * double(theirMeter.worstOverlap())});
     targets.rains.push_back({count, ourSeconds.cpu, theirSeconds.cpu, double(ourMeter.worstOverlap()),
                              ourMeter.escaped(ourEnd), fewerSeconds.cpu, double(fewerMeter.worstOverlap()),
                              fewerMeter.escaped(fewerEnd)});
@@ -364,6 +361,8 @@ Table stack(const std::string& path, const std::string& title, bool quick, Targe
     table.addText("falls (a box moves > 0.5 m) at", fall(ourMeter), fall(theirMeter));
     targets.stacks.emplace_back(title, !ourMeter.fallTime());
     targets.others.push_back({title, ourSeconds.cpu, theirSeconds.cpu});
+    targets.scenes.push_back({title, ourSeconds.cpu, theirSeconds.cpu, "largest displacement of a box (mm)",
+                              kMs * double(ourMeter.worstDrift()), kMs * double(theirMeter.worstDrift())});
     return table;
 }
 
@@ -468,7 +467,8 @@ Table incline(const std::string& path) {
 }
 
 /// The names --scenarios takes, in the order the tables come.
-const std::string kScenarios[] = {"rain", "rain-sweep", "stacks", "free-box", "bounce", "incline", "reference"};
+const std::string kScenarios[] = {"rain",     "rain-sweep", "stacks", "free-box", "bounce",  "incline",
+                                  "reference", "wall-rain", "box-pile", "chain",   "ragdoll"};
 
 /// The reference problems' time steps in both engines, s: the display rate,
 /// and two quarterings of it, enough to show each method's order.
@@ -507,11 +507,18 @@ Table referenceProblem(const ReferenceProblem& problem, const std::string& dir, 
                             : "") +
                     "; Stepwise with SymplecticEuler (Bullet's method), and with Verlet",
                 {}};
+    std::string firstMetric;                  // the main error at h = 1/60, for the issue #33 verdicts
+    double ourFirst = NAN, theirFirst = NAN;
     for (const double h : kReferenceSteps) {
         const std::string step = "h = 1/" + std::to_string(std::lround(1 / h)) + ": ";
         const Measurement ours = runInStepwise(scene, ourJudges, IntegratorKind::SymplecticEuler, h);
         BulletWorld theirWorld(withStep(scene, IntegratorKind::SymplecticEuler, h));
         const Measurement theirs = runJudged(theirWorld, theirJudges(h), h);
+        if (firstMetric.empty() && !ours.metrics.empty()) {
+            firstMetric = ours.metrics[0].name + " (" + ours.metrics[0].unit + ")";
+            ourFirst = ours.metrics[0].value;
+            theirFirst = theirs.metrics[0].value;
+        }
         for (std::size_t k = 0; k < ours.metrics.size(); ++k) {
             const Metric& metric = ours.metrics[k];
             table.add(step + metric.name + " (" + metric.unit + ")", "%.3e", metric.value, theirs.metrics[k].value);
@@ -532,6 +539,12 @@ Table referenceProblem(const ReferenceProblem& problem, const std::string& dir, 
     const double theirNs = nanosecondsPerStep([&] { return std::make_unique<BulletWorld>(stepped); }, steps);
     table.add("ns per step at h = 1/60 (median of " + std::to_string(kReferenceTimings) + " runs)", "%.0f", ourNs, theirNs);
     targets.others.push_back({problem.name, ourNs, theirNs});
+    // The issue #33 verdicts take the pendulum (a joint); its times are wall-clock here (whole runs).
+    constexpr double kSecondsPerNs = 1e-9;
+    if (problem.name == "pendulum") {
+        targets.scenes.push_back({problem.name, kSecondsPerNs * ourNs, kSecondsPerNs * theirNs, firstMetric + " at h = 1/60",
+                                  ourFirst, theirFirst});
+    }
     return table;
 }
 
@@ -585,11 +598,30 @@ int runSideBySide(const SideBySideOptions& options) {
         if (wanted("reference")) {
             for (const ReferenceProblem& problem : referenceProblems()) show(referenceProblem(problem, dir, options.quick, targets));
         }
+        // Issue #33: levels of static boxes and jointed bodies.
+        std::vector<std::pair<std::string, Scene>> threaded;
+        if (wanted("wall-rain")) {
+            for (const std::size_t n : sizes) show(wallRain(n, options.rainSteps, options.quick, targets.scenes));
+            threaded.emplace_back("wall rain " + std::to_string(sizes.back()), wallRainScene(sizes.back()));
+        }
+        const std::size_t pile = options.quick ? kQuickPile : kPileBoxes;
+        if (wanted("box-pile")) {
+            show(boxPile(pile, options.quick, targets.scenes));
+            threaded.emplace_back("box pile " + std::to_string(pile), boxPileScene(pile));
+        }
+        if (wanted("chain")) show(chain(dir + "bench_chain.scene", options.quick, targets.scenes));
+        if (wanted("ragdoll")) show(ragdoll(dir + "bench_ragdoll.scene", options.quick, targets.scenes));
+        if (!threaded.empty()) {
+            const int steps = options.quick ? kQuickSteps : options.rainSteps;
+            Table table = threadScaling(threaded, steps, targets.threads);
+            show(std::move(table));
+        }
     } catch (const std::exception& error) {
         std::fprintf(stderr, "stepwise-bench bullet: %s\n", error.what());
         return 1;
     }
     printTargets(stdout, targets, false);
+    printIssue33Targets(stdout, targets, false);
     // An output file that cannot be opened is said on stderr (exit code 2).
     const auto openOutput = [](const std::string& path) {
         std::FILE* file = std::fopen(path.c_str(), "w");
@@ -606,6 +638,12 @@ int runSideBySide(const SideBySideOptions& options) {
         }
         std::fclose(csv);
     }
+    if (options.ratiosCsvPath) {
+        std::FILE* csv = openOutput(*options.ratiosCsvPath);
+        if (!csv) return 2;
+        writeRatiosCsv(csv, targets);
+        std::fclose(csv);
+    }
     if (options.markdownPath) {
         std::FILE* out = openOutput(*options.markdownPath);
         if (!out) return 2;
@@ -614,6 +652,7 @@ int runSideBySide(const SideBySideOptions& options) {
                      sizeof(btScalar) == 8 ? "double" : "float");
         for (const Table& table : tables) table.print(out, true);
         printTargets(out, targets, true);
+        printIssue33Targets(out, targets, true);
         std::fclose(out);
     }
     return 0;
