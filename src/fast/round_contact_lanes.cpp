@@ -7,6 +7,8 @@
 #include <cstring>
 
 #include "dynamics/contact_solver.hpp"
+#include "fast/body_lanes.hpp"
+#include "fast/contact_waves.hpp"
 #include "fast/fast_workspace.hpp"
 
 // This file's helpers pass Lanes by value too, always inlined (see lanes.hpp).
@@ -17,67 +19,6 @@
 namespace stepwise {
 
 namespace {
-
-// A solver body is two Lanes long, [v_x v_y v_z ω_x] and [ω_y ω_z m⁻¹ I⁻¹], so
-// four of them are read with eight loads and regrouped by transposing (below).
-static_assert(sizeof(SolverBody) == 2 * sizeof(Lanes), "SolverBody must be two Lanes: v, ω, m⁻¹, I⁻¹");
-static_assert(offsetof(SolverBody, angularVelocity) == 3 * sizeof(Real) &&
-                  offsetof(SolverBody, inverseMass) == 6 * sizeof(Real),
-              "SolverBody's layout is read as [v_x v_y v_z ω_x][ω_y ω_z m⁻¹ I⁻¹]");
-
-/// The four bodies of one side (A or B) of a batch, lane by lane.
-struct BodyLanes {
-    Vec3Lanes velocity;
-    Vec3Lanes angularVelocity;
-    Lanes inverseMass;
-    Lanes inverseInertia;
-};
-
-STEPWISE_LANES_INLINE const Real* realsOf(const SolverBody& body) { return &body.velocity.x; }
-STEPWISE_LANES_INLINE Real* realsOf(SolverBody& body) { return &body.velocity.x; }
-
-/// Records @p index of @p bodies, lane by lane: the velocities, and the masses m⁻¹ and I⁻¹ that
-/// arrive in the same loads (the second half of a record is [ω_y ω_z m⁻¹ I⁻¹]), so a batch
-/// need not carry copies of them.
-STEPWISE_LANES_INLINE BodyLanes gather(const std::vector<SolverBody>& bodies, const std::uint32_t (&index)[kLanes]) {
-    Lanes low[kLanes];   // [v_x v_y v_z ω_x] of each body
-    Lanes high[kLanes];  // [ω_y ω_z m⁻¹ I⁻¹]
-    for (int i = 0; i < kLanes; ++i) {
-        low[i] = load(realsOf(bodies[index[i]]));
-        high[i] = load(realsOf(bodies[index[i]]) + kLanes);
-    }
-    transpose(low[0], low[1], low[2], low[3]);
-    transpose(high[0], high[1], high[2], high[3]);
-    return {{low[0], low[1], low[2]}, {low[3], high[0], high[1]}, high[2], high[3]};
-}
-
-/// Writes the velocities back to records @p index, in lane order; m⁻¹ and I⁻¹ stay as they are in memory.
-///
-/// A lane whose record is the static one (B of a plane contact, both sides of an empty lane)
-/// writes to @p discard instead. Its velocities are zero before and after (m⁻¹ = I⁻¹ = 0), so
-/// nothing is lost; but were they written back, every batch with a plane contact would
-/// read the static record just after the batch before it wrote it, and wait for that store
-/// (a 32-byte load of a record half written by 16-byte stores cannot be forwarded). Only
-/// records that really carry a body's velocity from one contact to the next are written.
-STEPWISE_LANES_INLINE void scatter(std::vector<SolverBody>& bodies, const std::uint32_t (&index)[kLanes],
-                                   const BodyLanes& lanes, SolverBody& discard) {
-    Lanes low[kLanes] = {lanes.velocity.x, lanes.velocity.y, lanes.velocity.z, lanes.angularVelocity.x};
-    transpose(low[0], low[1], low[2], low[3]);
-    // ω_y and ω_z side by side for each record, two shuffles for all four: [y₀ z₀ y₂ z₂] and
-    // [y₁ z₁ y₃ z₃]; record i takes its pair from the low or the high half of one of them.
-    const Lanes even = shuffleLanes<0, 4, 2, 6>(lanes.angularVelocity.y, lanes.angularVelocity.z);
-    const Lanes odd = shuffleLanes<1, 5, 3, 7>(lanes.angularVelocity.y, lanes.angularVelocity.z);
-    Real evenPairs[kLanes];
-    Real oddPairs[kLanes];
-    store(evenPairs, even);
-    store(oddPairs, odd);
-    const Real* pairs[kLanes] = {evenPairs, oddPairs, evenPairs + 2, oddPairs + 2};
-    for (int i = 0; i < kLanes; ++i) {
-        SolverBody& record = index[i] == kStaticSolverBody ? discard : bodies[index[i]];
-        store(realsOf(record), low[i]);
-        std::memcpy(realsOf(record) + kLanes, pairs[i], 2 * sizeof(Real));  // ω_y, ω_z
-    }
-}
 
 /// The centres of records @p index, lane by lane (SolverWorkspace::centres: x, y, z and a
 /// fourth Real that is never read, so each centre is one aligned load).
@@ -168,33 +109,15 @@ void recordCentres(const SolverWorkspace& solver, FastWorkspace& fast) {
 }
 
 void batchRoundContacts(const SolverWorkspace& solver, FastWorkspace& fast) {
-    // Each round contact's wave, walking them in order: one after the last wave of an earlier
-    // contact on either of its bodies (round_contact_lanes.hpp).
-    const std::vector<std::uint32_t>& round = solver.roundContacts;
-    fast.nextWave.assign(solver.bodies.size(), 0);  // per record: the wave its next contact may take
-    fast.waveOf.resize(round.size());
-    fast.waves = 0;
-    for (std::size_t k = 0; k < round.size(); ++k) {
-        const SolverContact& c = solver.contacts[round[k]];
-        const bool bothDynamic = c.bodyB != kStaticSolverBody;  // nothing moves the static record: no wait
-        const std::uint32_t wave = std::max(fast.nextWave[c.bodyA], bothDynamic ? fast.nextWave[c.bodyB] : 0);
-        fast.waveOf[k] = wave;
-        fast.nextWave[c.bodyA] = wave + 1;
-        if (bothDynamic) fast.nextWave[c.bodyB] = wave + 1;
-        fast.waves = std::max(fast.waves, wave + 1);
-    }
-    // Counting sort by wave (contact order kept within a wave): each wave's contacts, four to a batch.
+    // Each round contact's wave (contact_waves.hpp), then each wave's contacts, four to a batch.
+    scheduleWaves(solver, solver.roundContacts, fast);
     const std::uint32_t waves = fast.waves;
-    fast.waveStart.assign(waves + 1, 0);
-    for (const std::uint32_t wave : fast.waveOf) ++fast.waveStart[wave + 1];
     std::size_t batches = 0;
     for (std::uint32_t wave = 0; wave < waves; ++wave) {
-        batches += (fast.waveStart[wave + 1] + kLanes - 1) / kLanes;
-        fast.waveStart[wave + 1] += fast.waveStart[wave];
+        const std::uint32_t first = wave == 0 ? 0 : fast.waveStart[wave - 1];
+        batches += (fast.waveStart[wave] - first + kLanes - 1) / kLanes;
     }
-    fast.waveOrder.resize(round.size());
-    for (std::size_t k = 0; k < round.size(); ++k) fast.waveOrder[fast.waveStart[fast.waveOf[k]]++] = round[k];
-    // Placing moved each start to its wave's end; the batches walk the waves in turn.
+    // The batches walk the waves in turn.
     fast.roundBatches.clear();
     fast.roundBatches.reserve(batches);
     std::uint32_t first = 0;

@@ -1,0 +1,248 @@
+/// @file box_contact_lanes.cpp
+/// @brief The contacts with stored rows solved four at a time (the why is in box_contact_lanes.hpp).
+#include "fast/box_contact_lanes.hpp"
+
+#include <cstddef>
+
+#include "dynamics/contact_solver.hpp"
+#include "fast/body_lanes.hpp"
+#include "fast/contact_waves.hpp"
+#include "fast/fast_workspace.hpp"
+
+// This file's helpers pass Lanes by value too, always inlined (see lanes.hpp).
+#if defined(__GNUC__)  // GCC, and clang, which reads GCC's pragmas
+#pragma GCC diagnostic ignored "-Wpsabi"
+#endif
+
+namespace stepwise {
+
+namespace {
+
+// A stored row on Lanes (solver_body.hpp, rowVelocity() and applyRowImpulse()), the same lines.
+
+/// J·v along the row of direction @p d: d·(v_B − v_A) + (r_B × d)·ω_B − (r_A × d)·ω_A, m/s.
+STEPWISE_LANES_INLINE Lanes rowVelocity(const BodyLanes& a, const BodyLanes& b, const Vec3Lanes& d, const RowLanes& row) {
+    return dot(b.velocity - a.velocity, d) + dot(row.armB, b.angularVelocity) - dot(row.armA, a.angularVelocity);
+}
+
+/// Impulse λ along the row: +λd on B, −λd on A; ω changes by ±λ·I⁻¹(r × d).
+STEPWISE_LANES_INLINE void applyRow(BodyLanes& a, BodyLanes& b, const Vec3Lanes& d, const RowLanes& row, Lanes lambda) {
+    a.velocity -= (lambda * a.inverseMass) * d;
+    a.angularVelocity -= lambda * row.turnA;
+    b.velocity += (lambda * b.inverseMass) * d;
+    b.angularVelocity += lambda * row.turnB;
+}
+
+/// Lane by lane, `keep ? a : b` for vectors.
+template <class Mask>
+STEPWISE_LANES_INLINE Vec3Lanes selectVectors(Mask keep, const Vec3Lanes& a, const Vec3Lanes& b) {
+    return {select(keep, a.x, b.x), select(keep, a.y, b.y), select(keep, a.z, b.z)};
+}
+
+void setRow(RowLanes& lanes, int lane, const ContactRow& row) {
+    lanes.armA.setLane(lane, row.armA);
+    lanes.armB.setLane(lane, row.armB);
+    lanes.turnA.setLane(lane, row.turnA);
+    lanes.turnB.setLane(lane, row.turnB);
+}
+
+/// A new batch whose four lanes are empty: static record 0 on both sides, zero rows, masses and impulses.
+BoxBatch emptyBatch() {
+    BoxBatch batch;
+    for (int lane = 0; lane < kLanes; ++lane) {
+        batch.contact[lane] = kEmptyLane;
+        batch.bodyA[lane] = batch.bodyB[lane] = kStaticSolverBody;
+    }
+    const Lanes zero = splat(0);
+    const Vec3Lanes zeros{zero, zero, zero};
+    batch.normal = batch.tangent0 = zeros;
+    for (RowLanes* row : {&batch.normalRow, &batch.tangentRow0, &batch.tangentRow1}) row->armA = row->armB = row->turnA = row->turnB = zeros;
+    batch.normalMass = batch.tangentMass = batch.friction = zero;
+    batch.normalSurfaceSpeed = batch.tangentSurfaceSpeed0 = batch.tangentSurfaceSpeed1 = batch.separation = zero;
+    batch.normalImpulse = batch.tangentImpulse0 = batch.tangentImpulse1 = batch.maxNormalImpulse = zero;
+    return batch;
+}
+
+void setLane(BoxBatch& batch, int lane, std::uint32_t index, const SolverContact& c, const ContactRows& rows) {
+    batch.contact[lane] = index;
+    batch.bodyA[lane] = c.bodyA;
+    batch.bodyB[lane] = c.bodyB;
+    batch.normal.setLane(lane, c.normal);
+    batch.tangent0.setLane(lane, c.tangent[0]);
+    setRow(batch.normalRow, lane, rows.normal);
+    setRow(batch.tangentRow0, lane, rows.tangent[0]);
+    setRow(batch.tangentRow1, lane, rows.tangent[1]);
+    batch.normalMass[lane] = c.normalMass;
+    batch.tangentMass[lane] = c.tangentMass[0];
+    batch.friction[lane] = c.friction;
+    batch.normalSurfaceSpeed[lane] = rows.normalSurfaceSpeed;
+    batch.tangentSurfaceSpeed0[lane] = rows.tangentSurfaceSpeed[0];
+    batch.tangentSurfaceSpeed1[lane] = rows.tangentSurfaceSpeed[1];
+    batch.normalImpulse[lane] = c.normalImpulse;
+    batch.tangentImpulse0[lane] = c.tangentImpulse[0];
+    batch.tangentImpulse1[lane] = c.tangentImpulse[1];
+    batch.maxNormalImpulse[lane] = c.maxNormalImpulse;
+}
+
+}  // namespace
+
+void batchBoxContacts(const SolverWorkspace& solver, FastWorkspace& fast) {
+    scheduleWaves(solver, solver.otherContacts, fast);
+    fast.boxBatches.clear();
+    std::uint32_t first = 0;
+    for (std::uint32_t wave = 0; wave < fast.waves; ++wave) {
+        const std::uint32_t end = fast.waveStart[wave];
+        for (std::uint32_t k = first; k < end; ++k) {
+            const int lane = static_cast<int>((k - first) % kLanes);
+            if (lane == 0) {
+                fast.boxBatches.push_back(emptyBatch());
+                fast.boxBatches.back().wave = wave;
+            }
+            const std::uint32_t index = fast.waveOrder[k];
+            const SolverContact& c = solver.contacts[index];
+            setLane(fast.boxBatches.back(), lane, index, c, solver.rows[c.rows]);
+        }
+        first = end;
+    }
+}
+
+void recordBoxSeparations(const SolverWorkspace& solver, FastWorkspace& fast) {
+    for (BoxBatch& batch : fast.boxBatches) {
+        for (int lane = 0; lane < kLanes; ++lane) {
+            if (batch.contact[lane] == kEmptyLane) continue;
+            batch.separation[lane] = currentSeparation(solver.contacts[batch.contact[lane]], solver);
+        }
+    }
+}
+
+STEPWISE_LANES_COPIES
+void warmStartBoxContacts(SolverWorkspace& solver, const FastWorkspace& fast) {
+    SolverBody discard;  // where the static record's lanes go (scatter())
+    for (const BoxBatch& batch : fast.boxBatches) {
+        BodyLanes a = gather(solver.bodies, batch.bodyA);
+        BodyLanes b = gather(solver.bodies, batch.bodyB);
+        applyRow(a, b, batch.normal, batch.normalRow, batch.normalImpulse);
+        applyRow(a, b, batch.tangent0, batch.tangentRow0, batch.tangentImpulse0);
+        applyRow(a, b, cross(batch.normal, batch.tangent0), batch.tangentRow1, batch.tangentImpulse1);
+        scatter(solver.bodies, batch.bodyA, a, discard);
+        scatter(solver.bodies, batch.bodyB, b, discard);
+    }
+}
+
+void clearBoxContactImpulses(FastWorkspace& fast) {
+    for (BoxBatch& batch : fast.boxBatches) batch.normalImpulse = batch.tangentImpulse0 = batch.tangentImpulse1 = splat(0);
+}
+
+namespace {
+
+/// What a pass's formulas take from the settings, as Lanes, once per pass.
+struct PassConstants {
+    bool accumulate = true;   ///< ContactSolverSettings::accumulate.
+    Lanes zero{};
+    Lanes one{};
+    Lanes inverseSubstep{};   ///< 1/h_s, 1/s.
+    Lanes biasRate{};         ///< softness.hpp, 1/s.
+    Lanes slowestPushOut{};   ///< −kMaxPushOutSpeed, m/s.
+    Lanes softMassScale{};    ///< s_m where bodies overlap (softness.hpp; the pass without the push uses 1).
+    Lanes softImpulseScale{}; ///< s_i where bodies overlap (the pass without the push uses 0).
+};
+
+/// solveContact()'s lines for a contact with stored rows (solve_contacts.cpp), on one batch: each
+/// `if` on a contact's own numbers becomes a select between the two results, lane by lane.
+template <bool PushOut>
+STEPWISE_LANES_INLINE void solveBatch(BoxBatch& batch, std::vector<SolverBody>& bodies, const PassConstants& k,
+                                      SolverBody& discard) {
+    // Normal: λ = −K⁻¹·s_m·(v_n + bias) − s_i·λ_acc (softness.hpp); a gap closes in this substep, no further.
+    const Lanes separation = batch.separation;
+    const auto gap = separation > k.zero;
+    const Lanes gapBias = separation * k.inverseSubstep;
+    BodyLanes a = gather(bodies, batch.bodyA);
+    BodyLanes b = gather(bodies, batch.bodyB);
+    const Lanes vn = rowVelocity(a, b, batch.normal, batch.normalRow) + batch.normalSurfaceSpeed;
+    Lanes impulse;
+    if constexpr (PushOut) {
+        const Lanes bias = select(gap, gapBias, maxLanes(k.biasRate * separation, k.slowestPushOut));
+        const Lanes massScale = select(gap, k.one, k.softMassScale);
+        const Lanes impulseScale = select(gap, k.zero, k.softImpulseScale);
+        impulse = -batch.normalMass * massScale * (vn + bias) - impulseScale * batch.normalImpulse;
+    } else {  // no push: s_m = 1, s_i = 0, and an overlap has no bias
+        impulse = -batch.normalMass * (vn + select(gap, gapBias, k.zero));
+    }
+    Lanes applied;
+    if (k.accumulate) {
+        const Lanes total = maxLanes(batch.normalImpulse + impulse, k.zero);
+        applied = total - batch.normalImpulse;
+        batch.normalImpulse = total;
+    } else {  // Box2D-Lite's switch: clamp each increment
+        applied = maxLanes(impulse, k.zero);
+        batch.normalImpulse += applied;
+    }
+    batch.maxNormalImpulse = maxLanes(batch.maxNormalImpulse, batch.normalImpulse);
+    applyRow(a, b, batch.normal, batch.normalRow, applied);
+
+    // Friction inside Coulomb's circle |λ_t| ≤ μ·λ_n, both tangents read before either is applied.
+    // A point that does not push and holds no friction is skipped by the plain pass: its lanes
+    // keep the bodies and impulses they had (`rest`).
+    const Lanes limit = batch.friction * batch.normalImpulse;
+    const auto rest = (limit == k.zero) & (batch.tangentImpulse0 == k.zero) & (batch.tangentImpulse1 == k.zero);
+    const Vec3Lanes tangent1 = cross(batch.normal, batch.tangent0);  // t₂ = n × t₁, as prepare made it (tangentBasis())
+    const Lanes along0 = rowVelocity(a, b, batch.tangent0, batch.tangentRow0) + batch.tangentSurfaceSpeed0;
+    const Lanes along1 = rowVelocity(a, b, tangent1, batch.tangentRow1) + batch.tangentSurfaceSpeed1;
+    Lanes total0 = batch.tangentImpulse0 - batch.tangentMass * along0;
+    Lanes total1 = batch.tangentImpulse1 - batch.tangentMass * along1;
+    const Lanes magnitude = sqrtLanes(total0 * total0 + total1 * total1);
+    const Lanes scale = select(magnitude > limit, limit / magnitude, k.one);
+    total0 *= scale;
+    total1 *= scale;
+    const BodyLanes aBefore = a;
+    const BodyLanes bBefore = b;
+    applyRow(a, b, batch.tangent0, batch.tangentRow0, total0 - batch.tangentImpulse0);
+    applyRow(a, b, tangent1, batch.tangentRow1, total1 - batch.tangentImpulse1);
+    a.velocity = selectVectors(rest, aBefore.velocity, a.velocity);
+    a.angularVelocity = selectVectors(rest, aBefore.angularVelocity, a.angularVelocity);
+    b.velocity = selectVectors(rest, bBefore.velocity, b.velocity);
+    b.angularVelocity = selectVectors(rest, bBefore.angularVelocity, b.angularVelocity);
+    batch.tangentImpulse0 = select(rest, batch.tangentImpulse0, total0);
+    batch.tangentImpulse1 = select(rest, batch.tangentImpulse1, total1);
+    scatter(bodies, batch.bodyA, a, discard);
+    scatter(bodies, batch.bodyB, b, discard);
+}
+
+template <bool PushOut>
+STEPWISE_LANES_INLINE void solveBatches(SolverWorkspace& solver, FastWorkspace& fast, const PassConstants& k) {
+    SolverBody discard;  // where the static record's lanes go (scatter())
+    for (BoxBatch& batch : fast.boxBatches) solveBatch<PushOut>(batch, solver.bodies, k, discard);
+}
+
+}  // namespace
+
+// Compiled three times (STEPWISE_LANES_COPIES, lanes.hpp): AVX-512, AVX2 and any x86-64, the same numbers.
+STEPWISE_LANES_COPIES
+void solveBoxContacts(SolverWorkspace& solver, FastWorkspace& fast, const ContactSolverSettings& settings, bool useBias) {
+    PassConstants k;
+    k.accumulate = settings.accumulate;
+    k.zero = splat(0);
+    k.one = splat(1);
+    k.inverseSubstep = splat(settings.inverseSubstep);
+    k.biasRate = splat(settings.softness.biasRate);
+    k.slowestPushOut = splat(-kMaxPushOutSpeed);
+    k.softMassScale = splat(settings.softness.massScale);
+    k.softImpulseScale = splat(settings.softness.impulseScale);
+    if (useBias && settings.positionCorrection) solveBatches<true>(solver, fast, k);  // the soft bias pushes overlaps apart
+    else solveBatches<false>(solver, fast, k);
+}
+
+void syncBoxContacts(const FastWorkspace& fast, SolverWorkspace& solver) {
+    for (const BoxBatch& batch : fast.boxBatches) {
+        for (int lane = 0; lane < kLanes; ++lane) {
+            if (batch.contact[lane] == kEmptyLane) continue;
+            SolverContact& c = solver.contacts[batch.contact[lane]];
+            c.normalImpulse = batch.normalImpulse[lane];
+            c.tangentImpulse[0] = batch.tangentImpulse0[lane];
+            c.tangentImpulse[1] = batch.tangentImpulse1[lane];
+            c.maxNormalImpulse = batch.maxNormalImpulse[lane];
+        }
+    }
+}
+
+}  // namespace stepwise
