@@ -3,6 +3,7 @@
 #include "fast/box_contact_lanes.hpp"
 
 #include <cstddef>
+#include <vector>
 
 #include "dynamics/contact_solver.hpp"
 #include "fast/body_lanes.hpp"
@@ -63,6 +64,54 @@ BoxBatch emptyBatch() {
     return batch;
 }
 
+/// The anchors of a batch of four empty lanes: pose 0 on both sides (any pose: nothing turns, the
+/// normal is zero), so an empty lane's separation is 0.
+BoxAnchorBatch emptyAnchors() {
+    BoxAnchorBatch anchors;
+    for (int lane = 0; lane < kLanes; ++lane) anchors.poseA[lane] = anchors.poseB[lane] = 0;
+    const Lanes zero = splat(0);
+    anchors.localA = anchors.localB = Vec3Lanes{zero, zero, zero};
+    anchors.separationOffset = anchors.turning = zero;
+    return anchors;
+}
+
+void setAnchors(BoxAnchorBatch& anchors, int lane, const SolverContact& c, const SolverWorkspace& solver) {
+    anchors.poseA[lane] = c.poseA;
+    anchors.poseB[lane] = c.poseB;
+    anchors.separationOffset[lane] = c.separationOffset;
+    if (c.turningAnchors != kNoTurningAnchors) {
+        const TurningAnchors& turning = solver.turningAnchors[c.turningAnchors];
+        anchors.localA.setLane(lane, turning.localA);
+        anchors.localB.setLane(lane, turning.localB);
+        anchors.turning[lane] = 1;
+    }
+}
+
+/// The positions and orientations of poses @p index, lane by lane: q = (w; x, y, z).
+STEPWISE_LANES_INLINE void gatherPoses(const std::vector<Pose>& poses, const std::uint32_t (&index)[kLanes],
+                                       Vec3Lanes& position, Lanes& w, Vec3Lanes& axis) {
+    constexpr int kPoseReals = 7;  // x, y, z of the centre; x, y, z, w of the quaternion
+    Real reals[kPoseReals][kLanes];
+    for (int lane = 0; lane < kLanes; ++lane) {
+        const Pose& pose = poses[index[lane]];
+        const Real values[kPoseReals] = {pose.position.x,    pose.position.y,    pose.position.z,   pose.orientation.x,
+                                         pose.orientation.y, pose.orientation.z, pose.orientation.w};
+        for (int k = 0; k < kPoseReals; ++k) reals[k][lane] = values[k];
+    }
+    position = {load(reals[0]), load(reals[1]), load(reals[2])};
+    axis = {load(reals[3]), load(reals[4]), load(reals[5])};
+    w = load(reals[6]);
+}
+
+/// v turned by the unit quaternion (w; u): v + 2·(w·(u × v) + u × (u × v)), term by term as GLM's
+/// `quat * vec3` forms it (so a lane is GLM's, to the bit).
+STEPWISE_LANES_INLINE Vec3Lanes rotate(Lanes w, const Vec3Lanes& u, const Vec3Lanes& v) {
+    const Vec3Lanes uv = cross(u, v);
+    const Vec3Lanes uuv = cross(u, uv);
+    const Lanes two = splat(2);
+    return v + two * (w * uv + uuv);
+}
+
 void setLane(BoxBatch& batch, int lane, std::uint32_t index, const SolverContact& c, const ContactRows& rows) {
     batch.contact[lane] = index;
     batch.bodyA[lane] = c.bodyA;
@@ -89,6 +138,7 @@ void setLane(BoxBatch& batch, int lane, std::uint32_t index, const SolverContact
 void batchBoxContacts(const SolverWorkspace& solver, FastWorkspace& fast) {
     scheduleWaves(solver, solver.otherContacts, fast);
     fast.boxBatches.clear();
+    fast.boxAnchors.clear();
     std::uint32_t first = 0;
     for (std::uint32_t wave = 0; wave < fast.waves; ++wave) {
         const std::uint32_t end = fast.waveStart[wave];
@@ -97,21 +147,35 @@ void batchBoxContacts(const SolverWorkspace& solver, FastWorkspace& fast) {
             if (lane == 0) {
                 fast.boxBatches.push_back(emptyBatch());
                 fast.boxBatches.back().wave = wave;
+                fast.boxAnchors.push_back(emptyAnchors());
             }
             const std::uint32_t index = fast.waveOrder[k];
             const SolverContact& c = solver.contacts[index];
             setLane(fast.boxBatches.back(), lane, index, c, solver.rows[c.rows]);
+            setAnchors(fast.boxAnchors.back(), lane, c, solver);
         }
         first = end;
     }
 }
 
+STEPWISE_LANES_COPIES
 void recordBoxSeparations(const SolverWorkspace& solver, FastWorkspace& fast) {
-    for (BoxBatch& batch : fast.boxBatches) {
-        for (int lane = 0; lane < kLanes; ++lane) {
-            if (batch.contact[lane] == kEmptyLane) continue;
-            batch.separation[lane] = currentSeparation(solver.contacts[batch.contact[lane]], solver);
-        }
+    const std::size_t count = fast.boxBatches.size();
+    for (std::size_t i = 0; i < count; ++i) {
+        BoxBatch& batch = fast.boxBatches[i];
+        const BoxAnchorBatch& anchors = fast.boxAnchors[i];
+        Vec3Lanes centreA;
+        Vec3Lanes centreB;
+        Vec3Lanes axisA;
+        Vec3Lanes axisB;
+        Lanes wA;
+        Lanes wB;
+        gatherPoses(solver.poses, anchors.poseA, centreA, wA, axisA);
+        gatherPoses(solver.poses, anchors.poseB, centreB, wB, axisB);
+        // C = (c_B − c_A)·n + C_offset, plus the turning anchors' part where one turns
+        const Lanes separation = dot(centreB - centreA, batch.normal) + anchors.separationOffset;
+        const Vec3Lanes turned = rotate(wB, axisB, anchors.localB) - rotate(wA, axisA, anchors.localA);
+        batch.separation = select(anchors.turning != splat(0), separation + dot(turned, batch.normal), separation);
     }
 }
 

@@ -20,11 +20,13 @@
 ///
 /// **The separation once a stage.** The plain pass measures each contact's
 /// separation at the recorded poses, turning the box's anchors by its
-/// orientation (currentSeparation()). The poses do not change within a stage
-/// (the solve's passes, or the relax's): only the drift and the kinematic
-/// bodies' move record new ones, between the stages. So the separation is
-/// computed once per stage by the same function, to the same bits, and the
-/// passes read one number per contact instead of two poses and two anchors.
+/// orientation (currentSeparation()):
+/// [ C = (c_B - c_A)\cdot n + C_	ext{offset} + (q_B l_B q_B^{*} - q_A l_A q_A^{*})\cdot n . ]
+/// The poses do not change within a stage (the solve's passes, or the
+/// relax's): only the drift and the kinematic bodies' move record new ones,
+/// between the stages. So the separation is computed once per stage, four
+/// contacts at a time with the same lines (BoxAnchorBatch), and the passes
+/// read one number per contact instead of two poses and two anchors.
 ///
 /// **Friction** is solved in every pass, the relax's too (contact_solver.hpp,
 /// "Friction in the relax"). The plain pass skips a point that does not push
@@ -84,12 +86,23 @@ struct alignas(kCacheLine) BoxBatch {
     Lanes maxNormalImpulse;         ///< Largest λ_n this step, N·s.
 };
 
+/// @brief What the separations of a BoxBatch's four contacts are measured from, lane by lane
+/// (currentSeparation()): read once a stage, not by every pass, so kept beside the batch, not in it.
+struct alignas(kCacheLine) BoxAnchorBatch {
+    std::uint32_t poseA[kLanes];  ///< A's pose in SolverWorkspace::poses.
+    std::uint32_t poseB[kLanes];  ///< B's pose there.
+    Vec3Lanes localA;             ///< l_A, A's turning anchor in its body frame (zero if none), m.
+    Vec3Lanes localB;             ///< l_B, m.
+    Lanes separationOffset;       ///< C_offset, m.
+    Lanes turning;                ///< 1 where an anchor turns (SolverContact::turningAnchors), else 0.
+};
+
 /// @brief Puts the contacts with stored rows (SolverWorkspace::otherContacts, in order) in waves and
 /// packs them into @p fast's BoxBatch lanes, with their impulses as prepareContacts() left them.
 void batchBoxContacts(const SolverWorkspace& solver, FastWorkspace& fast);
 
-/// @brief Each batched contact's separation at the poses recorded now (currentSeparation(), the same
-/// bits), for the passes of the stage that follows.
+/// @brief Each batched contact's separation at the poses recorded now (currentSeparation()'s lines,
+/// four at a time: the same bits), for the passes of the stage that follows.
 void recordBoxSeparations(const SolverWorkspace& solver, FastWorkspace& fast);
 
 /// @brief The warm start of the batched contacts: their accumulated impulses applied to the bodies

@@ -44,6 +44,7 @@ struct FastWorkspace {
     /// The contacts with stored rows (boxes, kinematic bodies), four of one wave per batch
     /// (box_contact_lanes.hpp); their impulses too live here through the substeps (syncBoxContacts()).
     std::vector<BoxBatch> boxBatches;
+    std::vector<BoxAnchorBatch> boxAnchors;  ///< Per box batch: what its separations are measured from.
     std::vector<std::uint32_t> nextWave;   ///< Per record: the first wave its next contact may take (scratch, contact_waves.hpp).
     std::vector<std::uint32_t> waveOf;     ///< Per contact scheduled (in the list's order): its wave (scratch).
     std::vector<std::uint32_t> waveStart;  ///< Per wave: where its contacts end in waveOrder (scratch).
