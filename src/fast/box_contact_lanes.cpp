@@ -136,9 +136,11 @@ void setLane(BoxBatch& batch, int lane, std::uint32_t index, const SolverContact
 }  // namespace
 
 void batchBoxContacts(const SolverWorkspace& solver, FastWorkspace& fast) {
-    scheduleWaves(solver, solver.otherContacts, fast);
     fast.boxBatches.clear();
     fast.boxAnchors.clear();
+    if (solver.otherContacts.empty()) return;
+    scheduleWaves(solver, solver.otherContacts, fast);
+    if (double(solver.otherContacts.size()) < kMinBoxContactsPerWave * double(fast.waves)) return;  // thin: one at a time
     std::uint32_t first = 0;
     for (std::uint32_t wave = 0; wave < fast.waves; ++wave) {
         const std::uint32_t end = fast.waveStart[wave];

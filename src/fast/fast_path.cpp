@@ -99,13 +99,21 @@ void warmStartContactsInLanes(SolverWorkspace& w, FastWorkspace& fast, bool accu
         return;
     }
     warmStartRoundContacts(w, fast);
-    warmStartBoxContacts(w, fast);
+    if (fast.boxBatches.empty()) {  // waves too thin for the lanes (kMinBoxContactsPerWave)
+        for (const std::uint32_t index : w.otherContacts) warmStartContact(w, index);
+    } else {
+        warmStartBoxContacts(w, fast);
+    }
 }
 
 /// solveContacts() with the contacts in lanes: the round ones, then the others; the same order, the same numbers.
 void solveContactsInLanes(SolverWorkspace& w, FastWorkspace& fast, const ContactSolverSettings& settings, bool useBias) {
     solveRoundContacts(w, fast, settings, useBias);
-    solveBoxContacts(w, fast, settings, useBias);
+    if (fast.boxBatches.empty()) {  // waves too thin for the lanes (kMinBoxContactsPerWave)
+        for (const std::uint32_t index : w.otherContacts) solveContact(w, index, settings, useBias);
+    } else {
+        solveBoxContacts(w, fast, settings, useBias);
+    }
 }
 
 /// The substeps on the objects, as the plain loop runs them, with the contact passes in lanes.
@@ -254,8 +262,13 @@ void runFastSubsteps(const FastSubsteps& in, FastWorkspace& fast) {
 
 SolverFootprint fastFootprint(const SolverWorkspace& w, const FastWorkspace& fast) {
     SolverFootprint f;
-    // A pass reads the records, their centres and the batches of both kinds.
+    // A pass reads the records, their centres and the batches of both kinds; the contacts with
+    // stored rows solved one at a time (thin waves), their SolverContact, rows, anchors and poses.
     f.passBytes = bytesOf(w.bodies) + bytesOf(fast.centres) + bytesOf(fast.roundBatches) + bytesOf(fast.boxBatches);
+    if (fast.boxBatches.empty() && !w.otherContacts.empty()) {
+        f.passBytes += w.otherContacts.size() * sizeof(SolverContact) + bytesOf(w.rows) + bytesOf(w.turningAnchors) +
+                       bytesOf(w.poses);
+    }
     f.allBytes = solverFootprint(w).allBytes + bytesOf(fast.roundBatches) + bytesOf(fast.boxBatches) + bytesOf(fast.nextWave) +
                  bytesOf(fast.waveOf) + bytesOf(fast.waveStart) + bytesOf(fast.waveOrder) + bytesOf(fast.centres) +
                  bytesOf(fast.orientations) + bytesOf(fast.freeFlight) + bytesOf(fast.startMomentum);
