@@ -28,7 +28,8 @@
 /// **The separation once a stage.** The plain pass measures each contact's
 /// separation at the recorded poses, turning the box's anchors by its
 /// orientation (currentSeparation()):
-/// [ C = (c_B - c_A)\cdot n + C_	ext{offset} + (q_B l_B q_B^{*} - q_A l_A q_A^{*})\cdot n . ]
+/// \f[ C = (c_B - c_A)\cdot n + C_\text{offset} + (R_B\,l_B - R_A\,l_A)\cdot n , \f]
+/// with R the rotation of the pose's quaternion.
 /// The poses do not change within a stage (the solve's passes, or the
 /// relax's): only the drift and the kinematic bodies' move record new ones,
 /// between the stages. So the separation is computed once per stage, four
