@@ -587,11 +587,14 @@ TEST_CASE("Stacks of boxes and a kinematic platform take the fast path with the 
         Scene scene = loadSceneFile(std::string(STEPWISE_SOURCE_DIR) + "/config/lesson08_pyramid.scene");
         const FastPathCounts counts = requireSameOnBothRoads(scene, 20);
         CHECK(counts.steps == 20);
-        CHECK(counts.packedSteps == 0);  // box contacts: the road on the objects
+        CHECK(counts.packedSteps == 0);    // box contacts: the road on the objects
+        CHECK(counts.boxLaneSteps == 20);  // wide waves: every step's box contacts in lanes
     }
     SECTION("the tower of 20 boxes (lesson 8)") {
         Scene scene = loadSceneFile(std::string(STEPWISE_SOURCE_DIR) + "/config/lesson08_tower.scene");
-        CHECK(requireSameOnBothRoads(scene, 60).steps == 60);
+        const FastPathCounts counts = requireSameOnBothRoads(scene, 60);
+        CHECK(counts.steps == 60);
+        CHECK(counts.boxLaneSteps == 0);  // a chain: waves too thin, its contacts one at a time
     }
     SECTION("boxes riding a moving, turning kinematic platform, balls among them") {
         std::string text = "World, Duration=2, Sleep=false\n"
@@ -607,7 +610,10 @@ TEST_CASE("Stacks of boxes and a kinematic platform take the fast path with the 
                                      ", Shape=Box, Scale=(0.5,0.5,0.5), Mass=" + std::to_string(1 + i % 3) +
                                      ", Friction=0.7, Position=" + at + "\n";
         }
-        CHECK(requireSameOnBothRoads(sceneFrom(text), 90).steps == 90);
+        const FastPathCounts counts = requireSameOnBothRoads(sceneFrom(text), 90);
+        CHECK(counts.steps == 90);
+        INFO(counts.boxLaneSteps << " steps with box lanes");
+        CHECK(counts.boxLaneSteps > 0);
     }
 }
 

@@ -247,6 +247,7 @@ void runFastSubsteps(const FastSubsteps& in, FastWorkspace& fast) {
         packed = in.packedSubsteps && packRecords(in.contacts, fast);
     }, StageRun::Continued);
     fast.counts.steps += 1;
+    if (!fast.boxBatches.empty()) fast.counts.boxLaneSteps += 1;
     if (packed) {
         fast.counts.packedSteps += 1;
         substepsOnRecords(in, fast);
