@@ -9,6 +9,7 @@
 #include "fast/body_lanes.hpp"
 #include "fast/contact_waves.hpp"
 #include "fast/fast_workspace.hpp"
+#include "fast/normal_row_lanes.hpp"
 
 // This file's helpers pass Lanes by value too, always inlined (see lanes.hpp).
 #if defined(__GNUC__)  // GCC, and clang, which reads GCC's pragmas
@@ -201,49 +202,17 @@ void clearBoxContactImpulses(FastWorkspace& fast) {
 
 namespace {
 
-/// What a pass's formulas take from the settings, as Lanes, once per pass.
-struct PassConstants {
-    bool accumulate = true;   ///< ContactSolverSettings::accumulate.
-    Lanes zero{};
-    Lanes one{};
-    Lanes inverseSubstep{};   ///< 1/h_s, 1/s.
-    Lanes biasRate{};         ///< softness.hpp, 1/s.
-    Lanes slowestPushOut{};   ///< −kMaxPushOutSpeed, m/s.
-    Lanes softMassScale{};    ///< s_m where bodies overlap (softness.hpp; the pass without the push uses 1).
-    Lanes softImpulseScale{}; ///< s_i where bodies overlap (the pass without the push uses 0).
-};
-
 /// solveContact()'s lines for a contact with stored rows (solve_contacts.cpp), on one batch: each
 /// `if` on a contact's own numbers becomes a select between the two results, lane by lane.
 template <bool PushOut>
 STEPWISE_LANES_INLINE void solveBatch(BoxBatch& batch, std::vector<SolverBody>& bodies, const PassConstants& k,
                                       SolverBody& discard) {
-    // Normal: λ = −K⁻¹·s_m·(v_n + bias) − s_i·λ_acc (softness.hpp); a gap closes in this substep, no further.
-    const Lanes separation = batch.separation;
-    const auto gap = separation > k.zero;
-    const Lanes gapBias = separation * k.inverseSubstep;
+    // Normal: λ = −K⁻¹·s_m·(v_n + bias) − s_i·λ_acc (normal_row_lanes.hpp)
     BodyLanes a = gather(bodies, batch.bodyA);
     BodyLanes b = gather(bodies, batch.bodyB);
     const Lanes vn = rowVelocity(a, b, batch.normal, batch.normalRow) + batch.normalSurfaceSpeed;
-    Lanes impulse;
-    if constexpr (PushOut) {
-        const Lanes bias = select(gap, gapBias, maxLanes(k.biasRate * separation, k.slowestPushOut));
-        const Lanes massScale = select(gap, k.one, k.softMassScale);
-        const Lanes impulseScale = select(gap, k.zero, k.softImpulseScale);
-        impulse = -batch.normalMass * massScale * (vn + bias) - impulseScale * batch.normalImpulse;
-    } else {  // no push: s_m = 1, s_i = 0, and an overlap has no bias
-        impulse = -batch.normalMass * (vn + select(gap, gapBias, k.zero));
-    }
-    Lanes applied;
-    if (k.accumulate) {
-        const Lanes total = maxLanes(batch.normalImpulse + impulse, k.zero);
-        applied = total - batch.normalImpulse;
-        batch.normalImpulse = total;
-    } else {  // Box2D-Lite's switch: clamp each increment
-        applied = maxLanes(impulse, k.zero);
-        batch.normalImpulse += applied;
-    }
-    batch.maxNormalImpulse = maxLanes(batch.maxNormalImpulse, batch.normalImpulse);
+    const Lanes applied = solveNormalImpulse<PushOut>(vn, batch.separation, batch.normalMass, batch.normalImpulse,
+                                                      batch.maxNormalImpulse, k);
     applyRow(a, b, batch.normal, batch.normalRow, applied);
 
     // Friction inside Coulomb's circle |λ_t| ≤ μ·λ_n, both tangents read before either is applied.
@@ -285,15 +254,7 @@ STEPWISE_LANES_INLINE void solveBatches(SolverWorkspace& solver, FastWorkspace& 
 // Compiled three times (STEPWISE_LANES_COPIES, lanes.hpp): AVX-512, AVX2 and any x86-64, the same numbers.
 STEPWISE_LANES_COPIES
 void solveBoxContacts(SolverWorkspace& solver, FastWorkspace& fast, const ContactSolverSettings& settings, bool useBias) {
-    PassConstants k;
-    k.accumulate = settings.accumulate;
-    k.zero = splat(0);
-    k.one = splat(1);
-    k.inverseSubstep = splat(settings.inverseSubstep);
-    k.biasRate = splat(settings.softness.biasRate);
-    k.slowestPushOut = splat(-kMaxPushOutSpeed);
-    k.softMassScale = splat(settings.softness.massScale);
-    k.softImpulseScale = splat(settings.softness.impulseScale);
+    const PassConstants k = makePassConstants(settings);
     if (useBias && settings.positionCorrection) solveBatches<true>(solver, fast, k);  // the soft bias pushes overlaps apart
     else solveBatches<false>(solver, fast, k);
 }

@@ -10,6 +10,7 @@
 #include "fast/body_lanes.hpp"
 #include "fast/contact_waves.hpp"
 #include "fast/fast_workspace.hpp"
+#include "fast/normal_row_lanes.hpp"
 
 // This file's helpers pass Lanes by value too, always inlined (see lanes.hpp).
 #if defined(__GNUC__)  // GCC, and clang, which reads GCC's pragmas
@@ -160,18 +161,6 @@ void clearRoundContactImpulses(FastWorkspace& fast) {
 
 namespace {
 
-/// What a pass's formulas take from the settings, as Lanes, once per pass.
-struct PassConstants {
-    bool accumulate = true;   ///< ContactSolverSettings::accumulate.
-    Lanes zero{};
-    Lanes one{};
-    Lanes inverseSubstep{};   ///< 1/h_s, 1/s.
-    Lanes biasRate{};         ///< softness.hpp, 1/s.
-    Lanes slowestPushOut{};   ///< −kMaxPushOutSpeed, m/s.
-    Lanes softMassScale{};    ///< s_m where bodies overlap (softness.hpp; the pass without the push uses 1).
-    Lanes softImpulseScale{}; ///< s_i where bodies overlap (the pass without the push uses 0).
-};
-
 /// Batches of one wave solved side by side (solveBatches()): the most the
 /// processor's registers and reorder window profit from (below).
 constexpr std::size_t kBatchesSideBySide = 3;
@@ -233,37 +222,18 @@ STEPWISE_LANES_INLINE void solveBatches(RoundBatch* batches, std::vector<SolverB
     BodyLanes a[N];
     BodyLanes b[N];
     Lanes applied[N];
-    // Normal: λ = −K⁻¹·s_m·(v_n + bias) − s_i·λ_acc (softness.hpp); a gap closes in this substep, no further.
+    // Normal: λ = −K⁻¹·s_m·(v_n + bias) − s_i·λ_acc (normal_row_lanes.hpp)
     for (std::size_t j = 0; j < N; ++j) {
         RoundBatch& batch = batches[j];
         const Vec3Lanes& n = batch.normal;
         const Lanes separation =
             dot(gatherCentres(centres, batch.bodyB) - gatherCentres(centres, batch.bodyA), n) +
             batch.separationOffset;
-        const auto gap = separation > k.zero;
-        const Lanes gapBias = separation * k.inverseSubstep;
-
         a[j] = gather(bodies, batch.bodyA);
         b[j] = gather(bodies, batch.bodyB);
         const Lanes vn = dot(b[j].velocity - a[j].velocity, n);
-        Lanes impulse;
-        if constexpr (PushOut) {
-            const Lanes bias = select(gap, gapBias, maxLanes(k.biasRate * separation, k.slowestPushOut));
-            const Lanes massScale = select(gap, k.one, k.softMassScale);
-            const Lanes impulseScale = select(gap, k.zero, k.softImpulseScale);
-            impulse = -batch.normalMass * massScale * (vn + bias) - impulseScale * batch.normalImpulse;
-        } else {  // no push: s_m = 1, s_i = 0, and an overlap has no bias
-            impulse = -batch.normalMass * (vn + select(gap, gapBias, k.zero));
-        }
-        if (k.accumulate) {
-            const Lanes total = maxLanes(batch.normalImpulse + impulse, k.zero);
-            applied[j] = total - batch.normalImpulse;
-            batch.normalImpulse = total;
-        } else {  // Box2D-Lite's switch: clamp each increment
-            applied[j] = maxLanes(impulse, k.zero);
-            batch.normalImpulse += applied[j];
-        }
-        batch.maxNormalImpulse = maxLanes(batch.maxNormalImpulse, batch.normalImpulse);
+        applied[j] = solveNormalImpulse<PushOut>(vn, separation, batch.normalMass, batch.normalImpulse,
+                                                 batch.maxNormalImpulse, k);
     }
     for (std::size_t j = 0; j < N; ++j) applyNormal(a[j], b[j], batches[j].normal, applied[j]);
     if constexpr (Friction) solveFrictionOfBatches<N>(batches, a, b, k);
@@ -297,15 +267,7 @@ STEPWISE_LANES_INLINE void solveWaves(SolverWorkspace& solver, FastWorkspace& fa
 // Compiled three times (STEPWISE_LANES_COPIES, lanes.hpp): AVX-512, AVX2 and any x86-64, the same numbers.
 STEPWISE_LANES_COPIES
 void solveRoundContacts(SolverWorkspace& solver, FastWorkspace& fast, const ContactSolverSettings& settings, bool useBias) {
-    PassConstants k;
-    k.accumulate = settings.accumulate;
-    k.zero = splat(0);
-    k.one = splat(1);
-    k.inverseSubstep = splat(settings.inverseSubstep);
-    k.biasRate = splat(settings.softness.biasRate);
-    k.slowestPushOut = splat(-kMaxPushOutSpeed);
-    k.softMassScale = splat(settings.softness.massScale);
-    k.softImpulseScale = splat(settings.softness.impulseScale);
+    const PassConstants k = makePassConstants(settings);
     if (useBias && settings.positionCorrection) solveWaves<true, true>(solver, fast, k);  // the soft bias pushes overlaps apart
     else if (passSolvesRoundFriction(settings, useBias)) solveWaves<false, true>(solver, fast, k);
     else solveWaves<false, false>(solver, fast, k);  // a relax pass: the normal rows only
