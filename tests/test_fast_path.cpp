@@ -1,6 +1,10 @@
 // The fast path (src/fast/): the plain path's numbers, bit for bit, by another road.
 // Tags: [fast], [solver], [lanes].
 //
+// Contacts with stored rows (boxes, kinematic bodies) have lanes of their own
+// (box_contact_lanes.hpp): the same claims are checked for them below, on a
+// heap of boxes with balls and a kinematic slab, and on whole scenes.
+//
 // Claims, from the smallest piece to the whole step:
 // - the waves make the lanes independent and keep each body's order (no wave
 //   holds two contacts of one dynamic body, each body meets its contacts in
@@ -13,6 +17,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cstdio>
 #include <random>
 #include <vector>
 
@@ -21,6 +26,7 @@
 #include "config/scene_loader.hpp"
 #include "dynamics/contact_solver.hpp"
 #include "dynamics/softness.hpp"
+#include "fast/box_contact_lanes.hpp"
 #include "fast/fast_path.hpp"
 #include "fast/fast_workspace.hpp"
 #include "fast/round_contact_lanes.hpp"
@@ -31,6 +37,17 @@
 using namespace stepwise;
 
 namespace {
+
+/// Every contact among @p bodies, as the World's collision stages find them (all pairs tested).
+std::vector<Contact> contactsOf(const BodySet& bodies) {
+    std::vector<CandidatePair> pairs;
+    Broadphase().findPairs(BroadphaseKind::BruteForce, bodies, pairs);
+    ThreadPool pool(1);
+    NarrowphaseWorkspace workspace;
+    std::vector<Contact> contacts;
+    findContacts(bodies, pairs, contacts, false, kSpeculativeDistance, pool, workspace);
+    return contacts;
+}
 
 /// A heap of balls of two sizes and masses, pressed into each other and into
 /// the ground and two walls, moving and spinning at random: many round contacts.
@@ -68,12 +85,7 @@ struct BallHeap {
         planes.push_back(wallZ);
         for (DynamicObject& body : dynamics) initialiseMassProperties(body);
 
-        const BodySet bodies{dynamics, kinematics, planes};
-        std::vector<CandidatePair> pairs;
-        Broadphase().findPairs(BroadphaseKind::BruteForce, bodies, pairs);
-        ThreadPool pool(1);
-        NarrowphaseWorkspace workspace;
-        findContacts(bodies, pairs, contacts, false, kSpeculativeDistance, pool, workspace);
+        contacts = contactsOf({dynamics, kinematics, planes});
     }
     BodySet bodies() { return {dynamics, kinematics, planes}; }
 };
@@ -373,5 +385,272 @@ TEST_CASE("Balls among boxes, on a joint and under Verlet take the fast path on 
         }
         const FastPathCounts counts = requireSameOnBothRoads(sceneFrom(text), 90);
         CHECK(counts.packedSteps == 0);  // the packed substeps carry symplectic Euler only
+    }
+}
+
+namespace {
+
+/// A heap of boxes, tilted, pressed into each other and into the ground, with a ball now and then
+/// and a kinematic slab sliding into one side: contacts with stored rows of every kind (box–box,
+/// box–plane, box–ball, box–kinematic, ball–kinematic) among round ones.
+struct BoxHeap {
+    std::vector<DynamicObject> dynamics;
+    std::vector<KinematicsObject> kinematics;
+    std::vector<CollisionPlane> planes;
+    std::vector<Contact> contacts;
+
+    BoxHeap() {
+        std::mt19937 random(11);
+        std::uniform_real_distribution<double> jitter(-0.03, 0.03);
+        std::uniform_real_distribution<double> speed(-1.0, 1.0);
+        std::uniform_real_distribution<double> tilt(-0.15, 0.15);
+        for (int layer = 0; layer < 3; ++layer) {
+            for (int row = 0; row < 4; ++row) {
+                for (int column = 0; column < 4; ++column) {
+                    // Edges 0.5 m, centres 0.48 m apart: neighbours overlap by about 2 cm
+                    const Vec3 centre(0.25 + 0.48 * column + jitter(random), 0.24 + 0.48 * layer + jitter(random),
+                                      0.25 + 0.48 * row + jitter(random));
+                    const std::string name = "b" + std::to_string(dynamics.size());
+                    DynamicObject body = (row + column + layer) % 3 == 0
+                                             ? test::sphere(name, centre, Vec3(0), Real(0.25))
+                                             : test::dynamicBox(name, centre, Vec3(0.5), 1 + (row + layer) % 3, Real(0.6));
+                    body.friction = 0.6;
+                    body.velocity = Vec3(speed(random), speed(random), speed(random));
+                    body.angularVelocity = Vec3(speed(random), speed(random), speed(random));
+                    body.orientation = glm::normalize(Quat(1, tilt(random), tilt(random), tilt(random)));
+                    dynamics.push_back(body);
+                }
+            }
+        }
+        planes.push_back(test::ground());
+        // A slab along x = −0.2 moving into the heap, overlapping its first column a little
+        kinematics.push_back(test::kinematicBox("slab", Vec3(-0.2, 0.7, 0.9), Vec3(0.44, 1.4, 2.0), Vec3(0.5, 0, 0.2)));
+        for (DynamicObject& body : dynamics) initialiseMassProperties(body);
+
+        contacts = contactsOf({dynamics, kinematics, planes});
+    }
+    BodySet bodies() { return {dynamics, kinematics, planes}; }
+};
+
+/// Whether the batches @p batches (RoundBatch or BoxBatch) hold each contact of @p list once, wave by
+/// wave, with no two contacts of one dynamic body in a wave and each body's contacts in their order.
+template <class Batch>
+void requireWavesKeepOrder(const std::vector<Batch>& batches, const std::vector<std::uint32_t>& list,
+                           const SolverWorkspace& workspace) {
+    std::vector<int> solved(workspace.contacts.size(), 0);
+    std::vector<std::uint32_t> waveRecords;                              // the dynamic records of the current wave
+    std::vector<std::int64_t> lastContact(workspace.bodies.size(), -1);  // per record: its last contact so far
+    std::vector<std::int64_t> position(workspace.contacts.size(), -1);   // each contact's place in the list
+    for (std::size_t k = 0; k < list.size(); ++k) position[list[k]] = std::int64_t(k);
+    auto closeWave = [&] {
+        std::sort(waveRecords.begin(), waveRecords.end());
+        CHECK(std::adjacent_find(waveRecords.begin(), waveRecords.end()) == waveRecords.end());
+        waveRecords.clear();
+    };
+    for (std::size_t n = 0; n < batches.size(); ++n) {
+        const Batch& batch = batches[n];
+        if (n > 0) CHECK(batch.wave >= batches[n - 1].wave);  // wave by wave
+        if (n > 0 && batch.wave != batches[n - 1].wave) closeWave();
+        for (int lane = 0; lane < kLanes; ++lane) {
+            if (batch.contact[lane] == kEmptyLane) {
+                CHECK(batch.bodyA[lane] == kStaticSolverBody);  // an empty lane moves nothing
+                CHECK(batch.bodyB[lane] == kStaticSolverBody);
+                continue;
+            }
+            const std::uint32_t index = batch.contact[lane];
+            const SolverContact& c = workspace.contacts[index];
+            REQUIRE(position[index] >= 0);  // a contact of this list
+            CHECK(batch.bodyA[lane] == c.bodyA);
+            CHECK(batch.bodyB[lane] == c.bodyB);
+            ++solved[index];
+            for (const std::uint32_t record : {c.bodyA, c.bodyB}) {
+                if (record == kStaticSolverBody) continue;
+                waveRecords.push_back(record);
+                INFO("contact " << index << ", record " << record);
+                CHECK(lastContact[record] < position[index]);  // the body's contacts in their order
+                lastContact[record] = position[index];
+            }
+        }
+    }
+    closeWave();
+    for (const std::uint32_t index : list) {
+        INFO("contact " << index);
+        CHECK(solved[index] == 1);
+    }
+}
+
+}  // namespace
+
+TEST_CASE("Box waves: no wave holds two contacts of one dynamic body, each body meets its contacts in order", "[fast][solver][lanes]") {
+    BoxHeap heap;
+    SolverWorkspace workspace;
+    prepareContacts(heap.bodies(), heap.contacts, {}, Real(1) / 60, false, workspace);
+    REQUIRE(workspace.otherContacts.size() > 100);  // a heap of boxes, not a handful
+    REQUIRE(workspace.roundContacts.size() > 5);     // and some balls among them
+    FastWorkspace fast;
+    batchRoundContacts(workspace, fast);
+    batchBoxContacts(workspace, fast);
+    for (const std::uint32_t index : workspace.otherContacts) CHECK(workspace.contacts[index].rows != kRoundContact);
+    requireWavesKeepOrder(fast.roundBatches, workspace.roundContacts, workspace);
+    requireWavesKeepOrder(fast.boxBatches, workspace.otherContacts, workspace);
+    // Every kind of B: a dynamic body, the static record (the ground), and the slab's surface speed
+    bool kinematic = false;
+    for (const std::uint32_t index : workspace.otherContacts) {
+        const ContactRows& rows = workspace.rows[workspace.contacts[index].rows];
+        kinematic = kinematic || rows.tangentSurfaceSpeed[0] != 0 || rows.tangentSurfaceSpeed[1] != 0;
+    }
+    CHECK(kinematic);
+}
+
+TEST_CASE("A pass of box contacts in lanes is the scalar pass, four contacts at a time", "[fast][solver][lanes]") {
+    // As for the round contacts above: warm start, a solve pass and a relax pass, on both roads, must
+    // leave the same velocities and impulses, to the bit (a build whose own flags fuse a·b + c gets
+    // a tolerance of a billionth). The plain pass solves the round contacts first, then the others;
+    // the lanes do the same, round batches then box batches.
+    BoxHeap heap;
+    ContactSolverSettings settings = substepSettings();
+    settings.accumulate = GENERATE(true, false);  // and Box2D-Lite's clamp of each increment
+    INFO("accumulate " << settings.accumulate);
+    SolverWorkspace lanes;
+    prepareContacts(heap.bodies(), heap.contacts, {}, Real(1) / 60, false, lanes);
+    // Something to warm start from: the impulses a previous step might have left, and a few points
+    // that hold nothing at all (the plain pass skips their friction).
+    for (std::size_t i = 0; i < lanes.contacts.size(); ++i) {
+        SolverContact& c = lanes.contacts[i];
+        if (i % 7 == 3) continue;
+        c.normalImpulse = Real(0.01) * c.normalMass;
+        c.tangentImpulse[0] = Real(0.002) * c.normalMass;
+        c.tangentImpulse[1] = Real(-0.001) * c.normalMass;
+    }
+    SolverWorkspace scalar = lanes;
+    FastWorkspace fast;
+    batchRoundContacts(lanes, fast);
+    batchBoxContacts(lanes, fast);
+    REQUIRE(fast.boxBatches.size() > 20);
+
+    recordPoses(heap.bodies(), lanes);
+    recordCentres(lanes, fast);
+    recordBoxSeparations(lanes, fast);
+    copyVelocitiesIn(lanes);
+    if (settings.accumulate) {
+        warmStartRoundContacts(lanes, fast);
+        warmStartBoxContacts(lanes, fast);
+    } else {
+        for (SolverContact& c : lanes.contacts) c.normalImpulse = c.tangentImpulse[0] = c.tangentImpulse[1] = 0;
+        clearRoundContactImpulses(fast);
+        clearBoxContactImpulses(fast);
+    }
+    for (const bool useBias : {true, false}) {
+        solveRoundContacts(lanes, fast, settings, useBias);
+        solveBoxContacts(lanes, fast, settings, useBias);
+    }
+    syncRoundContacts(fast, lanes);
+    syncBoxContacts(fast, lanes);
+
+    recordPoses(heap.bodies(), scalar);
+    copyVelocitiesIn(scalar);
+    warmStartContacts(scalar, settings.accumulate);
+    solveContacts(scalar, settings, true);
+    solveContacts(scalar, settings, false);
+
+#if defined(__FMA__)
+    const auto same = [](Real x, Real y) { return x == Approx(y).epsilon(1e-9).margin(1e-12); };
+#else
+    const auto same = [](Real x, Real y) { return x == y; };
+#endif
+    int pushing = 0;
+    int sliding = 0;
+    for (const std::uint32_t i : scalar.otherContacts) {
+        INFO("contact " << i);
+        CHECK(same(lanes.contacts[i].normalImpulse, scalar.contacts[i].normalImpulse));
+        CHECK(same(lanes.contacts[i].maxNormalImpulse, scalar.contacts[i].maxNormalImpulse));
+        for (int k = 0; k < 2; ++k) CHECK(same(lanes.contacts[i].tangentImpulse[k], scalar.contacts[i].tangentImpulse[k]));
+        if (scalar.contacts[i].normalImpulse > 0) ++pushing;
+        // On Coulomb's circle: the friction was clamped (the division's branch ran)
+        const Real friction = std::hypot(scalar.contacts[i].tangentImpulse[0], scalar.contacts[i].tangentImpulse[1]);
+        if (friction > 0 && friction == Approx(scalar.contacts[i].friction * scalar.contacts[i].normalImpulse)) ++sliding;
+    }
+    CHECK(pushing > 50);  // the passes did work: there is something to compare
+    CHECK(sliding > 5);   // and both branches of the friction's clamp were taken
+    for (std::size_t r = 0; r < lanes.bodies.size(); ++r) {
+        INFO("record " << r);
+        for (int k = 0; k < 3; ++k) {
+            CHECK(same(lanes.bodies[r].velocity[k], scalar.bodies[r].velocity[k]));
+            CHECK(same(lanes.bodies[r].angularVelocity[k], scalar.bodies[r].angularVelocity[k]));
+        }
+    }
+    CHECK(lanes.bodies[kStaticSolverBody].velocity == Vec3(0));
+    CHECK(lanes.bodies[kStaticSolverBody].angularVelocity == Vec3(0));
+}
+
+TEST_CASE("Stacks of boxes and a kinematic platform take the fast path with the plain numbers", "[fast][lanes]") {
+    SECTION("the pyramid of 210 boxes (lesson 8)") {
+        Scene scene = loadSceneFile(std::string(STEPWISE_SOURCE_DIR) + "/config/lesson08_pyramid.scene");
+        const FastPathCounts counts = requireSameOnBothRoads(scene, 20);
+        CHECK(counts.steps == 20);
+        CHECK(counts.packedSteps == 0);    // box contacts: the road on the objects
+        CHECK(counts.boxLaneSteps == 20);  // wide waves: every step's box contacts in lanes
+    }
+    SECTION("the tower of 20 boxes (lesson 8)") {
+        Scene scene = loadSceneFile(std::string(STEPWISE_SOURCE_DIR) + "/config/lesson08_tower.scene");
+        const FastPathCounts counts = requireSameOnBothRoads(scene, 60);
+        CHECK(counts.steps == 60);
+        CHECK(counts.boxLaneSteps == 0);  // a chain: waves too thin, its contacts one at a time
+    }
+    SECTION("boxes riding a moving, turning kinematic platform, balls among them") {
+        std::string text = "World, Duration=2, Sleep=false\n"
+                           "CollisionPlane, Name=floor, Position=(0,0,0), Normal=(0,1,0)\n"
+                           "KinematicsObject, Name=deck, Shape=Box, Position=(0,0.25,0), Scale=(3,0.5,3), "
+                           "Velocity=(0.4,0,0.1), AngularVelocity=(0,0.5,0)\n";
+        for (int i = 0; i < 9; ++i) {
+            const std::string at = "(" + std::to_string(-0.8 + 0.8 * (i % 3)) + "," + std::to_string(0.75 + 0.6 * (i / 3)) +
+                                   "," + std::to_string(-0.6 + 0.6 * (i % 3) + 0.05 * (i / 3)) + ")";
+            text += i % 4 == 2 ? "DynamicObject, Name=ball" + std::to_string(i) +
+                                     ", Shape=Sphere, Radius=0.2, Mass=1, Friction=0.5, Position=" + at + "\n"
+                               : "DynamicObject, Name=box" + std::to_string(i) +
+                                     ", Shape=Box, Scale=(0.5,0.5,0.5), Mass=" + std::to_string(1 + i % 3) +
+                                     ", Friction=0.7, Position=" + at + "\n";
+        }
+        const FastPathCounts counts = requireSameOnBothRoads(sceneFrom(text), 90);
+        CHECK(counts.steps == 90);
+        INFO(counts.boxLaneSteps << " steps with box lanes");
+        CHECK(counts.boxLaneSteps > 0);
+    }
+}
+
+TEST_CASE("How full the box lanes are: contacts per wave of the pyramid and the tower", "[fast][lanes]") {
+    // Not a timing: how many contacts a wave holds, for the record (the figure the lanes' speed
+    // rests on), at the scene's first contacts. A manifold's points share both bodies and fall in
+    // successive waves; a tower is a chain of manifolds, each sharing a box with the next.
+    for (const char* name : {"lesson08_pyramid", "lesson08_tower"}) {
+        Scene scene = loadSceneFile(std::string(STEPWISE_SOURCE_DIR) + "/config/" + name + ".scene");
+        const BodySet bodies{scene.dynamics, scene.kinematics, scene.planes};
+        for (DynamicObject& body : scene.dynamics) initialiseMassProperties(body);
+        const std::vector<Contact> contacts = contactsOf(bodies);
+        SolverWorkspace workspace;
+        prepareContacts(bodies, contacts, {}, scene.settings.timeStep, false, workspace);
+        recordPoses(bodies, workspace);
+        FastWorkspace fast;
+        batchRoundContacts(workspace, fast);
+        recordCentres(workspace, fast);
+        batchBoxContacts(workspace, fast);
+        const std::size_t count = workspace.otherContacts.size();
+        std::printf("%s: a pass reads %zu bytes a contact on the plain path, %zu in lanes\n", name,
+                    solverFootprint(workspace).passBytes / workspace.contacts.size(),
+                    fastFootprint(workspace, fast).passBytes / workspace.contacts.size());
+        const std::size_t waves = fast.waves;
+        const std::size_t batches = fast.boxBatches.size();
+        std::printf("%s: %zu contacts with stored rows in %zu waves, %.1f a wave; %zu batches, lanes %.0f %% full\n", name,
+                    count, waves, double(count) / double(waves), batches,
+                    batches == 0 ? 0.0 : 100.0 * double(count) / double(kLanes * batches));
+        INFO(name);
+        REQUIRE(count > 0);
+        if (std::string(name) == "lesson08_pyramid") {
+            CHECK(waves * 4 < count);  // the pyramid's waves are wide: in lanes
+            requireWavesKeepOrder(fast.boxBatches, workspace.otherContacts, workspace);
+        } else {
+            CHECK(double(count) < kMinBoxContactsPerWave * double(waves));  // the tower's are thin: one at a time
+            CHECK(batches == 0);
+        }
     }
 }

@@ -13,6 +13,7 @@
 #include "objects/inertia.hpp"
 #include "integrators/integrators.hpp"
 #include "command_runner.hpp"
+#include "shape_fixtures.hpp"
 #include "test_support.hpp"
 
 using namespace stepwise;
@@ -236,8 +237,14 @@ TEST_CASE("The fast path and its packed substeps are planned only where they car
         scene.attractors = {Attractor{"sun", Vec3(2, 1, 0), 40}};
         CHECK_FALSE(planOf(scene).packedSubsteps.runs);
     }
-    SECTION("no ball: the fast path has nothing faster for boxes") {
+    SECTION("no ball: a box's contacts take the fast path's lanes, not the packed substeps") {
+        // (The packed substeps stay planned: whether a step's contacts all hold balls is decided
+        // each step, and a box's contacts keep that step on the objects.)
         scene.dynamics = {test::dynamicBox("crate", Vec3(0, 0.5, 0), Vec3(1), 1, Real(0.5))};
+        CHECK(planOf(scene).fastPath.runs);
+    }
+    SECTION("no ball and no box: the fast path has nothing faster for a capsule") {
+        scene.dynamics = {test::shapedBody("rod", Shape::Capsule, Vec3(0, 0.5, 0))};
         CHECK_FALSE(planOf(scene).fastPath.runs);
         CHECK_FALSE(planOf(scene).packedSubsteps.runs);
     }

@@ -5,6 +5,7 @@
 
 #include "dynamics/kinematic_motion.hpp"
 #include "dynamics/velocity_change_drift.hpp"
+#include "fast/box_contact_lanes.hpp"
 #include "fast/fast_workspace.hpp"
 #include "fast/packed_substeps.hpp"
 #include "fast/parallel_records.hpp"
@@ -88,7 +89,7 @@ void requireFiniteRecords(std::span<const DynamicObject> dynamics, const SolverW
     if (probeRecords(w, fast, hold) != Real(0)) requireFiniteState(dynamics, parts, where);
 }
 
-/// warmStartContacts() with the round contacts in lanes.
+/// warmStartContacts() with the contacts in lanes: the round ones, then the others, as the plain pass.
 void warmStartContactsInLanes(SolverWorkspace& w, FastWorkspace& fast, bool accumulate) {
     if (!accumulate) {  // each substep's impulses stand alone, as warmStartContacts() says
         for (SolverContact& c : w.contacts) {
@@ -96,17 +97,26 @@ void warmStartContactsInLanes(SolverWorkspace& w, FastWorkspace& fast, bool accu
             c.tangentImpulse[0] = c.tangentImpulse[1] = 0;
         }
         clearRoundContactImpulses(fast);
+        clearBoxContactImpulses(fast);
         return;
     }
     warmStartRoundContacts(w, fast);
-    for (const std::uint32_t index : w.otherContacts) warmStartContact(w, index);
+    if (fast.boxBatches.empty()) {  // waves too thin for the lanes (kMinBoxContactsPerWave)
+        for (const std::uint32_t index : w.otherContacts) warmStartContact(w, index);
+    } else {
+        warmStartBoxContacts(w, fast);
+    }
 }
 
-/// solveContacts() with the round contacts in lanes: the same order, the same numbers.
+/// solveContacts() with the contacts in lanes: the round ones, then the others; the same order, the same numbers.
 void solveContactsInLanes(SolverWorkspace& w, FastWorkspace& fast, const ContactSolverSettings& settings, bool useBias,
                           ThreadPool& pool) {
     solveRoundContactsOnThreads(w, fast, settings, useBias, pool);
-    for (const std::uint32_t index : w.otherContacts) solveContact(w, index, settings, useBias);
+    if (fast.boxBatches.empty()) {  // waves too thin for the lanes (kMinBoxContactsPerWave)
+        for (const std::uint32_t index : w.otherContacts) solveContact(w, index, settings, useBias);
+    } else {
+        solveBoxContactsOnThreads(w, fast, settings, useBias, pool);
+    }
 }
 
 /// The substeps on the objects, as the plain loop runs them, with the contact passes in lanes.
@@ -150,6 +160,7 @@ void substepsOnObjects(const FastSubsteps& in, FastWorkspace& fast) {
         }
         // 6. Warm start, solve, move
         timeStage(in.records, Stage::SolveConstraints, [&] {
+            recordBoxSeparations(w, fast);  // at the poses the solve measures from (above)
             if (substep > 0 && in.accumulateImpulses && in.joints.joints.empty()) {
                 warmStartFromLastSubstep(w);
             } else {
@@ -169,6 +180,7 @@ void substepsOnObjects(const FastSubsteps& in, FastWorkspace& fast) {
         // 7. Relax
         timeStage(in.records, Stage::RelaxConstraints, [&] {
             recordKinematicPoses(bodies, w);
+            recordBoxSeparations(w, fast);  // where the drift and move-kinematics left the bodies
             for (int pass = 0; pass < in.relaxIterations; ++pass) {
                 if (in.jointSolver) solveJointsBetweenContactPasses(in.joints, w, in.jointSettings, false);
                 solveContactsInLanes(w, fast, in.contactSettings, false, in.pool);
@@ -235,30 +247,40 @@ std::size_t bytesOf(const std::vector<T>& array) {
 }  // namespace
 
 void runFastSubsteps(const FastSubsteps& in, FastWorkspace& fast) {
-    // The round contacts into lanes, and the balls into packed records if this step can take them:
+    // The contacts into lanes, and the balls into packed records if this step can take them:
     // more of the prepare stage's work.
     bool packed = false;
     timeStage(in.records, Stage::PrepareConstraints, [&] {
         batchRoundContacts(in.contacts, fast);
+        batchBoxContacts(in.contacts, fast);
         packed = in.packedSubsteps && packRecords(in.contacts, fast);
     }, StageRun::Continued);
     fast.counts.steps += 1;
+    if (!fast.boxBatches.empty()) fast.counts.boxLaneSteps += 1;
     if (packed) {
         fast.counts.packedSteps += 1;
         substepsOnRecords(in, fast);
     } else {
         substepsOnObjects(in, fast);
     }
-    // The round contacts' impulses back from their lanes, for the bounce and the next step's warm start
-    timeStage(in.records, Stage::RelaxConstraints, [&] { syncRoundContacts(fast, in.contacts); }, StageRun::Continued);
+    // The contacts' impulses back from their lanes, for the bounce and the next step's warm start
+    timeStage(in.records, Stage::RelaxConstraints, [&] {
+        syncRoundContacts(fast, in.contacts);
+        syncBoxContacts(fast, in.contacts);
+    }, StageRun::Continued);
 }
 
 SolverFootprint fastFootprint(const SolverWorkspace& w, const FastWorkspace& fast) {
     SolverFootprint f;
-    // A pass reads the records, their centres and the batches, and for each other contact its SolverContact and rows.
-    f.passBytes = bytesOf(w.bodies) + bytesOf(fast.centres) + bytesOf(fast.roundBatches) + bytesOf(w.rows) +
-                  w.otherContacts.size() * sizeof(SolverContact);
-    f.allBytes = solverFootprint(w).allBytes + bytesOf(fast.roundBatches) + bytesOf(fast.nextWave) + bytesOf(fast.waveBatches) +
+    // A pass reads the records, their centres and the batches of both kinds; the contacts with
+    // stored rows solved one at a time (thin waves), their SolverContact, rows, anchors and poses.
+    f.passBytes = bytesOf(w.bodies) + bytesOf(fast.centres) + bytesOf(fast.roundBatches) + bytesOf(fast.boxBatches);
+    if (fast.boxBatches.empty() && !w.otherContacts.empty()) {
+        f.passBytes += w.otherContacts.size() * sizeof(SolverContact) + bytesOf(w.rows) + bytesOf(w.turningAnchors) +
+                       bytesOf(w.poses);
+    }
+    f.allBytes = solverFootprint(w).allBytes + bytesOf(fast.roundBatches) + bytesOf(fast.boxBatches) + bytesOf(fast.nextWave) +
+                 bytesOf(fast.waveBatches) +
                  bytesOf(fast.waveOf) + bytesOf(fast.waveStart) + bytesOf(fast.waveOrder) + bytesOf(fast.centres) +
                  bytesOf(fast.orientations) + bytesOf(fast.freeFlight) + bytesOf(fast.startMomentum);
     return f;

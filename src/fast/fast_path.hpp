@@ -8,12 +8,14 @@
 /// engine computes, the plain path computes too. Nothing here is new physics.
 ///
 /// **How it is faster.** Three things, each a file of this folder:
-/// 1. *Round contacts four at a time* (round_contact_lanes.hpp). Contacts
-///    between balls, or a ball and a plane, are put in waves of contacts that
-///    share no body and solved four at a time in SIMD lanes (lanes.hpp). Each
-///    body meets its contacts in the plain pass's order, and each lane rounds
-///    as a scalar does, so the velocities are the plain pass's. The other
-///    contacts are solved one at a time after them, by the plain solveContact().
+/// 1. *Contacts four at a time* (contact_waves.hpp, round_contact_lanes.hpp,
+///    box_contact_lanes.hpp). Contacts are put in waves of contacts that
+///    share no body and solved four at a time in SIMD lanes (lanes.hpp): the
+///    round ones (between balls, or a ball and a plane) with rows computed
+///    from the normal, then the others (a box's, a kinematic body's) with
+///    their stored rows. Each body meets its contacts in the plain pass's
+///    order, and each lane rounds as a scalar does, so the velocities are the
+///    plain pass's.
 /// 2. *Packed substeps* (packed_substeps.hpp). In a step whose contacts all
 ///    hold awake balls, under symplectic Euler, with no joints and only
 ///    uniform forces, a ball's whole state stays in arrays beside its solver
@@ -27,7 +29,7 @@
 ///
 /// **When it runs.** The step plan decides (StepPlan::fastPath,
 /// world/step_plan.hpp): sequential impulse, the plan on, `FastPath=true`, and
-/// a dynamic ball in the scene. With a StepObserver attached (the trace, the
+/// a dynamic ball or box in the scene. With a StepObserver attached (the trace, the
 /// viewer's stage walk-through) the World takes the plain path, so what a
 /// student watches is the textbook step. The tests tagged "[fast]" run both
 /// roads and compare every bit.

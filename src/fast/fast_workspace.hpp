@@ -1,5 +1,5 @@
 /// @file fast_workspace.hpp
-/// @brief The fast path's own arrays: the round contacts in lanes, and the packed copies of the balls.
+/// @brief The fast path's own arrays: the contacts in lanes, and the packed copies of the balls.
 ///
 /// The plain solver's arrays (SolverWorkspace, dynamics/contact_solver.hpp)
 /// are shared with the plain path and mean the same there; what is here only
@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/types.hpp"
+#include "fast/box_contact_lanes.hpp"
 #include "fast/fast_path_counts.hpp"
 #include "fast/round_contact_lanes.hpp"
 
@@ -40,10 +41,17 @@ struct FastWorkspace {
     /// The round contacts, four of one wave per batch (round_contact_lanes.hpp). Through the
     /// substeps their impulses live here; syncRoundContacts() copies them back to the contacts.
     std::vector<RoundBatch> roundBatches;
-    std::vector<std::uint32_t> nextWave;   ///< Per record: the first wave its next contact may take (scratch).
-    std::vector<std::uint32_t> waveOf;     ///< Per round contact (in SolverWorkspace::roundContacts order): its wave (scratch).
-    std::vector<std::uint32_t> waveStart;  ///< Per wave: where its contacts start in waveOrder (scratch).
-    std::vector<std::uint32_t> waveOrder;  ///< The round contacts, wave by wave (scratch).
+    /// The contacts with stored rows (boxes, kinematic bodies), four of one wave per batch
+    /// (box_contact_lanes.hpp); their impulses too live here through the substeps (syncBoxContacts()).
+    std::vector<BoxBatch> boxBatches;
+    std::vector<BoxAnchorBatch> boxAnchors;  ///< Per box batch: what its separations are measured from.
+    /// Per wave of the box batches, the index of its first batch, and one more entry: the batch
+    /// count (empty when the box contacts are solved one at a time).
+    std::vector<std::uint32_t> boxWaveBatches;
+    std::vector<std::uint32_t> nextWave;   ///< Per record: the first wave its next contact may take (scratch, contact_waves.hpp).
+    std::vector<std::uint32_t> waveOf;     ///< Per contact scheduled (in the list's order): its wave (scratch).
+    std::vector<std::uint32_t> waveStart;  ///< Per wave: where its contacts end in waveOrder (scratch).
+    std::vector<std::uint32_t> waveOrder;  ///< The contacts scheduled, wave by wave (scratch).
     std::uint32_t waves = 0;               ///< How many waves the batching opened (scratch).
     /// Per wave, the index of its first batch in roundBatches, and one more entry: the batch count.
     /// The threads split a wave's batches between them (parallel_waves.hpp).

@@ -2,7 +2,7 @@
 /// @brief A wave's contacts split between threads: the same numbers with any number of threads.
 ///
 /// **Why a wave can be split.** The contacts of one wave share no dynamic
-/// body (round_contact_lanes.hpp): no contact of the wave reads a velocity
+/// body (contact_waves.hpp): no contact of the wave reads a velocity
 /// another one writes. So the batches of a wave may be solved in any order,
 /// or at the same time on different cores, and every body still meets its
 /// contacts in the plain pass's order. That is what graph colouring buys an
@@ -22,8 +22,8 @@
 /// in order. A scene of a few hundred contacts has no such wave and runs
 /// exactly as with one thread.
 ///
-/// **The same bits.** Each piece is solved by solveRoundContactRange(), the
-/// same lines a single thread runs, on batches that touch no body of another
+/// **The same bits.** Each piece is solved by solveRoundContactRange() or
+/// solveBoxContactRange(), the same lines a single thread runs, on batches that touch no body of another
 /// piece. So the velocities are the one-thread pass's, to the bit, with 1, 2
 /// or 4 threads (tests/test_threads.cpp: "[threads][fast]").
 ///
@@ -53,5 +53,9 @@ inline constexpr std::size_t kMinBatchesPerPiece = 16;
 /// large wave split between @p pool's threads. With one thread it is solveRoundContacts() itself.
 void solveRoundContactsOnThreads(SolverWorkspace& solver, FastWorkspace& fast, const ContactSolverSettings& settings,
                                  bool useBias, ThreadPool& pool);
+
+/// @brief The same for the batched contacts with stored rows (solveBoxContacts(), box_contact_lanes.hpp).
+void solveBoxContactsOnThreads(SolverWorkspace& solver, FastWorkspace& fast, const ContactSolverSettings& settings,
+                               bool useBias, ThreadPool& pool);
 
 }  // namespace stepwise

@@ -7,7 +7,10 @@
 #include <cstring>
 
 #include "dynamics/contact_solver.hpp"
+#include "fast/body_lanes.hpp"
+#include "fast/contact_waves.hpp"
 #include "fast/fast_workspace.hpp"
+#include "fast/normal_row_lanes.hpp"
 
 // This file's helpers pass Lanes by value too, always inlined (see lanes.hpp).
 #if defined(__GNUC__)  // GCC, and clang, which reads GCC's pragmas
@@ -17,67 +20,6 @@
 namespace stepwise {
 
 namespace {
-
-// A solver body is two Lanes long, [v_x v_y v_z ω_x] and [ω_y ω_z m⁻¹ I⁻¹], so
-// four of them are read with eight loads and regrouped by transposing (below).
-static_assert(sizeof(SolverBody) == 2 * sizeof(Lanes), "SolverBody must be two Lanes: v, ω, m⁻¹, I⁻¹");
-static_assert(offsetof(SolverBody, angularVelocity) == 3 * sizeof(Real) &&
-                  offsetof(SolverBody, inverseMass) == 6 * sizeof(Real),
-              "SolverBody's layout is read as [v_x v_y v_z ω_x][ω_y ω_z m⁻¹ I⁻¹]");
-
-/// The four bodies of one side (A or B) of a batch, lane by lane.
-struct BodyLanes {
-    Vec3Lanes velocity;
-    Vec3Lanes angularVelocity;
-    Lanes inverseMass;
-    Lanes inverseInertia;
-};
-
-STEPWISE_LANES_INLINE const Real* realsOf(const SolverBody& body) { return &body.velocity.x; }
-STEPWISE_LANES_INLINE Real* realsOf(SolverBody& body) { return &body.velocity.x; }
-
-/// Records @p index of @p bodies, lane by lane: the velocities, and the masses m⁻¹ and I⁻¹ that
-/// arrive in the same loads (the second half of a record is [ω_y ω_z m⁻¹ I⁻¹]), so a batch
-/// need not carry copies of them.
-STEPWISE_LANES_INLINE BodyLanes gather(const std::vector<SolverBody>& bodies, const std::uint32_t (&index)[kLanes]) {
-    Lanes low[kLanes];   // [v_x v_y v_z ω_x] of each body
-    Lanes high[kLanes];  // [ω_y ω_z m⁻¹ I⁻¹]
-    for (int i = 0; i < kLanes; ++i) {
-        low[i] = load(realsOf(bodies[index[i]]));
-        high[i] = load(realsOf(bodies[index[i]]) + kLanes);
-    }
-    transpose(low[0], low[1], low[2], low[3]);
-    transpose(high[0], high[1], high[2], high[3]);
-    return {{low[0], low[1], low[2]}, {low[3], high[0], high[1]}, high[2], high[3]};
-}
-
-/// Writes the velocities back to records @p index, in lane order; m⁻¹ and I⁻¹ stay as they are in memory.
-///
-/// A lane whose record is the static one (B of a plane contact, both sides of an empty lane)
-/// writes to @p discard instead. Its velocities are zero before and after (m⁻¹ = I⁻¹ = 0), so
-/// nothing is lost; but were they written back, every batch with a plane contact would
-/// read the static record just after the batch before it wrote it, and wait for that store
-/// (a 32-byte load of a record half written by 16-byte stores cannot be forwarded). Only
-/// records that really carry a body's velocity from one contact to the next are written.
-STEPWISE_LANES_INLINE void scatter(std::vector<SolverBody>& bodies, const std::uint32_t (&index)[kLanes],
-                                   const BodyLanes& lanes, SolverBody& discard) {
-    Lanes low[kLanes] = {lanes.velocity.x, lanes.velocity.y, lanes.velocity.z, lanes.angularVelocity.x};
-    transpose(low[0], low[1], low[2], low[3]);
-    // ω_y and ω_z side by side for each record, two shuffles for all four: [y₀ z₀ y₂ z₂] and
-    // [y₁ z₁ y₃ z₃]; record i takes its pair from the low or the high half of one of them.
-    const Lanes even = shuffleLanes<0, 4, 2, 6>(lanes.angularVelocity.y, lanes.angularVelocity.z);
-    const Lanes odd = shuffleLanes<1, 5, 3, 7>(lanes.angularVelocity.y, lanes.angularVelocity.z);
-    Real evenPairs[kLanes];
-    Real oddPairs[kLanes];
-    store(evenPairs, even);
-    store(oddPairs, odd);
-    const Real* pairs[kLanes] = {evenPairs, oddPairs, evenPairs + 2, oddPairs + 2};
-    for (int i = 0; i < kLanes; ++i) {
-        SolverBody& record = index[i] == kStaticSolverBody ? discard : bodies[index[i]];
-        store(realsOf(record), low[i]);
-        std::memcpy(realsOf(record) + kLanes, pairs[i], 2 * sizeof(Real));  // ω_y, ω_z
-    }
-}
 
 /// The centres of records @p index, lane by lane (SolverWorkspace::centres: x, y, z and a
 /// fourth Real that is never read, so each centre is one aligned load).
@@ -168,33 +110,15 @@ void recordCentres(const SolverWorkspace& solver, FastWorkspace& fast) {
 }
 
 void batchRoundContacts(const SolverWorkspace& solver, FastWorkspace& fast) {
-    // Each round contact's wave, walking them in order: one after the last wave of an earlier
-    // contact on either of its bodies (round_contact_lanes.hpp).
-    const std::vector<std::uint32_t>& round = solver.roundContacts;
-    fast.nextWave.assign(solver.bodies.size(), 0);  // per record: the wave its next contact may take
-    fast.waveOf.resize(round.size());
-    fast.waves = 0;
-    for (std::size_t k = 0; k < round.size(); ++k) {
-        const SolverContact& c = solver.contacts[round[k]];
-        const bool bothDynamic = c.bodyB != kStaticSolverBody;  // nothing moves the static record: no wait
-        const std::uint32_t wave = std::max(fast.nextWave[c.bodyA], bothDynamic ? fast.nextWave[c.bodyB] : 0);
-        fast.waveOf[k] = wave;
-        fast.nextWave[c.bodyA] = wave + 1;
-        if (bothDynamic) fast.nextWave[c.bodyB] = wave + 1;
-        fast.waves = std::max(fast.waves, wave + 1);
-    }
-    // Counting sort by wave (contact order kept within a wave): each wave's contacts, four to a batch.
+    // Each round contact's wave (contact_waves.hpp), then each wave's contacts, four to a batch.
+    scheduleWaves(solver, solver.roundContacts, fast);
     const std::uint32_t waves = fast.waves;
-    fast.waveStart.assign(waves + 1, 0);
-    for (const std::uint32_t wave : fast.waveOf) ++fast.waveStart[wave + 1];
     std::size_t batches = 0;
     for (std::uint32_t wave = 0; wave < waves; ++wave) {
-        batches += (fast.waveStart[wave + 1] + kLanes - 1) / kLanes;
-        fast.waveStart[wave + 1] += fast.waveStart[wave];
+        const std::uint32_t first = wave == 0 ? 0 : fast.waveStart[wave - 1];
+        batches += (fast.waveStart[wave] - first + kLanes - 1) / kLanes;
     }
-    fast.waveOrder.resize(round.size());
-    for (std::size_t k = 0; k < round.size(); ++k) fast.waveOrder[fast.waveStart[fast.waveOf[k]]++] = round[k];
-    // Placing moved each start to its wave's end; the batches walk the waves in turn.
+    // The batches walk the waves in turn.
     fast.roundBatches.clear();
     fast.roundBatches.reserve(batches);
     fast.waveBatches.clear();
@@ -239,18 +163,6 @@ void clearRoundContactImpulses(FastWorkspace& fast) {
 }
 
 namespace {
-
-/// What a pass's formulas take from the settings, as Lanes, once per pass.
-struct PassConstants {
-    bool accumulate = true;   ///< ContactSolverSettings::accumulate.
-    Lanes zero{};
-    Lanes one{};
-    Lanes inverseSubstep{};   ///< 1/h_s, 1/s.
-    Lanes biasRate{};         ///< softness.hpp, 1/s.
-    Lanes slowestPushOut{};   ///< −kMaxPushOutSpeed, m/s.
-    Lanes softMassScale{};    ///< s_m where bodies overlap (softness.hpp; the pass without the push uses 1).
-    Lanes softImpulseScale{}; ///< s_i where bodies overlap (the pass without the push uses 0).
-};
 
 /// Batches of one wave solved side by side (solveBatches()): the most the
 /// processor's registers and reorder window profit from (below).
@@ -313,37 +225,18 @@ STEPWISE_LANES_INLINE void solveBatches(RoundBatch* batches, std::vector<SolverB
     BodyLanes a[N];
     BodyLanes b[N];
     Lanes applied[N];
-    // Normal: λ = −K⁻¹·s_m·(v_n + bias) − s_i·λ_acc (softness.hpp); a gap closes in this substep, no further.
+    // Normal: λ = −K⁻¹·s_m·(v_n + bias) − s_i·λ_acc (normal_row_lanes.hpp)
     for (std::size_t j = 0; j < N; ++j) {
         RoundBatch& batch = batches[j];
         const Vec3Lanes& n = batch.normal;
         const Lanes separation =
             dot(gatherCentres(centres, batch.bodyB) - gatherCentres(centres, batch.bodyA), n) +
             batch.separationOffset;
-        const auto gap = separation > k.zero;
-        const Lanes gapBias = separation * k.inverseSubstep;
-
         a[j] = gather(bodies, batch.bodyA);
         b[j] = gather(bodies, batch.bodyB);
         const Lanes vn = dot(b[j].velocity - a[j].velocity, n);
-        Lanes impulse;
-        if constexpr (PushOut) {
-            const Lanes bias = select(gap, gapBias, maxLanes(k.biasRate * separation, k.slowestPushOut));
-            const Lanes massScale = select(gap, k.one, k.softMassScale);
-            const Lanes impulseScale = select(gap, k.zero, k.softImpulseScale);
-            impulse = -batch.normalMass * massScale * (vn + bias) - impulseScale * batch.normalImpulse;
-        } else {  // no push: s_m = 1, s_i = 0, and an overlap has no bias
-            impulse = -batch.normalMass * (vn + select(gap, gapBias, k.zero));
-        }
-        if (k.accumulate) {
-            const Lanes total = maxLanes(batch.normalImpulse + impulse, k.zero);
-            applied[j] = total - batch.normalImpulse;
-            batch.normalImpulse = total;
-        } else {  // Box2D-Lite's switch: clamp each increment
-            applied[j] = maxLanes(impulse, k.zero);
-            batch.normalImpulse += applied[j];
-        }
-        batch.maxNormalImpulse = maxLanes(batch.maxNormalImpulse, batch.normalImpulse);
+        applied[j] = solveNormalImpulse<PushOut>(vn, separation, batch.normalMass, batch.normalImpulse,
+                                                 batch.maxNormalImpulse, k);
     }
     for (std::size_t j = 0; j < N; ++j) applyNormal(a[j], b[j], batches[j].normal, applied[j]);
     if constexpr (Friction) solveFrictionOfBatches<N>(batches, a, b, k);
@@ -374,23 +267,15 @@ STEPWISE_LANES_INLINE void solveWaves(SolverWorkspace& solver, FastWorkspace& fa
 
 }  // namespace
 
-// Compiled three times (STEPWISE_LANES_COPIES, lanes.hpp): AVX-512, AVX2 and any x86-64, the same numbers.
 void solveRoundContacts(SolverWorkspace& solver, FastWorkspace& fast, const ContactSolverSettings& settings, bool useBias) {
     solveRoundContactRange(solver, fast, settings, useBias, 0, fast.roundBatches.size());
 }
 
+// Compiled three times (STEPWISE_LANES_COPIES, lanes.hpp): AVX-512, AVX2 and any x86-64, the same numbers.
 STEPWISE_LANES_COPIES
 void solveRoundContactRange(SolverWorkspace& solver, FastWorkspace& fast, const ContactSolverSettings& settings,
                             bool useBias, std::size_t first, std::size_t end) {
-    PassConstants k;
-    k.accumulate = settings.accumulate;
-    k.zero = splat(0);
-    k.one = splat(1);
-    k.inverseSubstep = splat(settings.inverseSubstep);
-    k.biasRate = splat(settings.softness.biasRate);
-    k.slowestPushOut = splat(-kMaxPushOutSpeed);
-    k.softMassScale = splat(settings.softness.massScale);
-    k.softImpulseScale = splat(settings.softness.impulseScale);
+    const PassConstants k = makePassConstants(settings);
     if (useBias && settings.positionCorrection) solveWaves<true, true>(solver, fast, k, first, end);  // the soft bias pushes overlaps apart
     else if (passSolvesRoundFriction(settings, useBias)) solveWaves<false, true>(solver, fast, k, first, end);
     else solveWaves<false, false>(solver, fast, k, first, end);  // a relax pass: the normal rows only

@@ -8,7 +8,7 @@
 /// the same operation on four doubles at once (SIMD: SSE2 two, AVX2 and AVX-512 four),
 /// but only on four *independent* contacts.
 ///
-/// **Waves.** Gauss–Seidel solves the contacts in order, each one reading
+/// **Waves** (contact_waves.hpp). Gauss–Seidel solves the contacts in order, each one reading
 /// the velocities the earlier ones left. But two contacts that share no
 /// dynamic body do not read each other's results at all: solving them in
 /// either order, or at once, gives the same numbers to the last bit. Only the
@@ -30,8 +30,8 @@
 /// but changes the order, and with it how far one pass carries a pile's
 /// weight down, so the result would no longer be the plain pass's.)
 ///
-/// A contact whose rows are stored (a box, a kinematic body) is solved alone
-/// after the batches, in order, by the plain solveContact(): the plain pass
+/// The contacts whose rows are stored (a box, a kinematic body) have batches of
+/// their own, solved after all of these (box_contact_lanes.hpp): the plain pass
 /// also takes the round contacts first ("The order of a pass", contact_solver.hpp).
 ///
 /// **The order is the contacts'.** The waves follow from the contacts

@@ -127,17 +127,20 @@ PlanDecision jointSolverOf(const PlanInputs& in) {
     return run("runs: the scene has joints");
 }
 
-/// The fast path runs the substeps with the plain path's numbers; it has nothing faster for a scene without balls.
+/// The fast path runs the substeps with the plain path's numbers; it has lanes for the contacts of
+/// balls and boxes (and what they touch), nothing faster for a scene of other shapes only.
 PlanDecision fastPathOf(const PlanInputs& in, const StepPlan& plan) {
     if (in.settings.solver == SolverKind::Impulse) return skip("not in the Impulse pipeline (it has no substeps)");
     if (!in.settings.fastPath) {
         return skip("off: FastPath=false (the default of the debug and student builds), so every step takes the plain path");
     }
     if (!plan.stage(Stage::SolveConstraints).runs) return skip("off: nothing to solve");
-    bool anyBall = false;
-    for (const DynamicObject& body : in.dynamics) anyBall = anyBall || body.shape == Shape::Sphere;
-    if (!anyBall) return skip("off: no dynamic ball, no round contact to take four at a time; the plain path runs");
-    return run("runs (src/fast/): round contacts four at a time in SIMD lanes, the plain path's numbers bit for bit");
+    bool anyBallOrBox = false;
+    for (const DynamicObject& body : in.dynamics) {
+        anyBallOrBox = anyBallOrBox || body.shape == Shape::Sphere || body.shape == Shape::Box;
+    }
+    if (!anyBallOrBox) return skip("off: no dynamic ball or box, whose contacts the lanes take; the plain path runs");
+    return run("runs (src/fast/): contacts four at a time in SIMD lanes, the plain path's numbers bit for bit");
 }
 
 /// The packed substeps carry one integrator, the contact passes and nothing else (src/fast/packed_substeps.hpp).

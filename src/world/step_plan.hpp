@@ -146,10 +146,10 @@ struct PlanInputs {
 ///   still advances. Checked every step, since bodies wake and fall asleep.
 /// - **Fast path** (sequential impulse): not a skip but another road to the
 ///   same numbers. The substeps run on the fast path (src/fast/fast_path.hpp:
-///   round contacts four at a time in SIMD lanes) when the plan is on,
+///   contacts four at a time in SIMD lanes) when the plan is on,
 ///   `FastPath=true` (the default, except in the debug and student builds),
-///   a dynamic ball makes round contacts possible, and there is something to
-///   solve. It computes what the plain loop computes, bit for bit (the tests
+///   a dynamic ball or box makes contacts for the lanes possible, and there is
+///   something to solve. It computes what the plain loop computes, bit for bit (the tests
 ///   "[fast]" and "[plan]" compare them). With a StepObserver attached the
 ///   World always takes the plain path, so that the objects are current
 ///   between the stages and what a student watches is the textbook step.
