@@ -9,7 +9,7 @@
 ///
 /// **How it is faster.** Two things, each a file of this folder:
 /// 1. *Round contacts four at a time* (round_contact_lanes.hpp). Contacts
-///    between balls, or a ball and a plane, are put in waves of contacts that
+///    between balls, or a ball and a plane or a kinematic body at rest, are put in waves of contacts that
 ///    share no body and solved four at a time in SIMD lanes (lanes.hpp). Each
 ///    body meets its contacts in the plain pass's order, and each lane rounds
 ///    as a scalar does, so the velocities are the plain pass's. The other
