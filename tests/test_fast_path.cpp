@@ -654,3 +654,67 @@ TEST_CASE("How full the box lanes are: contacts per wave of the pyramid and the 
         }
     }
 }
+
+TEST_CASE("A rain of balls into a box of static boxes runs in the lanes and on the packed records, with the plain numbers", "[fast][lanes]") {
+    // The same kind of rain as above, but the floor and the walls are kinematic boxes at rest:
+    // they neither move nor turn, so a ball's contact with one is round, as a plane's is
+    // (contact_solver.hpp, "Rows stored or computed"), and the steps run on the packed records.
+    std::string text = "World, Duration=2, Sleep=false\n"
+                       "KinematicsObject, Name=floor, Shape=Box, Position=(0,-0.5,0), Scale=(4,1,4)\n"
+                       "KinematicsObject, Name=west, Shape=Box, Position=(-2,1.5,0), Scale=(1,3,4)\n"
+                       "KinematicsObject, Name=east, Shape=Box, Position=(2,1.5,0), Scale=(1,3,4)\n"
+                       "KinematicsObject, Name=south, Shape=Box, Position=(0,1.5,-2), Scale=(3,3,1)\n"
+                       "KinematicsObject, Name=north, Shape=Box, Position=(0,1.5,2), Scale=(3,3,1)\n";
+    for (int i = 0; i < 48; ++i) {
+        const double x = -1.1 + 0.45 * (i % 6), z = -1.0 + 0.5 * ((i / 6) % 4), y = 0.4 + 0.45 * (i / 24) + 0.05 * (i % 3);
+        text += "DynamicObject, Name=b" + std::to_string(i) + ", Shape=Sphere, Radius=0.2, Mass=" +
+                std::to_string(1 + i % 3) + ", Position=(" + std::to_string(x) + "," + std::to_string(y) + "," +
+                std::to_string(z) + "), Velocity=(" + std::to_string(0.3 * (i % 5) - 0.6) + ",0," +
+                std::to_string(0.2 * (i % 4) - 0.3) + "), AngularVelocity=(0," + std::to_string(i % 7) +
+                ",0), Elasticity=0.6, Friction=0.5\n";
+    }
+    SECTION("walls at rest: every contact round, the packed substeps") {
+        const FastPathCounts counts = requireSameOnBothRoads(sceneFrom(text), 90);
+        INFO(counts.packedSteps << " of " << counts.steps << " steps on the packed records");
+        CHECK(counts.steps == 90);
+        CHECK(counts.packedSteps == 90);  // no contact has stored rows: every step can be packed
+    }
+    SECTION("a paddle moving through the balls: its contacts keep stored rows, with its surface speed") {
+        text += "KinematicsObject, Name=paddle, Shape=Box, Position=(-1.2,0.3,0), Scale=(0.1,0.6,2.5), Velocity=(0.8,0,0)\n";
+        const FastPathCounts counts = requireSameOnBothRoads(sceneFrom(text), 90);
+        CHECK(counts.steps == 90);
+        CHECK(counts.packedSteps < counts.steps);  // the paddle's contacts keep those steps on the objects
+    }
+}
+
+TEST_CASE("A ball's contact with a kinematic body is round while the body is at rest, stored while it moves", "[fast][solver]") {
+    // Two balls resting on two kinematic slabs, one at rest and one sliding along x at 0.5 m/s.
+    Scene scene = test::emptyScene();
+    scene.kinematics.push_back(test::kinematicBox("still", Vec3(0, -0.5, 0), Vec3(2, 1, 2)));
+    scene.kinematics.push_back(test::kinematicBox("belt", Vec3(5, -0.5, 0), Vec3(2, 1, 2), Vec3(0.5, 0, 0)));
+    scene.dynamics.push_back(test::sphere("on_still", Vec3(0, 0.5, 0)));
+    scene.dynamics.push_back(test::sphere("on_belt", Vec3(5, 0.5, 0)));
+    World world(scene);
+    world.step();
+    const std::vector<SolverContact>& contacts = world.solverContacts();
+    const std::vector<ContactStart>& starts = world.solverContactStarts();
+    REQUIRE(contacts.size() == 2);
+    for (std::size_t i = 0; i < contacts.size(); ++i) {
+        INFO(world.kinematics()[starts[i].refB.index].name);
+        REQUIRE(starts[i].refB.kind == BodyKind::Kinematic);
+        const bool moving = starts[i].refB.index == 1;
+        CHECK((contacts[i].rows == kRoundContact) == !moving);
+        CHECK(contacts[i].bodyB == kStaticSolverBody);
+        // rB is still the lever from the slab's centre (the trace shows it), 0.5 m above the centre.
+        CHECK(starts[i].rB.y == Approx(0.5).margin(kSpeculativeDistance));
+    }
+    // The belt still drags its ball, through its surface speed. The friction impulse J that makes
+    // the ball roll on the belt (its lowest point at the belt's speed u: v + ω r = u, ω about z)
+    // gives Δv = J/m and Δ(ω r) = 5J/(2m) (I = 2/5 m r²), so from rest v ends at (2/7)·u: 0.143 m/s.
+    // Within 1 %: once rolling, nothing but rounding changes it.
+    for (int step = 0; step < 60; ++step) world.step();
+    const DynamicObject& onBelt = world.dynamics()[1];
+    CHECK(onBelt.velocity.x == Approx(Real(2) / 7 * Real(0.5)).epsilon(0.01));
+    const DynamicObject& onStill = world.dynamics()[0];
+    CHECK(std::abs(onStill.velocity.x) < Real(1e-9));  // nothing pushes it sideways: it stays put
+}

@@ -9,8 +9,15 @@
 ///    pairs of proxies, in whatever order it meets them. Each structure only
 ///    *proposes* pairs; the final word is always the same exact test on the
 ///    same boxes as brute force (Aabb::overlaps), so the pair *set* is the same;
-/// 3. here, the pairs are put in brute force's order, and the plane pairs
-///    (which no structure holds: a plane has no bounding box) are added.
+/// 3. here, the pairs are put in brute force's order, and the kinematic and
+///    plane pairs are added: each dynamic body asks the static tree for the
+///    kinematic bodies its box overlaps (StaticTree, broadphase_static.hpp),
+///    and tests each plane.
+///
+/// The kinematic bodies are kept out of the structure of part 2: they never
+/// pair with each other, and at rest they never move, so the structure holds
+/// only bodies that can move, and a level of static boxes is queried as
+/// planes are, never re-inserted.
 ///
 /// The order matters because the impulse stage visits contacts in order, and
 /// Gauss–Seidel results depend on it: the same pairs in another order would
@@ -32,11 +39,11 @@ BroadphaseChoice chooseBroadphase(const BodySet& bodies) {
                       dynamicCount, kAutoBruteForceBelow);
         return {BroadphaseKind::BruteForce, text};
     }
-    // How different are the sizes? The grid's cells are sized from the median body.
+    // How different are the sizes? The grid's cells are sized from the median body. Only the
+    // dynamic bodies count: the kinematic ones (a floor, walls) are in the static tree, not in the grid.
     std::vector<Real> sizes;
-    sizes.reserve(dynamicCount + bodies.kinematics.size());
+    sizes.reserve(dynamicCount);
     for (const DynamicObject& body : bodies.dynamics) sizes.push_back(broadphaseBounds(body).longestSide());
-    for (const KinematicsObject& body : bodies.kinematics) sizes.push_back(broadphaseBounds(body).longestSide());
     const auto middle = sizes.begin() + static_cast<std::ptrdiff_t>(sizes.size() / 2);
     std::nth_element(sizes.begin(), middle, sizes.end());
     const Real median = *middle;
@@ -82,11 +89,13 @@ void Broadphase::findPairs(BroadphaseKind kind, const BodySet& bodies, std::vect
         return;
     }
 
-    boxes_.resize(bodies.dynamics.size() + bodies.kinematics.size());
+    // The structure holds the dynamic bodies only; the kinematic ones are in the static tree,
+    // rebuilt only in a step where one of them moved (StaticTree::update()).
+    boxes_.resize(bodies.dynamics.size());
     for (std::size_t i = 0; i < bodies.dynamics.size(); ++i) boxes_[i] = broadphaseBounds(bodies.dynamics[i]);
-    for (std::size_t k = 0; k < bodies.kinematics.size(); ++k) {
-        boxes_[dynamicCount + k] = broadphaseBounds(bodies.kinematics[k]);
-    }
+    staticBoxes_.resize(bodies.kinematics.size());
+    for (std::size_t k = 0; k < bodies.kinematics.size(); ++k) staticBoxes_[k] = broadphaseBounds(bodies.kinematics[k]);
+    staticTree_.update(staticBoxes_);
     const ProxySet proxies{boxes_, dynamicCount};
     rawPairs_.clear();
     switch (kind) {
@@ -114,20 +123,16 @@ void Broadphase::sortIntoCanonicalOrder(const BodySet& bodies, std::vector<Candi
     pairStart_[0] = 0;
 
     // Brute force's order for each A: dynamic partners by index, then kinematic
-    // ones (their proxy indices come after every dynamic one, so sorting the
-    // proxy indices gives exactly that), then the planes.
+    // ones by index (the static tree's answer, which comes sorted), then the planes.
     pairs.clear();
     for (std::uint32_t a = 0; a < dynamicCount; ++a) {
         const auto first = partners_.begin() + pairStart_[a];
         const auto last = partners_.begin() + pairStart_[a + 1];
         std::sort(first, last);  // a body has a few partners: this is cheap, and sorts in place
-        for (auto b = first; b != last; ++b) {
-            if (*b < dynamicCount) {
-                pairs.push_back({a, {BodyKind::Dynamic, *b}});
-            } else {
-                pairs.push_back({a, {BodyKind::Kinematic, *b - dynamicCount}});
-            }
-        }
+        for (auto b = first; b != last; ++b) pairs.push_back({a, {BodyKind::Dynamic, *b}});
+        staticHits_.clear();
+        staticTree_.query(boxes_[a], staticHits_, counters_);
+        for (const std::uint32_t k : staticHits_) pairs.push_back({a, {BodyKind::Kinematic, k}});
         for (std::uint32_t p = 0; p < bodies.planes.size(); ++p) {
             ++counters_.pairTests;
             if (aabbTouchesPlane(boxes_[a], bodies.planes[p])) pairs.push_back({a, {BodyKind::Plane, p}});

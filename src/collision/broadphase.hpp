@@ -19,6 +19,7 @@
 #include "collision/broadphase_aabb_tree.hpp"
 #include "collision/broadphase_grid.hpp"
 #include "collision/broadphase_proxies.hpp"
+#include "collision/broadphase_static.hpp"
 #include "collision/broadphase_sweep_and_prune.hpp"
 #include "collision/contact.hpp"
 #include "objects/body_set.hpp"
@@ -72,12 +73,17 @@ inline constexpr std::size_t kAutoGridMaxOversize = 8;
 ///   kGridOversizeRatio × the median): sweep and prune below kAutoSweepBelow
 ///   bodies, the grid from there on, whose cost per body stays flat;
 /// - otherwise: the AABB tree, which does not care about sizes.
+///
+/// Only the dynamic bodies are weighed: the kinematic ones never enter the
+/// structure chosen here (they are in the static tree, StaticTree).
 BroadphaseChoice chooseBroadphase(const BodySet& bodies);
 
 /// @brief The World's broadphase: the structure it keeps between steps, and the dispatcher.
 ///
 /// Holds the sweep-and-prune order, the tree and the grid from one step to
-/// the next (only the one in use is kept up to date), and the scratch arrays
+/// the next (only the one in use is kept up to date), which hold the dynamic
+/// bodies; the static tree of the kinematic bodies (StaticTree), which all three
+/// query and which is rebuilt only when a kinematic body moved; and the scratch arrays
 /// of the common part: the bounding boxes, the raw pairs, and the sort that
 /// puts them in the canonical order. A running scene allocates nothing.
 class Broadphase {
@@ -103,15 +109,20 @@ public:
     const UniformGrid& grid() const { return grid_; }
     /// @brief The sweep and prune state (for tests and the tracker).
     const SweepAndPrune& sweepAndPrune() const { return sweepAndPrune_; }
+    /// @brief The kinematic bodies' tree, which every broadphase but brute force queries (for tests).
+    const StaticTree& staticTree() const { return staticTree_; }
 
 private:
     void sortIntoCanonicalOrder(const BodySet& bodies, std::vector<CandidatePair>& pairs);
 
-    std::vector<Aabb> boxes_;                ///< One per proxy (dynamic, then kinematic).
+    std::vector<Aabb> boxes_;                ///< One per dynamic body: the structure's proxies.
+    std::vector<Aabb> staticBoxes_;          ///< One per kinematic body, for the static tree.
+    std::vector<std::uint32_t> staticHits_;  ///< Scratch: the kinematic partners of one dynamic body.
     std::vector<ProxyPair> rawPairs_;        ///< What the structure found, in its own order.
     std::vector<std::uint32_t> pairStart_;   ///< Counting sort: where each dynamic body's pairs start.
     std::vector<std::uint32_t> partners_;    ///< Counting sort: each body's partners, grouped by body.
     SweepAndPrune sweepAndPrune_;
+    StaticTree staticTree_;
     AabbTree tree_;
     UniformGrid grid_;
     BroadphaseKind lastKind_ = BroadphaseKind::BruteForce;

@@ -6,6 +6,9 @@
 /// kinematic ones (proxy dynamicCount + k is kinematic body k). Planes are not
 /// proxies: an infinite plane has no bounding box, so every broadphase tests
 /// each dynamic body against each plane directly (src/collision/broadphase.cpp).
+/// The World's Broadphase hands the structures the dynamic bodies only and
+/// keeps the kinematic ones in a tree of their own (broadphase_static.hpp); the
+/// structures still take kinematic proxies, which they never pair together.
 #pragma once
 
 #include <cstdint>

@@ -106,12 +106,16 @@ inline constexpr std::uint32_t kRoundContact = 0xffffffffu;
 ///
 /// **Rows stored or computed.** The Jacobian's angular parts, ContactRow per
 /// direction, are 288 bytes. A contact between two balls, or a ball and a
-/// plane, does not need them: its lever arms lie along the normal and a ball's
-/// inertia is a number, so the rows follow from the levers ℓ_A = r_A·n and
-/// ℓ_B = r_B·n (solver_body.hpp, "Rows of a round contact"). Such a *round*
+/// body that neither moves nor turns this step (a plane, or a kinematic body
+/// at rest: KinematicsObject::atRest()), does not need them: its lever arms lie
+/// along the normal and a ball's inertia is a number, so the rows follow from
+/// the levers ℓ_A = r_A·n and ℓ_B = r_B·n (solver_body.hpp, "Rows of a round
+/// contact"; ℓ_B = 0 for a static B, whose m⁻¹ and I⁻¹ are zero). Such a *round*
 /// contact has `rows == kRoundContact` and a pass computes its rows; any other
-/// (a box, a kinematic body) keeps them in the side array
-/// SolverWorkspace::rows, which a pass reads at index `rows`.
+/// (a box, a moving kinematic body, whose surface speed v + ω × r enters J·v)
+/// keeps them in the side array SolverWorkspace::rows, which a pass reads at
+/// index `rows`. A kinematic body at rest is measured as a plane is, from the
+/// fixed pose at the origin: its anchor is a fixed point for the whole step.
 ///
 /// **The order of a pass.** A Gauss–Seidel pass solves the contacts one
 /// after the other, each reading the velocities the earlier ones left, so
@@ -150,12 +154,12 @@ struct SolverContact {
     // The separation at the recorded poses (currentSeparation() in solve_contacts.cpp).
     Real separationOffset = 0;       ///< C_offset: C₀ and the fixed anchor offsets along n, m.
     std::uint32_t poseA = 0;         ///< A's pose in SolverWorkspace::poses.
-    std::uint32_t poseB = 0;         ///< B's pose there (a plane: the fixed pose at the origin).
+    std::uint32_t poseB = 0;         ///< B's pose there (a plane or a kinematic body at rest: the fixed pose at the origin).
     std::uint32_t rows = kRoundContact; ///< Index in SolverWorkspace::rows, or kRoundContact: computed from n, ℓ_A, ℓ_B.
     std::uint32_t turningAnchors = kNoTurningAnchors; ///< Index in SolverWorkspace::turningAnchors, if an anchor turns.
 };
 
-/// @brief The stored Jacobian rows of a contact that is not round (a box, a kinematic body), read by every pass.
+/// @brief The stored Jacobian rows of a contact that is not round (a box, a moving kinematic body), read by every pass.
 struct ContactRows {
     ContactRow normal;                    ///< J's angular parts along n (solver_body.hpp), fixed for the step.
     ContactRow tangent[2];                ///< The same along each tangent.
@@ -236,7 +240,7 @@ inline bool passSolvesFriction(const SolverContact& c, const ContactSolverSettin
 struct SolverWorkspace {
     std::vector<SolverContact> contacts;         ///< One per contact point, this step: what the passes read.
     std::vector<ContactStart> starts;            ///< The same contacts' origin and bounce (read by prepare, the bounce, the trace).
-    std::vector<ContactRows> rows;               ///< Rows of the contacts that are not round (boxes, kinematic bodies).
+    std::vector<ContactRows> rows;               ///< Rows of the contacts that are not round (boxes, moving kinematic bodies).
     std::vector<TurningAnchors> turningAnchors;  ///< Anchors of the contacts with a turning anchor (boxes).
     std::vector<std::uint32_t> roundContacts;    ///< The round contacts, in order: a pass solves these first.
     std::vector<std::uint32_t> otherContacts;    ///< The contacts with stored rows, in order: a pass solves these next.

@@ -115,14 +115,20 @@ SolverContact prepareOne(const BodySet& bodies, const Contact& contact, Real h, 
         start.staticVelocity = other.velocity;  // the surface of a kinematic B moves; a plane's does not
         if (contact.b.kind == BodyKind::Kinematic) {
             const KinematicsObject& k = bodies.kinematics[contact.b.index];
-            c.poseB = static_cast<std::uint32_t>(bodies.dynamics.size() + contact.b.index);
-            centreB = k.position;
-            orientationB = &k.orientation;
-            turnsB = k.shape != Shape::Sphere;
+            start.rB = contact.point - k.position;
+            // A kinematic body at rest neither moves nor turns this step: its anchor stays where the
+            // contact found it, a fixed point, exactly as a plane's does. So it is measured as a
+            // plane's is, from the fixed pose at the origin, and the contact is round if A is a ball.
+            if (!k.atRest()) {
+                c.poseB = static_cast<std::uint32_t>(bodies.dynamics.size() + contact.b.index);
+                centreB = k.position;
+                orientationB = &k.orientation;
+                turnsB = k.shape != Shape::Sphere;
+            }
         }
     }
     const Vec3 offsetB = contact.point - centreB;
-    if (contact.b.kind != BodyKind::Plane) start.rB = offsetB;
+    if (other.dynamic != nullptr) start.rB = offsetB;
     c.separationOffset = start.startSeparation + (turnsB ? Real(0) : glm::dot(offsetB, c.normal)) -
                          (turnsA ? Real(0) : glm::dot(rA, c.normal));
     if (turnsA || turnsB) {
@@ -148,12 +154,14 @@ SolverContact prepareOne(const BodySet& bodies, const Contact& contact, Real h, 
     const SolverBody& bodyB = w.bodies[c.bodyB];
     tangentBasis(c.normal, c.tangent);
     // J's angular parts and K, once per step: r, d and I⁻¹ are fixed through it (solver_body.hpp).
-    // A ball on a ball or a plane (no anchor turns, no surface moves): levers along n, rows computed by the pass.
-    if (!turnsA && !turnsB && contact.b.kind != BodyKind::Kinematic) {
+    // A ball on a ball, a plane or a kinematic body at rest (no anchor turns, no surface moves):
+    // levers along n, rows computed by the pass.
+    const bool surfaceMovesB = contact.b.kind == BodyKind::Kinematic && !bodies.kinematics[contact.b.index].atRest();
+    if (!turnsA && !turnsB && !surfaceMovesB) {
         // The levers from the local vectors: read back from `start`, a 16-byte load of a vector
         // just written as 8-byte stores waits for them (the processor cannot forward it).
         c.leverA = glm::dot(rA, c.normal);
-        c.leverB = contact.b.kind != BodyKind::Plane ? glm::dot(offsetB, c.normal) : Real(0);
+        c.leverB = other.dynamic != nullptr ? glm::dot(offsetB, c.normal) : Real(0);  // a static B has no lever
         c.normalMass = Real(1) / (bodyA.inverseMass + bodyB.inverseMass);
         c.tangentMass[0] = c.tangentMass[1] = Real(1) / roundTangentInverseMass(bodyA, bodyB, c.leverA, c.leverB);
     } else {

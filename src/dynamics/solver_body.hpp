@@ -20,8 +20,8 @@
 /// the World's dynamic array, so that the copies in and out walk the objects
 /// front to back. Record 0 is the *static body*: B of a contact with a
 /// plane or a kinematic body. It has m⁻¹ = 0 and I⁻¹ = 0, so an impulse does
-/// not move it, and its velocity stays zero; the velocity of a kinematic
-/// surface is kept in the contact (SolverContact::normalSurfaceSpeed and
+/// not move it, and its velocity stays zero; the velocity of a moving kinematic
+/// surface is kept in the contact's stored rows (ContactRows::normalSurfaceSpeed and
 /// tangentSurfaceSpeed). With it, a contact pass needs no test "is B
 /// dynamic?" per contact.
 ///

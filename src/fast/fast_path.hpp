@@ -11,7 +11,7 @@
 /// 1. *Contacts four at a time* (contact_waves.hpp, round_contact_lanes.hpp,
 ///    box_contact_lanes.hpp). Contacts are put in waves of contacts that
 ///    share no body and solved four at a time in SIMD lanes (lanes.hpp): the
-///    round ones (between balls, or a ball and a plane) with rows computed
+///    round ones (between balls, or a ball and a plane or a kinematic body at rest) with rows computed
 ///    from the normal, then the others (a box's, a kinematic body's) with
 ///    their stored rows. Each body meets its contacts in the plain pass's
 ///    order, and each lane rounds as a scalar does, so the velocities are the

@@ -35,7 +35,7 @@ namespace stepwise {
 
 /// @brief Gathers what the packed substeps need (FastWorkspace::centres, `orientations`, `freeFlight`,
 /// `startMomentum`) from the objects of the records; false when this step cannot take them: a contact
-/// with stored rows (a box or a kinematic body), or a record whose body is not an awake ball with three
+/// with stored rows (a box or a moving kinematic body), or a record whose body is not an awake ball with three
 /// equal moments of inertia. (What it wrote before finding that out is scratch.)
 bool packRecords(SolverWorkspace& solver, FastWorkspace& fast);
 

@@ -1,5 +1,5 @@
 /// @file round_contact_lanes.hpp
-/// @brief The round contacts (ball–ball, ball–plane) solved four at a time: waves of independent contacts in SIMD lanes.
+/// @brief The round contacts (ball–ball, ball–plane, ball–resting kinematic body) solved four at a time: waves of independent contacts in SIMD lanes.
 ///
 /// **Why.** Solving one contact is a long chain of small operations, most
 /// waiting for the one before (solveContact() in dynamics/solve_contacts.cpp):
@@ -30,7 +30,7 @@
 /// but changes the order, and with it how far one pass carries a pile's
 /// weight down, so the result would no longer be the plain pass's.)
 ///
-/// The contacts whose rows are stored (a box, a kinematic body) have batches of
+/// The contacts whose rows are stored (a box, a moving kinematic body) have batches of
 /// their own, solved after all of these (box_contact_lanes.hpp): the plain pass
 /// also takes the round contacts first ("The order of a pass", contact_solver.hpp).
 ///

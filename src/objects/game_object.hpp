@@ -127,6 +127,9 @@ public:
 
     /// @brief Half the box's edge lengths, m.
     Vec3 halfExtents() const { return scale * Real(0.5); }
+    /// @brief True when the body neither moves nor turns (v = 0 and ω = 0): a wall, a floor, a level.
+    /// Its position and orientation then stay exactly as they are, step after step, as a plane's do.
+    bool atRest() const { return velocity == Vec3(0) && angularVelocity == Vec3(0); }
 };
 
 /// @brief An infinite, immovable plane: every point p with (p − position)·normal = 0.

@@ -155,7 +155,8 @@ PlanDecision packedSubstepsOf(const PlanInputs& in, const StepPlan& plan) {
     }
     if (plan.jointSolver.runs) return skip("off: joint passes work on the objects");
     if (plan.substepForces.runs) return skip("off: forces that follow the bodies are worked out on the objects");
-    return run("in a step whose contacts all hold balls: substeps on the solver's records, objects written once (same bits)");
+    return run("in a step whose contacts all hold balls (on balls, planes or kinematic bodies at rest): substeps on "
+               "the solver's records, objects written once (same bits)");
 }
 
 PlanDecision idleSkipOf(const PlanInputs& in) {
