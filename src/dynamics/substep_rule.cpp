@@ -12,7 +12,8 @@ namespace stepwise {
 
 namespace {
 
-constexpr std::uint32_t kUnset = 0xffffffffu;
+/// 60 Hz · (1/60 s) / 0.25 is 4 on paper and 4.000000000000001 in floating point: what is taken off before ⌈·⌉.
+constexpr Real kStiffnessRounding = Real(1e-9);
 
 std::uint32_t findRoot(std::vector<std::uint32_t>& parent, std::uint32_t i) {
     while (parent[i] != i) {
@@ -40,6 +41,7 @@ const char* substepReasonName(SubstepReason reason) {
         case SubstepReason::Height: return "height";
         case SubstepReason::MassRatio: return "mass ratio";
         case SubstepReason::Speed: return "speed";
+        case SubstepReason::Stiffness: return "stiffness";
         case SubstepReason::FreeFlight: return "free flight";
         case SubstepReason::Cap: return "cap";
     }
@@ -81,6 +83,10 @@ int islandSubstepCount(std::uint32_t height, Real massRatio, Real speed, Real ha
         if (massRatio > Real(1)) consider(ceilingCount(kSubstepsPerMassRatio * massRatio, cap), SubstepReason::MassRatio);
         // n_V = ⌈v·h/(k_R·s)⌉: a substep moves a body a small part of its size
         if (halfSize > 0) consider(ceilingCount(speed * inputs.timeStep / (kReachShare * halfSize), cap), SubstepReason::Speed);
+        // n_K = ⌈4·h·min(f, f_min)⌉: the contacts stay at least kMinContactHertz stiff (contactHertzInUse())
+        const Real hertz = std::min(inputs.contactHertz, kMinContactHertz);
+        consider(ceilingCount(hertz * inputs.timeStep / kMaxHertzPerSubstepRate - kStiffnessRounding, cap),
+                 SubstepReason::Stiffness);
     }
     const int count = roundUpToGroup(wanted, cap);
     if (count == cap && wanted > cap) reason = SubstepReason::Cap;

@@ -15,7 +15,7 @@
 /// very numbers of the fixed count.
 ///
 /// **The rule.** With N = `Substeps` (the cap) and P = `Iterations` (solve
-/// passes per substep), an island's count is the largest of three terms,
+/// passes per substep), an island's count is the largest of four terms,
 /// rounded up to a power of two (at most log₂N + 1 groups), at least
 /// kMinIslandSubsteps and at most N:
 ///
@@ -38,6 +38,13 @@
 ///   substep: the relative speed v of a contact's two bodies times h_s stays
 ///   below kReachShare times the smaller body's least half-size s, so
 ///   n_V = ⌈v·h / (kReachShare·s)⌉.
+/// - **Stiffness.** A soft contact's frequency is capped at a quarter of
+///   its substep rate, n/(4h) (contactHertzInUse(); stiffer, the implicit
+///   spring is faster than a substep resolves, and a tower sways). A resting
+///   body sinks g/ω² into its support, so fewer substeps mean deeper sag
+///   and a slower build-up of the normal force that friction is limited by.
+///   The island keeps at least kMinContactHertz (or ContactHertz, if lower):
+///   n_K = ⌈4·h·min(ContactHertz, kMinContactHertz)⌉, 4 at 1/60 s, 16 at 1/15 s.
 /// - **Free flight.** An island without contacts needs no solver; its
 ///   integrator alone sets the count. Velocity Verlet is exact under a
 ///   uniform field for any h_s, so n = 1 (kMinIslandSubsteps); symplectic and
@@ -71,6 +78,9 @@ inline constexpr int kMinIslandSubsteps = 1;
 /// @brief n_M = ⌈kSubstepsPerMassRatio·r⌉ for a contact whose bodies' masses differ by r > 1
 /// (2: a 2:1 pair gets 4 substeps, 8:1 gets 16).
 inline constexpr Real kSubstepsPerMassRatio = Real(2);
+/// @brief The least contact frequency an island keeps, Hz: a resting body sinks g/ω² = 69 µm at 60 Hz
+/// (the sag the `Substeps=16` default allows at TimeStep=1/15 s, where the stress suite's large step holds).
+inline constexpr Real kMinContactHertz = Real(60);
 /// @brief The part of its least half-size a body may move against its contact partner in one substep.
 inline constexpr Real kReachShare = Real(0.1);
 
@@ -80,6 +90,7 @@ enum class SubstepReason : std::uint8_t {
     Height,     ///< n_H: the stack's height in bodies over the solve passes.
     MassRatio,  ///< n_M: the largest mass ratio across one of its contacts.
     Speed,      ///< n_V: the largest relative speed across one of its contacts.
+    Stiffness,  ///< n_K: the substeps that keep its contacts at kMinContactHertz.
     FreeFlight, ///< No contacts, integrated by an integrator whose error depends on h_s.
     Cap,        ///< A term asked for more than `Substeps`: the full count.
 };
@@ -106,6 +117,7 @@ struct SubstepRuleInputs {
     int passes = 1;               ///< P, `Iterations`: solve passes per substep.
     Real timeStep = kDefaultTimeStep; ///< h, s.
     IntegratorKind integrator = IntegratorKind::SymplecticEuler; ///< Free flight's integrator.
+    Real contactHertz = kDefaultContactHertz; ///< `ContactHertz`, Hz (the stiffness term).
 };
 
 /// @brief The islands of one step, their counts, and the groups of islands that share a count,

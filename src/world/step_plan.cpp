@@ -172,8 +172,8 @@ PlanDecision islandSubstepsOf(const PlanInputs& in) {
     }
     if (!in.settings.accumulateImpulses) return skip("off: AccumulateImpulses=false; every island runs Substeps");
     if (in.settings.substeps == 1) return skip("off: Substeps=1 leaves nothing to choose");
-    return run("runs (src/dynamics/substep_rule.hpp): each island max(height/P, 2*mass ratio, speed*h/(0.1*size)), "
-               "a power of two, at most Substeps");
+    return run("runs (src/dynamics/substep_rule.hpp): each island max(height/P, 2*mass ratio, speed*h/(0.1*size), "
+               "4*h*60 Hz), a power of two, at most Substeps");
 }
 
 PlanDecision idleSkipOf(const PlanInputs& in) {
@@ -413,8 +413,9 @@ std::string describeIslandSubsteps(std::span<const IslandSubsteps> islands, std:
             bodyCount += island.bodies;
         }
         if (islandCount == 0) continue;
-        text += "  " + std::to_string(count) + " substeps: " + std::to_string(islandCount) + " islands, " +
-                std::to_string(bodyCount) + " bodies\n";
+        text += "  " + std::to_string(count) + " substeps: " + std::to_string(islandCount) +
+                (islandCount == 1 ? " island, " : " islands, ") + std::to_string(bodyCount) +
+                (bodyCount == 1 ? " body\n" : " bodies\n");
     }
     char number[32];
     std::size_t lines = 0;
@@ -423,7 +424,8 @@ std::string describeIslandSubsteps(std::span<const IslandSubsteps> islands, std:
             text += "  ... and " + std::to_string(islands.size() - maxLines) + " more islands\n";
             break;
         }
-        text += "  island " + bodies[island.firstBody].name + ": " + std::to_string(island.bodies) + " bodies, " +
+        text += "  island " + bodies[island.firstBody].name + ": " + std::to_string(island.bodies) +
+                (island.bodies == 1 ? " body, " : " bodies, ") +
                 std::to_string(island.contacts) + " contacts, height " + std::to_string(island.height);
         std::snprintf(number, sizeof number, "%.3g", double(island.massRatio));
         text += std::string(", mass ratio ") + number;

@@ -287,7 +287,8 @@ void World::stepWithSequentialImpulses() {
                      narrowphaseWorkspace_, settings_.narrowphase);
     });
 
-    const SubstepRuleInputs ruleInputs{settings_.substeps, settings_.velocityIterations, h, settings_.integrator};
+    const SubstepRuleInputs ruleInputs{settings_.substeps, settings_.velocityIterations, h, settings_.integrator,
+                                       settings_.contactHertz};
     bool perIsland = false;  // some island runs fewer than Substeps this step
 
     // 4. Prepare: contacts and joints → constraints; an awake body wakes the islands it touches
