@@ -127,7 +127,7 @@ TEST_CASE("An island given the full count computes what the fixed count computes
     CHECK(fixed.islandSubsteps().empty());  // SubstepsPerIsland=false: the rule never ran
 }
 
-TEST_CASE("SubstepsPerIsland=false forces the fixed count; joints keep the whole scene at it", "[substeps]") {
+TEST_CASE("SubstepsPerIsland=false forces the fixed count, and joints keep the whole scene at it", "[substeps]") {
     SECTION("the field, read from a scene") {
         const Scene scene = parseScene("World, Substeps=8, SubstepsPerIsland=true\n", "test");
         CHECK(scene.settings.substepsPerIsland);
