@@ -302,9 +302,21 @@ int runCommand(const RunOptions& options) {
     const std::vector<Expectation> expectations = scene->expectations;
 
     if (options.threads) scene->settings.threads = *options.threads;
+    // --explain with SubstepsPerIsland=true: a copy of the scene takes the first step, to show each island's count
+    std::optional<World> firstStep;
+    if (options.explain && scene->settings.substepsPerIsland) {
+        firstStep.emplace(Scene(*scene));
+        firstStep->step();
+    }
     World world(std::move(*scene));
     if (options.explain) {
         std::printf("\n%s", describeStepPlan(world.plan()).c_str());
+        if (firstStep && world.plan().islandSubsteps.runs) {
+            constexpr std::size_t kIslandLines = 12;  // a rain has thousands of islands: the counts, then a few
+            std::printf("%s", describeIslandSubsteps(firstStep->islandSubsteps(), firstStep->dynamics(),
+                                                     world.settings().substeps, kIslandLines)
+                                  .c_str());
+        }
         if (options.steps == std::uint64_t(0)) return kExitOk;  // --steps 0: the plan is all that was asked
         std::printf("\n");
     }

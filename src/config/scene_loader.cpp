@@ -697,6 +697,7 @@ private:
         };
         settings.solver = values.choice<SolverKind>("Solver", kSolverChoices, defaults.solver);
         settings.substeps = count("Substeps", defaults.substeps);
+        settings.substepsPerIsland = values.choice<bool>("SubstepsPerIsland", kBooleanChoices, defaults.substepsPerIsland);
         settings.velocityIterations = count("Iterations", defaults.velocityIterations);
         settings.relaxIterations = count("RelaxIterations", defaults.relaxIterations);
         settings.relaxBallFriction = values.choice<bool>("RelaxBallFriction", kBooleanChoices, defaults.relaxBallFriction);

@@ -126,6 +126,7 @@ constexpr FieldSpec kWorldFields[] = {
     // The solver and its switches (docs/config-format.md#world-solver, lectures/08-constraint-solver.md)
     {"Solver",              FieldKind::Solver,  kNamedOnly, Range::Any},
     {"Substeps",            FieldKind::Number,  kNamedOnly, Range::Count},            // per step
+    {"SubstepsPerIsland",   FieldKind::Boolean, kNamedOnly, Range::Any},              // src/dynamics/substep_rule.hpp
     {"Iterations",          FieldKind::Number,  kNamedOnly, Range::Count},            // solve passes per substep
     {"RelaxIterations",     FieldKind::Number,  kNamedOnly, Range::WholeNumber},      // relax passes per substep
     {"RelaxBallFriction",   FieldKind::Boolean, kNamedOnly, Range::Any},              // relax passes re-solve a ball's friction

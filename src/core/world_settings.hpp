@@ -135,6 +135,9 @@ struct WorldSettings {
     bool warmStarting = true;                          ///< Start each persisting contact from last step's impulses.
     SolverKind solver = SolverKind::SequentialImpulse; ///< Collision response and joints.
     int substeps = kDefaultSubsteps;                   ///< Sequential impulse: substeps per step, ≥ 1.
+    /// Sequential impulse: each island of a step gets the substeps it needs, at most `substeps`
+    /// (src/dynamics/substep_rule.hpp); false: every island runs `substeps`.
+    bool substepsPerIsland = false;
     int velocityIterations = 1;                        ///< Sequential impulse: solve passes per substep, ≥ 1.
     int relaxIterations = 1;                           ///< Sequential impulse: relax passes per substep, ≥ 0.
     /// Sequential impulse: the relax passes solve a ball contact's friction too (false: its normal row only;

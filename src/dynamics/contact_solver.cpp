@@ -23,16 +23,38 @@ void recordKinematicPoses(const BodySet& bodies, SolverWorkspace& workspace) {
     }
 }
 
+void recordPoses(const BodySet& bodies, SolverWorkspace& workspace, std::span<const std::uint32_t> dynamicBodies) {
+    workspace.poses.resize(bodies.dynamics.size() + bodies.kinematics.size() + 1);
+    for (const std::uint32_t i : dynamicBodies) workspace.poses[i] = {bodies.dynamics[i].position, bodies.dynamics[i].orientation};
+    recordKinematicPoses(bodies, workspace);
+    workspace.poses.back() = Pose{};  // the planes' fixed pose at the origin
+}
+
+namespace {
+
+/// copyVelocitiesIn() of record @p i.
+inline void copyVelocityIn(SolverWorkspace& workspace, std::size_t i) {
+    const DynamicObject& body = workspace.dynamics[workspace.recordBody[i]];
+    workspace.bodies[i].velocity = body.velocity;
+    workspace.bodies[i].angularVelocity = body.angularVelocity;
+}
+
+}  // namespace
+
 void copyVelocitiesIn(SolverWorkspace& workspace) {
-    for (std::size_t i = 1; i < workspace.bodies.size(); ++i) {
-        const DynamicObject& body = workspace.dynamics[workspace.recordBody[i]];
-        workspace.bodies[i].velocity = body.velocity;
-        workspace.bodies[i].angularVelocity = body.angularVelocity;
-    }
+    for (std::size_t i = 1; i < workspace.bodies.size(); ++i) copyVelocityIn(workspace, i);
+}
+
+void copyVelocitiesIn(SolverWorkspace& workspace, std::span<const std::uint32_t> records) {
+    for (const std::uint32_t i : records) copyVelocityIn(workspace, i);
 }
 
 void copyVelocitiesOut(SolverWorkspace& workspace) {
     for (std::size_t i = 1; i < workspace.bodies.size(); ++i) copyVelocitiesOut(workspace, i);
+}
+
+void copyVelocitiesOut(SolverWorkspace& workspace, std::span<const std::uint32_t> records) {
+    for (const std::uint32_t i : records) copyVelocitiesOut(workspace, std::size_t{i});
 }
 
 namespace {

@@ -319,6 +319,10 @@ void prepareContacts(const BodySet& bodies, std::span<const Contact> contacts, s
 /// and leaves the kinematic ones to recordKinematicPoses().
 void recordPoses(const BodySet& bodies, SolverWorkspace& workspace);
 
+/// @brief recordPoses() for the dynamic bodies @p dynamicBodies (one group of islands, substep_rule.hpp)
+/// and every kinematic body and plane.
+void recordPoses(const BodySet& bodies, SolverWorkspace& workspace, std::span<const std::uint32_t> dynamicBodies);
+
 /// @brief Records the kinematic bodies' poses only: where move-kinematics left them, for the relax passes.
 void recordKinematicPoses(const BodySet& bodies, SolverWorkspace& workspace);
 
@@ -339,9 +343,15 @@ Real currentSeparation(const SolverContact& c, const SolverWorkspace& workspace)
 /// scene has no joints.
 void copyVelocitiesIn(SolverWorkspace& workspace);
 
+/// @brief copyVelocitiesIn() for the solver records @p records alone (one group of islands, substep_rule.hpp).
+void copyVelocitiesIn(SolverWorkspace& workspace, std::span<const std::uint32_t> records);
+
 /// @brief Writes the solver bodies' velocities back to the World's objects; the angular
 /// momentum follows: L = I·ω for a ball, L + I_world·Δω for a box.
 void copyVelocitiesOut(SolverWorkspace& workspace);
+
+/// @brief copyVelocitiesOut() for the solver records @p records alone (one group of islands, substep_rule.hpp).
+void copyVelocitiesOut(SolverWorkspace& workspace, std::span<const std::uint32_t> records);
 
 /// @brief copyVelocitiesOut() for record @p record alone; returns its object.
 /// (The drift writes back each body it is about to move, in the same pass: driftByVelocityChange().)
@@ -365,6 +375,9 @@ inline DynamicObject& copyVelocitiesOut(SolverWorkspace& workspace, std::size_t 
 /// @brief Notes each record's v and ω as free flight left them (SolverWorkspace::substepStart), before
 /// anything acts on them this substep: the drift moves a body by what the constraints changed since.
 void recordSubstepStart(SolverWorkspace& workspace);
+
+/// @brief recordSubstepStart() for the solver records @p records alone (one group of islands, substep_rule.hpp).
+void recordSubstepStart(SolverWorkspace& workspace, std::span<const std::uint32_t> records);
 
 /// @brief Applies every contact's accumulated impulses (the warm start), at the start of a substep,
 /// in the order of a pass (the round contacts, then the others). With @p accumulate off, instead
@@ -391,6 +404,9 @@ void warmStartContact(SolverWorkspace& workspace, std::uint32_t index);
 /// from the last step, with other rows), not with joints (a joint pass changes
 /// the velocities too), and not without accumulated impulses.
 void warmStartFromLastSubstep(SolverWorkspace& workspace);
+
+/// @brief warmStartFromLastSubstep() for the solver records @p records alone (one group of islands, substep_rule.hpp).
+void warmStartFromLastSubstep(SolverWorkspace& workspace, std::span<const std::uint32_t> records);
 
 /// @brief One Gauss–Seidel pass over all contacts: the round ones in their order, then the
 /// others in theirs ("The order of a pass", SolverContact).

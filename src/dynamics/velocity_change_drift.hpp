@@ -61,6 +61,9 @@
 /// where it started with every integrator, because Δv = −h_s·a.
 #pragma once
 
+#include <cstdint>
+#include <span>
+
 #include "core/world_settings.hpp"
 #include "dynamics/contact_solver.hpp"
 
@@ -78,5 +81,10 @@ namespace stepwise {
 /// velocities are first written back to its object (copyVelocitiesOut() for
 /// that record), in the same pass over the bodies.
 void driftByVelocityChange(SolverWorkspace& workspace, Real h, IntegratorKind integrator, bool lastSubstep);
+
+/// @brief driftByVelocityChange() for the solver records @p records alone (one group of islands,
+/// substep_rule.hpp): each record's drift reads and writes that record and its body only.
+void driftByVelocityChange(SolverWorkspace& workspace, std::span<const std::uint32_t> records, Real h,
+                           IntegratorKind integrator, bool lastSubstep);
 
 }  // namespace stepwise

@@ -6,12 +6,37 @@
 
 namespace stepwise {
 
+namespace {
+
+/// recordSubstepStart() of record @p i.
+inline void recordStartOf(SolverWorkspace& workspace, std::size_t i) {
+    const DynamicObject& body = workspace.dynamics[workspace.recordBody[i]];
+    workspace.substepStart[i] = {body.velocity, body.angularVelocity};
+}
+
+/// warmStartFromLastSubstep() of record @p i.
+inline void warmStartRecordFromLastSubstep(SolverWorkspace& workspace, std::size_t i) {
+    SolverBody& record = workspace.bodies[i];
+    BodyVelocity& start = workspace.substepStart[i];
+    // What the contacts did to this body in the last substep: Σ_c λ_c·M⁻¹J_cᵀ (contact_solver.hpp).
+    const Vec3 change = record.velocity - start.velocity;
+    const Vec3 turn = record.angularVelocity - start.angularVelocity;
+    const DynamicObject& body = workspace.dynamics[workspace.recordBody[i]];
+    start = {body.velocity, body.angularVelocity};
+    record.velocity = body.velocity + change;
+    record.angularVelocity = body.angularVelocity + turn;
+}
+
+}  // namespace
+
 void recordSubstepStart(SolverWorkspace& workspace) {
     workspace.substepStart.resize(workspace.bodies.size());
-    for (std::size_t i = 1; i < workspace.bodies.size(); ++i) {
-        const DynamicObject& body = workspace.dynamics[workspace.recordBody[i]];
-        workspace.substepStart[i] = {body.velocity, body.angularVelocity};
-    }
+    for (std::size_t i = 1; i < workspace.bodies.size(); ++i) recordStartOf(workspace, i);
+}
+
+void recordSubstepStart(SolverWorkspace& workspace, std::span<const std::uint32_t> records) {
+    workspace.substepStart.resize(workspace.bodies.size());
+    for (const std::uint32_t i : records) recordStartOf(workspace, i);
 }
 
 void warmStartContacts(SolverWorkspace& workspace, bool accumulate) {
@@ -42,17 +67,11 @@ void warmStartContact(SolverWorkspace& workspace, std::uint32_t index) {
 }
 
 void warmStartFromLastSubstep(SolverWorkspace& workspace) {
-    for (std::size_t i = 1; i < workspace.bodies.size(); ++i) {
-        SolverBody& record = workspace.bodies[i];
-        BodyVelocity& start = workspace.substepStart[i];
-        // What the contacts did to this body in the last substep: Σ_c λ_c·M⁻¹J_cᵀ (contact_solver.hpp).
-        const Vec3 change = record.velocity - start.velocity;
-        const Vec3 turn = record.angularVelocity - start.angularVelocity;
-        const DynamicObject& body = workspace.dynamics[workspace.recordBody[i]];
-        start = {body.velocity, body.angularVelocity};
-        record.velocity = body.velocity + change;
-        record.angularVelocity = body.angularVelocity + turn;
-    }
+    for (std::size_t i = 1; i < workspace.bodies.size(); ++i) warmStartRecordFromLastSubstep(workspace, i);
+}
+
+void warmStartFromLastSubstep(SolverWorkspace& workspace, std::span<const std::uint32_t> records) {
+    for (const std::uint32_t i : records) warmStartRecordFromLastSubstep(workspace, i);
 }
 
 }  // namespace stepwise

@@ -326,6 +326,16 @@ void TraceObserver::writePreparedConstraints(const std::string& head, const Worl
                  num(start.approachAtTouch) + " m/s  e " + num(start.restitution) + "  warm j " +
                  num(c.normalImpulse) + " N*s");
     }
+    // SubstepsPerIsland=true: each island's count and the rule's inputs (src/dynamics/substep_rule.hpp)
+    for (const IslandSubsteps& island : world.islandSubsteps()) {
+        const std::string& first = bodies[island.firstBody].name;
+        if (!objectSelected(first)) continue;
+        line(head, "island " + first,
+             std::to_string(island.bodies) + " bodies  " + std::to_string(island.contacts) + " contacts  height " +
+                 std::to_string(island.height) + "  mass ratio " + num(island.massRatio) + "  speed " +
+                 num(island.speed) + " m/s  -> " + std::to_string(island.count) + " substeps (" +
+                 substepReasonName(island.reason) + ")");
+    }
 }
 
 /// Per constraint: accumulated impulses and v_n (derived) after the pass; per body: velocity before → after.

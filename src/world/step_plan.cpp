@@ -2,6 +2,7 @@
 /// @brief The rules of the step plan (step_plan.hpp): one small function per decision.
 #include "world/step_plan.hpp"
 
+#include <cstdio>
 #include <string>
 
 #include "collision/broadphase.hpp"
@@ -157,6 +158,26 @@ PlanDecision packedSubstepsOf(const PlanInputs& in, const StepPlan& plan) {
     if (plan.substepForces.runs) return skip("off: forces that follow the bodies are worked out on the objects");
     return run("in a step whose contacts all hold balls (on balls, planes or kinematic bodies at rest): substeps on "
                "the solver's records, objects written once (same bits)");
+}
+
+/// Per-island substeps (src/dynamics/substep_rule.hpp): what acts inside every substep on what it
+/// holds (joints, forces that follow the bodies, a moving kinematic body) keeps the whole scene at Substeps.
+PlanDecision islandSubstepsOf(const PlanInputs& in) {
+    if (in.settings.solver == SolverKind::Impulse) return skip("not in the Impulse pipeline (it has no substeps)");
+    if (!in.settings.substepsPerIsland) return skip("off: SubstepsPerIsland=false, every island runs Substeps");
+    if (!in.joints.empty()) return skip("off: joints act in every substep; every island runs Substeps");
+    if (!in.springs.empty() || !in.attractors.empty()) {
+        return skip("off: springs or attractors act in every substep; every island runs Substeps");
+    }
+    for (const KinematicsObject& body : in.kinematics) {
+        if (body.velocity != Vec3(0) || body.angularVelocity != Vec3(0)) {
+            return skip("off: a kinematic body moves h_s at a time; every island runs Substeps");
+        }
+    }
+    if (!in.settings.accumulateImpulses) return skip("off: AccumulateImpulses=false; every island runs Substeps");
+    if (in.settings.substeps == 1) return skip("off: Substeps=1 leaves nothing to choose");
+    return run("runs (src/dynamics/substep_rule.hpp): each island max(height/P, 2*mass ratio, speed*h/(0.1*size), "
+               "4*h*60 Hz), a power of two, at most Substeps");
 }
 
 PlanDecision idleSkipOf(const PlanInputs& in) {
@@ -321,6 +342,7 @@ StepPlan makeStepPlan(const PlanInputs& in) {
         plan.fastPath = fastPathOf(in, plan);
         plan.packedSubsteps = packedSubstepsOf(in, plan);
     }
+    plan.islandSubsteps = islandSubstepsOf(in);  // changes the numbers when it runs: a setting, not a skip
     return plan;
 }
 
@@ -372,11 +394,49 @@ std::string describeStepPlan(const StepPlan& plan) {
     line("idle step skip", plan.idleSkip);
     line("fast path", plan.fastPath);
     line("packed substeps", plan.packedSubsteps);
+    line("substeps per island", plan.islandSubsteps);
     text += "  broadphase kind       ";
     text += toString(plan.broadphase);
     text += ": ";
     text += plan.broadphaseChoice.reason;
     text += '\n';
+    return text;
+}
+
+std::string describeIslandSubsteps(std::span<const IslandSubsteps> islands, std::span<const DynamicObject> bodies,
+                                   int cap, std::size_t maxLines) {
+    std::string text = "Substeps per island in the first step (at most " + std::to_string(cap) +
+                       "; src/dynamics/substep_rule.hpp):\n";
+    if (islands.empty()) return text + "  none chosen: no island had a contact to solve, or every one got the full count\n";
+    for (int count = cap; count >= 1; --count) {
+        std::size_t islandCount = 0;
+        std::size_t bodyCount = 0;
+        for (const IslandSubsteps& island : islands) {
+            if (island.count != count) continue;
+            ++islandCount;
+            bodyCount += island.bodies;
+        }
+        if (islandCount == 0) continue;
+        text += "  " + std::to_string(count) + " substeps: " + std::to_string(islandCount) +
+                (islandCount == 1 ? " island, " : " islands, ") + std::to_string(bodyCount) +
+                (bodyCount == 1 ? " body\n" : " bodies\n");
+    }
+    char number[32];
+    std::size_t lines = 0;
+    for (const IslandSubsteps& island : islands) {
+        if (lines++ == maxLines) {
+            text += "  ... and " + std::to_string(islands.size() - maxLines) + " more islands\n";
+            break;
+        }
+        text += "  island " + bodies[island.firstBody].name + ": " + std::to_string(island.bodies) +
+                (island.bodies == 1 ? " body, " : " bodies, ") +
+                std::to_string(island.contacts) + " contacts, height " + std::to_string(island.height);
+        std::snprintf(number, sizeof number, "%.3g", double(island.massRatio));
+        text += std::string(", mass ratio ") + number;
+        std::snprintf(number, sizeof number, "%.3g", double(island.speed));
+        text += std::string(", speed ") + number + " m/s -> " + std::to_string(island.count) + " (" +
+                substepReasonName(island.reason) + ")\n";
+    }
     return text;
 }
 

@@ -24,6 +24,7 @@
 #include <string>
 
 #include "dynamics/joints/joint.hpp"
+#include "dynamics/substep_rule.hpp"
 #include "forces/attractor.hpp"
 #include "forces/spring.hpp"
 #include "objects/game_object.hpp"
@@ -78,6 +79,7 @@ struct StepPlan {
     PlanDecision idleSkip;         ///< Does a step with nothing awake and nothing moving return at once?
     PlanDecision fastPath;         ///< Sequential impulse: do the substeps run on the fast path (src/fast/fast_path.hpp)?
     PlanDecision packedSubsteps;   ///< On the fast path: may a step of balls run its substeps on packed records (src/fast/packed_substeps.hpp)?
+    PlanDecision islandSubsteps;   ///< Sequential impulse: does each island get its own count (`SubstepsPerIsland=true`, src/dynamics/substep_rule.hpp)?
     SolverKind solver = SolverKind::SequentialImpulse; ///< The pipeline the scene runs (pipelineOrder()).
     int substeps = 1;              ///< Substeps of a sequential-impulse step.
     BroadphaseKind broadphase = BroadphaseKind::Auto; ///< The broadphase the scene asks for.
@@ -160,6 +162,14 @@ struct PlanInputs {
 ///   substeps on the contact solver's packed records and writes the objects
 ///   once, at the end (src/fast/packed_substeps.hpp). Which road a step takes
 ///   is decided each step, after the contacts are found.
+/// - **Substeps per island** (`SubstepsPerIsland=true`): not a skip, a
+///   setting that changes the numbers of the islands it gives fewer than
+///   `Substeps` (src/dynamics/substep_rule.hpp). It runs unless the scene has
+///   joints, springs or attractors, a moving kinematic body, or
+///   `AccumulateImpulses=false`: those act inside every substep, and the
+///   whole scene then keeps `Substeps`. A step in which some island gets
+///   fewer runs its groups of islands on the plain loop (the fast path then
+///   waits for a step in which every island gets the full count).
 /// - **Broadphase**: `Auto` takes brute force below kAutoBruteForceBelow
 ///   dynamic bodies (chooseBroadphase()); every broadphase returns the same
 ///   pairs in the same order.
@@ -173,6 +183,15 @@ StepPlan makeStepPlan(const PlanInputs& inputs);
 /// N substeps"), then the stages of the other pipeline, then one line per
 /// sub-decision, each with its reason (what `stepwise run --explain` prints).
 std::string describeStepPlan(const StepPlan& plan);
+
+/// @brief The islands of one step and the substeps each got, with the rule's inputs and the
+/// term that decided (what `stepwise run --explain` prints after the plan for the first step):
+/// first how many islands got each count, then one line per island, at most @p maxLines of them.
+/// @param islands  World::islandSubsteps() after a step
+/// @param bodies   the World's dynamic bodies (an island is named by its first body)
+/// @param cap      Substeps
+std::string describeIslandSubsteps(std::span<const IslandSubsteps> islands, std::span<const DynamicObject> bodies,
+                                   int cap, std::size_t maxLines);
 
 /// @brief The viewer's "skipped stages: …" line: the stages of this scene's pipeline
 /// (pipelineOrder(plan.solver), each once) that the plan skips or, once a step

@@ -14,6 +14,7 @@
 #include "core/limits.hpp"
 #include "dynamics/islands.hpp"
 #include "dynamics/kinematic_motion.hpp"
+#include "dynamics/substep_rule.hpp"
 #include "dynamics/velocity_change_drift.hpp"
 #include "fast/fast_path.hpp"  // the one door into the fast path (src/fast/)
 #include "forces/apply_forces.hpp"
@@ -286,6 +287,10 @@ void World::stepWithSequentialImpulses() {
                      narrowphaseWorkspace_, settings_.narrowphase);
     });
 
+    const SubstepRuleInputs ruleInputs{settings_.substeps, settings_.velocityIterations, h, settings_.integrator,
+                                       settings_.contactHertz};
+    bool perIsland = false;  // some island runs fewer than Substeps this step
+
     // 4. Prepare: contacts and joints → constraints; an awake body wakes the islands it touches
     //    (src/dynamics/prepare_contacts.cpp, src/dynamics/joints/joint.cpp, src/dynamics/islands.cpp)
     runStage(Stage::PrepareConstraints, [&] {
@@ -294,12 +299,19 @@ void World::stepWithSequentialImpulses() {
         // A joint's or a spring's anchor on a ball turns with it; nothing else inside a step reads how a ball is turned
         solverWorkspace_.ballsTurnOnce = links_.empty() && springs_.empty();
         if (plan_.jointSolver.runs) prepareJoints(bodies(), joints_, settings_.warmStarting, jointWorkspace_);
+        // Each island's substeps, from this step's contacts (src/dynamics/substep_rule.hpp)
+        islandRuleRan_ = plan_.islandSubsteps.runs;
+        perIsland = islandRuleRan_ && chooseIslandSubsteps(bodies(), contacts_, ruleInputs, substepGroups_);
+        if (perIsland) splitSolverWork(solverWorkspace_, substepGroups_);
     });
 
     // 5–7. The substeps: integrate, warm start, solve, move, relax.
     //      The fast path runs them with the same numbers (src/fast/); with an observer the plain loop does,
     //      so that what a student watches is the textbook step.
-    if (plan_.fastPath.runs && observer_ == nullptr) {
+    //      With an island given fewer than Substeps, each group of islands runs its own count (runIslandGroups()).
+    if (perIsland) {
+        runIslandGroups(forces);
+    } else if (plan_.fastPath.runs && observer_ == nullptr) {
         runFastPath(forces, contactSettings, jointSettings);
     } else {
         for (int substep = 0; substep < settings_.substeps; ++substep) {
@@ -354,6 +366,67 @@ void World::stepWithSequentialImpulses() {
     if (settings_.sleeping) {
         runStage(Stage::Sleep, [&] { asleep_ = updateSleep(bodies(), contacts_, links_, settings_, islandWorkspace_); });
     }
+}
+
+/// Stages 5–7 for each group of islands that share a count n (src/dynamics/substep_rule.hpp): the
+/// plain loop above with h_s = h/n, on the group's bodies, solver records and contacts alone.
+///
+/// The groups share no body and no contact, and each stage of a substep reads only the state of
+/// the bodies its group holds (and the kinematic bodies and planes, which do not move in a scene
+/// the rule runs in: step_plan.hpp), so running one group's substeps after another's gives what
+/// running them side by side would. Within a group every list keeps the order of the whole step's,
+/// so an island given the full count computes the numbers of `SubstepsPerIsland=false`.
+void World::runIslandGroups(const AccelerationFunction& forces) {
+    const Real h = settings_.timeStep;
+    SubstepGroups& g = substepGroups_;
+    SolverWorkspace& w = solverWorkspace_;
+    // The whole step's pass lists are set aside; each group's slice stands in for them in turn
+    std::swap(w.roundContacts, g.allRound);
+    std::swap(w.otherContacts, g.allOther);
+    for (std::size_t group = 0; group < g.counts.size(); ++group) {
+        const int count = g.counts[group];
+        const Real hs = h / Real(count);
+        // The contact frequency is capped at a quarter of this group's substep rate (contactHertzInUse())
+        WorldSettings groupSettings = settings_;
+        groupSettings.substeps = count;
+        const ContactSolverSettings contactSettings = makeContactSolverSettings(groupSettings, hs);
+        const std::span<const std::uint32_t> groupBodies = groupSlice(g.groupBodies, g.bodyStart, group);
+        const std::span<const std::uint32_t> records = groupSlice(g.groupRecords, g.recordStart, group);
+        const std::span<const std::uint32_t> round = groupSlice(g.groupRound, g.roundStart, group);
+        const std::span<const std::uint32_t> other = groupSlice(g.groupOther, g.otherStart, group);
+        w.roundContacts.assign(round.begin(), round.end());
+        w.otherContacts.assign(other.begin(), other.end());
+        groupSubsteps_ = count;
+        for (int substep = 0; substep < count; ++substep) {
+            substep_ = substep;
+            runStage(Stage::Integrate, [&] {
+                recordPoses(bodies(), w, groupBodies);
+                for (const std::uint32_t i : groupBodies) {
+                    integrateBodies(settings_.integrator, std::span(&dynamics_[i], 1), hs, forces);
+                }
+            });
+            runStage(Stage::SolveConstraints, [&] {
+                if (substep > 0) {  // the plan runs the rule only with accumulated impulses and no joints
+                    warmStartFromLastSubstep(w, records);
+                } else {
+                    recordSubstepStart(w, records);
+                    copyVelocitiesIn(w, records);
+                    warmStartContacts(w, settings_.accumulateImpulses);
+                }
+                for (int pass = 0; pass < settings_.velocityIterations; ++pass) solveContacts(w, contactSettings, true);
+                driftByVelocityChange(w, records, hs, settings_.integrator, substep + 1 == count);
+            });
+            runStage(Stage::RelaxConstraints, [&] {
+                recordKinematicPoses(bodies(), w);
+                for (int pass = 0; pass < settings_.relaxIterations; ++pass) solveContacts(w, contactSettings, false);
+                copyVelocitiesOut(w, records);
+            });
+        }
+    }
+    std::swap(w.roundContacts, g.allRound);
+    std::swap(w.otherContacts, g.allOther);
+    substep_ = -1;
+    groupSubsteps_ = 0;
 }
 
 /// The warm start of a substep: the impulses the constraints ended the last substep (or step) with,
@@ -425,7 +498,9 @@ void World::runStage(Stage stage, StageBody&& body) {
         event.stage = stage;
         event.step = stepCount_ + 1;
         event.substep = substep_;
-        event.substeps = settings_.solver == SolverKind::SequentialImpulse ? settings_.substeps : 1;
+        event.substeps = groupSubsteps_ > 0                                  ? groupSubsteps_
+                         : settings_.solver == SolverKind::SequentialImpulse ? settings_.substeps
+                                                                             : 1;
         event.stepStartTime = time_;
         event.timeStep = settings_.timeStep;
         observer_->beforeStage(event, *this);

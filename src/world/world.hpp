@@ -20,6 +20,7 @@
 #include "dynamics/impulse_resolver.hpp"
 #include "dynamics/islands.hpp"
 #include "dynamics/joints/joint.hpp"
+#include "dynamics/substep_rule.hpp"
 #include "forces/apply_forces.hpp"
 #include "objects/body_set.hpp"
 #include "world/scene.hpp"
@@ -99,6 +100,11 @@ public:
     /// @brief How many steps so far ran their substeps on the fast path, and how many of those on
     /// its packed records (src/fast/fast_path.hpp); the plain path took the others.
     FastPathCounts fastPathCounts() const;
+    /// @brief The islands of the last step and the substeps each ran (`SubstepsPerIsland=true`,
+    /// src/dynamics/substep_rule.hpp); empty when the rule did not run in that step.
+    std::span<const IslandSubsteps> islandSubsteps() const {
+        return islandRuleRan_ ? std::span<const IslandSubsteps>(substepGroups_.islands) : std::span<const IslandSubsteps>{};
+    }
     /// @brief Threads the narrowphase uses (the World's `Threads`, 0 resolved to the hardware's count).
     unsigned threadCount() const { return threadPool_->threadCount(); }
     /// @brief Fast bodies the continuous stage moved back to their time of impact in the last step.
@@ -131,6 +137,7 @@ private:
     void solvePass(const ContactSolverSettings& contactSettings, const JointSolverSettings& jointSettings, bool useBias);
     void runFastPath(const AccelerationFunction& forces, const ContactSolverSettings& contactSettings,
                      const JointSolverSettings& jointSettings);
+    void runIslandGroups(const AccelerationFunction& forces);
     BodySet bodies();
 
     WorldSettings settings_;
@@ -162,10 +169,13 @@ private:
     std::unique_ptr<ThreadPool> threadPool_;  ///< Created once here; a pointer so that the World can be moved.
     NarrowphaseWorkspace narrowphaseWorkspace_;
     SweepWorkspace sweepWorkspace_;
+    SubstepGroups substepGroups_;  ///< This step's islands, their counts and groups (src/dynamics/substep_rule.hpp).
+    bool islandRuleRan_ = false;   ///< The rule chose the counts of the last step (islandSubsteps()).
 
     StageRecords stageRecords_{};
     StepObserver* observer_ = nullptr;
     int substep_ = -1;  ///< Substep being run, −1 outside the substep loop (for StageEvent).
+    int groupSubsteps_ = 0;  ///< Substeps of the group of islands being run, 0 outside one (for StageEvent).
     Real time_ = 0;
     /// Steps completed before the one now running. Steps count from 1, so while step N runs
     /// (from t = (N − 1)·h) this is N − 1: in gdb, `p stepCount_` prints 27 inside step 28, the
