@@ -24,9 +24,16 @@ bool applyRestitution(SolverWorkspace& workspace) {
     //    record's velocity change, from zero; a static record keeps its zero inverse mass.
     std::vector<std::uint32_t>& pressed = workspace.pressed;
     pressed.clear();
+    bool elastic = false;  // does any of them bounce at all?
     for (std::uint32_t i = 0; i < workspace.contacts.size(); ++i) {
-        if (workspace.contacts[i].maxNormalImpulse > Real(0) && !workspace.starts[i].carriesLoad) pressed.push_back(i);
+        if (workspace.contacts[i].maxNormalImpulse > Real(0) && !workspace.starts[i].carriesLoad) {
+            pressed.push_back(i);
+            elastic = elastic || workspace.starts[i].elasticity > Real(0);
+        }
     }
+    // With e = 0 everywhere (a pile of dead boxes) step 3 below applies nothing: Poisson's law
+    // asks for no rebound, so the compression need not be measured either.
+    if (!elastic) return false;
     std::vector<SolverBody>& change = workspace.impactBodies;
     change = workspace.bodies;
     for (SolverBody& record : change) record.velocity = record.angularVelocity = Vec3(0);

@@ -2,7 +2,9 @@
 /// @brief The end of the step: each contact's impulses kept, by key, for the next step's warm start.
 #include "dynamics/contact_solver.hpp"
 
-#include <algorithm>
+#include <span>
+
+#include "core/insertion_sort.hpp"
 
 #include "objects/inertia.hpp"
 
@@ -22,11 +24,10 @@ void storeContactImpulses(std::span<const Contact> contacts, SolverWorkspace& wo
         }
     }
     // In key order for next step's lookups. The narrowphase's order is the keys' order but for
-    // the points of one pair, whose feature ids need not ascend: most steps there is nothing to sort.
+    // the points of one pair, whose feature ids need not ascend (a box's manifold): each entry is
+    // at most a pair's few points from its place, so insertion sort puts them right in O(n).
     const auto byKey = [](const CachedImpulse& x, const CachedImpulse& y) { return x.key < y.key; };
-    if (!std::is_sorted(workspace.currentImpulses.begin(), workspace.currentImpulses.end(), byKey)) {
-        std::sort(workspace.currentImpulses.begin(), workspace.currentImpulses.end(), byKey);
-    }
+    insertionSort(std::span(workspace.currentImpulses), byKey);
     std::swap(workspace.previousImpulses, workspace.currentImpulses);
     // ω was updated alongside L with the step's fixed I⁻¹; make them agree exactly again.
     // Once per body in a contact: the result depends only on L and the orientation.
