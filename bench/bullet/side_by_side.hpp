@@ -18,7 +18,7 @@ struct SideBySideOptions {
     std::optional<std::string> sweepCsvPath; ///< --sweep-csv PATH: the rain sweep's runs as CSV (for the plot).
     std::optional<std::string> ratiosCsvPath; ///< --ratios-csv PATH: each scene's times, speed ratio and accuracy as CSV.
     int rainSteps = 600;                     ///< --steps N: steps of each sphere rain (issue #7: 600).
-    /// --scenarios: which of rain, rain-sweep, stacks, free-box, bounce, incline, reference,
+    /// --scenarios: which of rain, rain-sweep, stacks, pyramid-sweep, free-box, bounce, incline, reference,
     /// wall-rain, box-pile, chain, ragdoll to run (default all).
     std::vector<std::string> scenarios;
 };
