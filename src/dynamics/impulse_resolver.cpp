@@ -31,14 +31,30 @@ ContactKey keyOf(const Contact& contact) {
     return {contact.a, (static_cast<std::uint32_t>(contact.b.kind) << kKindShift) | contact.b.index, contact.featureId};
 }
 
+namespace {
+
+/// How far behind the last match a lookup first searches: more than the points of one pair's
+/// manifold (at most 8, a box's face clipped against a face).
+constexpr std::size_t kCacheLookBack = 16;
+
+}  // namespace
+
 const CachedImpulse* findCachedImpulse(const std::vector<CachedImpulse>& cache, const ContactKey& key,
                                        std::size_t& next) {
     if (next < cache.size() && cache[next].key == key) return &cache[next++];
     const bool ahead = next < cache.size() && cache[next].key < key;
-    const auto from = ahead ? cache.begin() + static_cast<std::ptrdiff_t>(next) : cache.begin();
-    const auto found = std::lower_bound(from, cache.end(), key,
+    // A key just behind: a point of the same pair, whose feature ids need not ascend (a box's
+    // manifold). Its entry lies within a manifold's few points before `next`.
+    const std::size_t back = next > kCacheLookBack ? next - kCacheLookBack : 0;
+    const bool justBehind = !ahead && back < cache.size() && cache[back].key <= key;
+    // Not ahead: the key sorts before cache[next] (or next is past the end), so its entry, if any, does too.
+    const auto from = ahead ? cache.begin() + static_cast<std::ptrdiff_t>(next)
+                      : justBehind ? cache.begin() + static_cast<std::ptrdiff_t>(back)
+                                   : cache.begin();
+    const auto to = ahead ? cache.end() : cache.begin() + static_cast<std::ptrdiff_t>(std::min(next, cache.size()));
+    const auto found = std::lower_bound(from, to, key,
                                         [](const CachedImpulse& entry, const ContactKey& k) { return entry.key < k; });
-    if (found == cache.end() || found->key != key) return nullptr;
+    if (found == to || found->key != key) return nullptr;
     next = static_cast<std::size_t>(found - cache.begin()) + 1;
     return &*found;
 }

@@ -127,7 +127,8 @@ const CachedImpulse* findCachedImpulse(const std::vector<CachedImpulse>& cache, 
 /// Each contact found again is usually the entry right after the last one
 /// found, so that entry is compared first, and a search is needed only for a
 /// new contact or one out of order (then from @p next on when the key lies
-/// ahead, over the whole cache otherwise). Finds exactly what the plain
+/// ahead, among the few entries just behind @p next when it lies there, as
+/// another point of the same pair does, and over the whole cache otherwise). Finds exactly what the plain
 /// search finds, in O(1) instead of O(log n) for most contacts.
 const CachedImpulse* findCachedImpulse(const std::vector<CachedImpulse>& cache, const ContactKey& key,
                                        std::size_t& next);
