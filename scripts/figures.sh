@@ -52,6 +52,7 @@ figures=(
     "07a-warm-starting.png:warm_starting"
     "08-soft-contact.png:soft_contact"
     "08a-waves.png:waves"
+    "08a-colours.png:colours"
     "09-stability-limit.png:stability_limit"
     "10-gjk-bounds.png:gjk_bounds"
     "11-mpr-depth.png:mpr_depth"
@@ -169,6 +170,11 @@ EOF
 waves() {
     "$figures_program" waves 120 > "$work/waves.dat"
     draw 08a-waves.gp "$1"
+}
+
+colours() {
+    "$figures_program" colours 300 > "$work/colours.dat"
+    draw 08a-colours.gp "$1"
 }
 
 stability_limit() {

@@ -18,6 +18,7 @@
 ///   stepwise-figures sat-axes           lecture 5: both boxes' shadows on each of the 15 axes
 ///   stepwise-figures clipping           lecture 6: the incident face clipped by each side plane in turn
 ///   stepwise-figures waves              appendix 8a: the waves and batches of the 1000-ball rain
+///   stepwise-figures colours            appendix 8a: waves against a greedy colouring, four scenes
 ///   stepwise-figures gjk-bounds         lecture 10: GJK's upper and lower bounds on the distance, per iteration
 ///   stepwise-figures mpr-depth          lecture 11: SAT, EPA and MPR's depth and normal as a box slides off a table
 #include <algorithm>
@@ -38,7 +39,10 @@
 #include "collision/mpr.hpp"
 #include "config/scene_loader.hpp"
 #include "dynamics/contact_solver.hpp"
+#include "fast/box_contact_lanes.hpp"
+#include "fast/contact_waves.hpp"
 #include "fast/fast_workspace.hpp"
+#include "fast/parallel_waves.hpp"
 #include "fast/round_contact_lanes.hpp"
 #include "world/object_name.hpp"
 #include "world/world.hpp"
@@ -427,6 +431,143 @@ int waves(std::uint64_t step) {
     return 0;
 }
 
+/// One pass's list of contacts put in colours: per colour, how many contacts it holds.
+struct Colouring {
+    std::vector<std::size_t> sizes;  ///< Contacts per colour (wave), in the order the pass runs them.
+    std::size_t splitContacts = 0;   ///< Contacts in colours of at least kParallelWaveBatches batches.
+};
+
+/// Contacts of a colour that fill at least kParallelWaveBatches batches of kLanes: a wave the threads split.
+bool wideEnoughToSplit(std::size_t contacts) {
+    return (contacts + kLanes - 1) / kLanes >= kParallelWaveBatches;
+}
+
+/// Fails unless no two contacts of one colour share a dynamic body (record 0, the static one, is shared freely).
+void requireColouring(const SolverWorkspace& solver, const std::vector<std::uint32_t>& list,
+                      const std::vector<std::uint32_t>& colourOf, const char* what) {
+    std::vector<std::vector<bool>> used(solver.bodies.size());
+    for (std::size_t k = 0; k < list.size(); ++k) {
+        const SolverContact& c = solver.contacts[list[k]];
+        for (const std::uint32_t body : {c.bodyA, c.bodyB}) {
+            if (body == kStaticSolverBody) continue;
+            if (used[body].size() <= colourOf[k]) used[body].resize(colourOf[k] + 1, false);
+            if (used[body][colourOf[k]]) throw FigureError(std::string(what) + ": two contacts of one colour share a body");
+            used[body][colourOf[k]] = true;
+        }
+    }
+}
+
+/// The engine's waves of @p list: scheduleWaves() (contact_waves.hpp), as batchRoundContacts() and
+/// batchBoxContacts() call it. Checked to be a colouring.
+Colouring engineWaves(const SolverWorkspace& solver, const std::vector<std::uint32_t>& list) {
+    FastWorkspace fast;
+    scheduleWaves(solver, list, fast);
+    requireColouring(solver, list, fast.waveOf, "the waves");
+    Colouring result;
+    for (std::uint32_t wave = 0; wave < fast.waves; ++wave) {
+        const std::size_t size = fast.waveStart[wave] - (wave == 0 ? 0 : fast.waveStart[wave - 1]);
+        result.sizes.push_back(size);
+    }
+    return result;
+}
+
+/// A greedy colouring of @p list, for comparison only (the engine has none): walking the contacts
+/// in order, each takes the smallest colour that no earlier contact of either of its dynamic bodies
+/// has, as Box2D v3's constraint graph does (without its cap on the number of colours).
+Colouring greedyColours(const SolverWorkspace& solver, const std::vector<std::uint32_t>& list) {
+    std::vector<std::vector<bool>> taken(solver.bodies.size());  // per record: the colours its contacts have
+    std::vector<std::uint32_t> colourOf(list.size());
+    Colouring result;
+    for (std::size_t k = 0; k < list.size(); ++k) {
+        const SolverContact& c = solver.contacts[list[k]];
+        const auto isTaken = [&](std::uint32_t body, std::uint32_t colour) {
+            return body != kStaticSolverBody && colour < taken[body].size() && taken[body][colour];
+        };
+        std::uint32_t colour = 0;
+        while (isTaken(c.bodyA, colour) || isTaken(c.bodyB, colour)) ++colour;
+        for (const std::uint32_t body : {c.bodyA, c.bodyB}) {
+            if (body == kStaticSolverBody) continue;
+            if (taken[body].size() <= colour) taken[body].resize(colour + 1, false);
+            taken[body][colour] = true;
+        }
+        colourOf[k] = colour;
+        if (result.sizes.size() <= colour) result.sizes.resize(colour + 1, 0);
+        ++result.sizes[colour];
+    }
+    requireColouring(solver, list, colourOf, "the greedy colouring");
+    return result;
+}
+
+/// The round list's colours, then the other list's (the plain pass solves the round contacts first),
+/// and how many contacts sit in colours the threads would split. The other list's waves are split
+/// only when they are put in lanes at all (@p boxesInLanes, batchBoxContacts()).
+Colouring bothLists(const SolverWorkspace& solver, Colouring (*colour)(const SolverWorkspace&, const std::vector<std::uint32_t>&),
+                    bool boxesInLanes) {
+    Colouring round = colour(solver, solver.roundContacts);
+    const Colouring other = colour(solver, solver.otherContacts);
+    for (const std::size_t size : round.sizes)
+        if (wideEnoughToSplit(size)) round.splitContacts += size;
+    for (const std::size_t size : other.sizes)
+        if (boxesInLanes && wideEnoughToSplit(size)) round.splitContacts += size;
+    round.sizes.insert(round.sizes.end(), other.sizes.begin(), other.sizes.end());
+    return round;
+}
+
+/// Four scenes at step @p step: each contact list of the step in the engine's waves and in a greedy
+/// colouring. First block: one line per scene; then one block per scene: per colour, its contacts.
+int colours(std::uint64_t step) {
+    struct SceneOfFigure {
+        const char* label;
+        const char* file;
+    };
+    const SceneOfFigure scenes[] = {{"pyramid", "lesson08_pyramid.scene"},
+                                    {"tower", "lesson08_tower.scene"},
+                                    {"box-pile-1k", "bench_box_pile_1k.scene"},
+                                    {"rain-1k", "bench_sphere_rain_1k.scene"}};
+    std::vector<Colouring> waves, greedy;
+    std::printf("# step %llu; a wave of at least %zu batches of %d (%zu contacts) is split between threads\n",
+                static_cast<unsigned long long>(step), kParallelWaveBatches, kLanes, kParallelWaveBatches * kLanes);
+    std::printf("# scene round-contacts box-contacts waves greedy-colours split-in-waves split-in-greedy "
+                "box-contacts-per-wave boxes-in-lanes\n");
+    for (const SceneOfFigure& scene : scenes) {
+        World world = loadWorld(scene.file);
+        for (std::uint64_t i = 1; i < step; ++i) world.step();
+        SolverWorkspace solver;
+        StageWatcher watcher(Stage::PrepareConstraints, [&](const StageEvent&, const World& w) {
+            solver.contacts = w.solverContacts();
+            std::uint32_t records = 1;
+            for (std::uint32_t k = 0; k < solver.contacts.size(); ++k) {
+                const SolverContact& c = solver.contacts[k];
+                (c.rows == kRoundContact ? solver.roundContacts : solver.otherContacts).push_back(k);
+                records = std::max({records, c.bodyA + 1, c.bodyB + 1});
+            }
+            solver.bodies.resize(records);
+            return true;
+        });
+        stepUntil(world, watcher, 1);
+        // batchBoxContacts()'s test: the box contacts go in lanes when their waves hold
+        // kMinBoxContactsPerWave contacts on average.
+        FastWorkspace boxWaves;
+        scheduleWaves(solver, solver.otherContacts, boxWaves);
+        const double perWave = boxWaves.waves == 0 ? 0.0 : double(solver.otherContacts.size()) / double(boxWaves.waves);
+        const bool boxesInLanes = double(solver.otherContacts.size()) >= kMinBoxContactsPerWave * double(boxWaves.waves);
+        waves.push_back(bothLists(solver, engineWaves, boxesInLanes));
+        greedy.push_back(bothLists(solver, greedyColours, boxesInLanes));
+        std::printf("%s %zu %zu %zu %zu %zu %zu %.2f %s\n", scene.label, solver.roundContacts.size(),
+                    solver.otherContacts.size(), waves.back().sizes.size(), greedy.back().sizes.size(),
+                    waves.back().splitContacts, greedy.back().splitContacts, perWave,
+                    solver.otherContacts.empty() ? "-" : (boxesInLanes ? "yes" : "no"));
+    }
+    for (std::size_t s = 0; s < waves.size(); ++s) {
+        std::printf("\n\n# %s: colour contacts-in-wave contacts-in-greedy-colour\n", scenes[s].label);
+        const std::size_t n = std::max(waves[s].sizes.size(), greedy[s].sizes.size());
+        for (std::size_t k = 0; k < n; ++k)
+            std::printf("%zu %zu %zu\n", k, k < waves[s].sizes.size() ? waves[s].sizes[k] : 0,
+                        k < greedy[s].sizes.size() ? greedy[s].sizes[k] : 0);
+    }
+    return 0;
+}
+
 // ------------------------------------------------------------------ lecture 10
 
 /// lesson10_gjk.scene, the narrowphase of step 1: GJK on spike–table and can–table, with the
@@ -517,7 +658,7 @@ int mprDepth() {
 
 int usage() {
     std::fprintf(stderr, "usage: stepwise-figures impulse-geometry | bounce-impulses | sat-axes | clipping | "
-                         "waves [STEP] | gjk-bounds | mpr-depth\n");
+                         "waves [STEP] | colours [STEP] | gjk-bounds | mpr-depth\n");
     return 2;
 }
 
@@ -537,6 +678,11 @@ int main(int argc, char** argv) {
             const long step = argc == 3 ? std::strtol(argv[2], nullptr, 10) : 120;
             if (step < 1) return usage();
             return waves(static_cast<std::uint64_t>(step));
+        }
+        if (command == "colours" && argc <= 3) {
+            const long step = argc == 3 ? std::strtol(argv[2], nullptr, 10) : 300;
+            if (step < 1) return usage();
+            return colours(static_cast<std::uint64_t>(step));
         }
     } catch (const std::exception& error) {
         std::fprintf(stderr, "stepwise-figures %s: %s\n", command.c_str(), error.what());
