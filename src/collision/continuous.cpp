@@ -224,6 +224,16 @@ Real earlierImpact(const Geometry& moving, const Vec3& start, const Aabb& swept,
     return t && *t < earliest ? *t : earliest;
 }
 
+/// The centre of @p moving, on its way from @p start this step, reaches @p other (as a point:
+/// a ball of radius 0 swept along the same path).
+bool centrePasses(const Geometry& moving, const Vec3& start, const Aabb& swept, const Geometry& other) {
+    if (!swept.overlaps(geometryBounds(other))) return false;
+    Geometry centre;
+    centre.type = GeometryType::Sphere;
+    centre.centre = moving.centre;
+    return timeOfImpact(centre, start, other).has_value();
+}
+
 /// Moves @p body back to @p start + t·Δ when t < 1; true when it did. Its velocity stays:
 /// the contact found there next step stops it. (The restitution stage counts on this: after
 /// this stage the solver's records still hold every body's velocity, World::stepWithSequentialImpulses().)
@@ -231,6 +241,21 @@ bool moveBack(DynamicObject& body, const Vec3& start, Real t) {
     if (t >= Real(1)) return false;
     body.position = start + t * (body.position - start);
     return true;
+}
+
+/// Dynamic bodies @p i and @p j are not swept against each other (SweepWorkspace::unsweptPairs).
+bool unswept(const SweepWorkspace& workspace, std::size_t i, std::size_t j) {
+    const std::span<const std::uint64_t> keys = workspace.unsweptPairs;
+    return !keys.empty() && std::binary_search(keys.begin(), keys.end(),
+                                               bodyPairKey(static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j)));
+}
+
+/// Dynamic body @p i is joined to another dynamic body (it is in a key of SweepWorkspace::unsweptPairs).
+bool isJointed(const SweepWorkspace& workspace, std::size_t i) {
+    for (const std::uint64_t key : workspace.unsweptPairs) {
+        if ((key >> 32) == i || (key & 0xffffffffu) == i) return true;
+    }
+    return false;
 }
 
 bool isFast(const DynamicObject& body, const Vec3& start) {
@@ -264,13 +289,16 @@ std::size_t stopFastBodiesAtImpact(const BodySet& bodies, SweepWorkspace& worksp
     for (std::size_t i = 0; i < count; ++i) {
         if (!workspace.fast[i]) continue;
         const Vec3 start = workspace.startPositions[i];
+        const bool jointed = isJointed(workspace, i);
         const Geometry moving = geometryOf(bodies.dynamics[i]);
         const Aabb swept = sweptBounds(moving, start);
         workspace.index.query(swept, static_cast<std::uint32_t>(i), workspace.candidates);
         Real earliest = 1;
         for (const std::uint32_t p : workspace.candidates) {
+            if (p < dynamicCount && (jointed || unswept(workspace, i, p))) continue;  // its joints hold it
             const Geometry other = p < dynamicCount ? geometryOf(bodies.dynamics[p])
                                                     : geometryOf(bodies.kinematics[p - dynamicCount]);
+            if (jointed && !centrePasses(moving, start, swept, other)) continue;
             earliest = earlierImpact(moving, start, swept, other, earliest);
         }
         // No planes: a plane bounds a solid half-space, as thick as can be, so however deep
@@ -290,10 +318,14 @@ std::size_t stopFastBodiesAtImpactBruteForce(const BodySet& bodies, SweepWorkspa
         const Aabb swept = sweptBounds(moving, start);
         Real earliest = 1;
         for (std::size_t j = 0; j < bodies.dynamics.size(); ++j) {
-            if (j != i) earliest = earlierImpact(moving, start, swept, geometryOf(bodies.dynamics[j]), earliest);
+            if (j != i && !isJointed(workspace, i) && !unswept(workspace, i, j)) {
+                earliest = earlierImpact(moving, start, swept, geometryOf(bodies.dynamics[j]), earliest);
+            }
         }
         for (const KinematicsObject& body : bodies.kinematics) {
-            earliest = earlierImpact(moving, start, swept, geometryOf(body), earliest);
+            const Geometry other = geometryOf(body);
+            if (isJointed(workspace, i) && !centrePasses(moving, start, swept, other)) continue;
+            earliest = earlierImpact(moving, start, swept, other, earliest);
         }
         if (moveBack(bodies.dynamics[i], start, earliest)) ++clamped;
     }

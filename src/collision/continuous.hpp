@@ -69,7 +69,9 @@
 /// that one pass (measured in docs/benchmarks.md).
 #pragma once
 
+#include <cstdint>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "collision/continuous_candidates.hpp"
@@ -124,9 +126,23 @@ Separation separation(const Geometry& a, const Geometry& b);
 /// B held still; nothing when it does not, or when they already touch at t = 0.
 std::optional<Real> timeOfImpact(const Geometry& a, const Vec3& start, const Geometry& b);
 
+/// @brief The key of an unordered pair of dynamic bodies @p a, @p b: the smaller index in the high
+/// half. SweepWorkspace::unsweptPairs and JointWorkspace::jointedPairs hold such keys, sorted.
+inline std::uint64_t bodyPairKey(std::uint32_t a, std::uint32_t b) {
+    constexpr unsigned kHalf = 32;
+    return (std::uint64_t(a < b ? a : b) << kHalf) | (a < b ? b : a);
+}
+
 /// @brief The continuous-collision stage's state: the dynamic bodies' positions at the start of
 /// the step, and the reused arrays of its candidate search (no allocation once running).
 struct SweepWorkspace {
+    /// Sorted bodyPairKey()s of the pairs of dynamic bodies that are not swept against each
+    /// other: those joined by a joint that does not let them collide (JointWorkspace::jointedPairs,
+    /// set by the World before each call). Such a pair is not in the contacts either
+    /// (dropJointedPairs()); were it swept, a fast link of a chain would be put back where its
+    /// path met its neighbour's end, which its joint holds it against, and the joint would be torn
+    /// open by the distance it lost (tests/test_joints.cpp, the swinging chain).
+    std::span<const std::uint64_t> unsweptPairs;
     std::vector<Vec3> startPositions;      ///< One per dynamic body, m.
     std::vector<std::uint8_t> fast;        ///< 1 for each dynamic body that is fast this step.
     SweptBoxIndex index;                   ///< The bodies' boxes sorted along one axis (continuous_candidates.hpp).

@@ -347,7 +347,12 @@ void World::stepWithSequentialImpulses() {
     // 7b. A body that moved farther than its half-thickness, through a wall no contact of this
     //     step held, goes back to where its path first touched it (src/collision/continuous.cpp)
     if (settings_.continuousCollision) {
-        runStage(Stage::Continuous, [&] { stopFastBodiesAtImpact(bodies(), sweepWorkspace_); });
+        runStage(Stage::Continuous, [&] {
+            // A jointed pair is not swept against each other, as it is not collided (dropJointedPairs())
+            sweepWorkspace_.unsweptPairs = plan_.jointSolver.runs ? std::span<const std::uint64_t>(jointWorkspace_.jointedPairs)
+                                                                  : std::span<const std::uint64_t>();
+            stopFastBodiesAtImpact(bodies(), sweepWorkspace_);
+        });
     }
 
     // 8. Bounces, once per step, from the approach speed at touch (src/dynamics/restitution.cpp);

@@ -102,7 +102,9 @@ void clearImpulses(Joint& joint) {
 
 Pose poseOf(const DynamicObject& body) { return {body.position, body.orientation}; }
 
-/// One number per unordered pair of dynamic bodies: the smaller index in the high half.
+/// One number per unordered pair of dynamic bodies: the smaller index in the high half. The continuous
+/// stage reads these keys (SweepWorkspace::unsweptPairs), and must build them alike (bodyPairKey(),
+/// collision/continuous.hpp; tests/test_joints.cpp checks the two agree by the swinging chain).
 std::uint64_t pairKey(std::uint32_t a, std::uint32_t b) {
     constexpr unsigned kHalf = 32;
     return (std::uint64_t(std::min(a, b)) << kHalf) | std::max(a, b);

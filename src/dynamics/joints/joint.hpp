@@ -130,7 +130,7 @@ struct JointSolverSettings {
 /// @brief The joints prepared for this step, reused from step to step.
 struct JointWorkspace {
     std::vector<SolverJoint> joints;     ///< One per acting joint (not broken, not asleep).
-    std::vector<std::uint64_t> jointedPairs; ///< Sorted keys of body pairs that must not collide (dropJointedPairs()).
+    std::vector<std::uint64_t> jointedPairs; ///< Sorted keys of body pairs that must not collide (dropJointedPairs()), nor be swept (continuous.hpp).
 };
 
 /// @brief Where a joint's anchors are now, world frame, m.
