@@ -264,7 +264,7 @@ EOF
 
 ## Threads and continuous collision {#threads-and-continuous-collision}
 
-**What it shows.** What running the narrowphase on several threads gains,
+**What it shows.** What running the narrowphase and the contact passes on several threads gains,
 that it does not change the result, and what the continuous-collision
 stage costs. `stepwise_bench_threads` (bench/threads/main.cpp) lets a pile
 of spheres land and the pyramid of `config/lesson08_pyramid.scene` stand,
