@@ -18,14 +18,6 @@ constexpr double kFriction = 0.6;     ///< Boxes and walls alike (combined by pr
 constexpr double kHeadroom = 1.0;     ///< How far the walls reach above the top layer, m.
 constexpr double kFullTurn = 360;     ///< Degrees: each Rotation component is drawn in [0, 360).
 
-void appendStaticBox(std::string& text, const char* name, double x, double y, double z, double sx, double sy,
-                     double sz) {
-    append(text,
-           "KinematicsObject, Name=%s, Shape=Box, Position=(%.4f, %.4f, %.4f), Scale=(%.4f, %.4f, %.4f), "
-           "Color=(0.5, 0.5, 0.5), Elasticity=%.1f, Friction=%.1f\n",
-           name, x, y, z, sx, sy, sz, kElasticity, kFriction);
-}
-
 }  // namespace
 
 std::string boxPileSceneText(std::size_t count, std::uint64_t seed) {
@@ -43,12 +35,7 @@ std::string boxPileSceneText(std::size_t count, std::uint64_t seed) {
     append(text, "# Written by: stepwise-bench pile-scene --count %zu --seed %llu (bench/box_pile_scene.cpp).\n", count,
            static_cast<unsigned long long>(seed));
     text += "World, TimeStep=1/60, Duration=10, Sleep=false\n";
-    // The floor's top face is y = 0; the walls stand on it, outside the square [0, side]².
-    appendStaticBox(text, "floor", side / 2, -t / 2, side / 2, side + 2 * t, t, side + 2 * t);
-    appendStaticBox(text, "wall_x0", -t / 2, height / 2, side / 2, t, height, side + 2 * t);
-    appendStaticBox(text, "wall_x1", side + t / 2, height / 2, side / 2, t, height, side + 2 * t);
-    appendStaticBox(text, "wall_z0", side / 2, height / 2, -t / 2, side, height, t);
-    appendStaticBox(text, "wall_z1", side / 2, height / 2, side + t / 2, side, height, t);
+    appendStaticContainer(text, side, height, t, kElasticity, kFriction);  // floor top at y = 0, walls around [0, side]²
     appendLattice(count, random, kPilePitch, kJitter, [&](std::size_t n, double x, double y, double z, double vx,
                                                           double vz) {
         // One draw per statement: the order of a call's arguments is unspecified.

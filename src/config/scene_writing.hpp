@@ -75,6 +75,25 @@ inline void appendContainer(std::string& text, double side) {
     append(text, "CollisionPlane, Name=wall_z1, Position=(0, 0, %.4f), Normal=(0, 0, -1)\n", side);
 }
 
+/// @brief A floor and four walls of static boxes (KinematicsObject at rest), as a level is built: the
+/// floor's top face at y = 0 and the walls standing on it around the square [0, @p side]², each
+/// @p thickness thick and the walls @p height tall (m), all of elasticity @p elasticity and friction @p friction.
+inline void appendStaticContainer(std::string& text, double side, double height, double thickness, double elasticity,
+                                  double friction) {
+    const double t = thickness;
+    const auto box = [&](const char* name, double x, double y, double z, double sx, double sy, double sz) {
+        append(text,
+               "KinematicsObject, Name=%s, Shape=Box, Position=(%.4f, %.4f, %.4f), Scale=(%.4f, %.4f, %.4f), "
+               "Color=(0.5, 0.5, 0.5), Elasticity=%.1f, Friction=%.1f\n",
+               name, x, y, z, sx, sy, sz, elasticity, friction);
+    };
+    box("floor", side / 2, -t / 2, side / 2, side + 2 * t, t, side + 2 * t);
+    box("wall_x0", -t / 2, height / 2, side / 2, t, height, side + 2 * t);
+    box("wall_x1", side + t / 2, height / 2, side / 2, t, height, side + 2 * t);
+    box("wall_z0", side / 2, height / 2, -t / 2, side, height, t);
+    box("wall_z1", side / 2, height / 2, side + t / 2, side, height, t);
+}
+
 /// @brief @p count bodies on a lattice of columns × columns × kLatticeLayers sites of
 /// pitch @p pitch (m), each jittered by up to @p jitter (m) and given a random horizontal
 /// velocity; `body(n, x, y, z, vx, vz)` writes body n.

@@ -21,8 +21,10 @@
 #include <cstring>
 #include <vector>
 
+#include "dynamics/contact_solver.hpp"
 #include "dynamics/solver_body.hpp"
 #include "fast/lanes.hpp"
+#include "fast/round_contact_lanes.hpp"
 
 namespace stepwise {
 
@@ -86,6 +88,21 @@ STEPWISE_LANES_INLINE void scatter(std::vector<SolverBody>& bodies, const std::u
         SolverBody& record = index[i] == kStaticSolverBody ? discard : bodies[index[i]];
         store(realsOf(record), low[i]);
         std::memcpy(realsOf(record) + kLanes, pairs[i], 2 * sizeof(Real));  // ω_y, ω_z
+    }
+}
+
+/// @brief Copies the accumulated impulses of @p batch's contacts (a RoundBatch or a BoxBatch) back to
+/// @p contacts, lane by lane, skipping the empty lanes: the end of the substeps, for the bounce and
+/// the next step's warm start.
+template <class Batch>
+inline void writeImpulsesBack(const Batch& batch, std::vector<SolverContact>& contacts) {
+    for (int lane = 0; lane < kLanes; ++lane) {
+        if (batch.contact[lane] == kEmptyLane) continue;
+        SolverContact& c = contacts[batch.contact[lane]];
+        c.normalImpulse = batch.normalImpulse[lane];
+        c.tangentImpulse[0] = batch.tangentImpulse0[lane];
+        c.tangentImpulse[1] = batch.tangentImpulse1[lane];
+        c.maxNormalImpulse = batch.maxNormalImpulse[lane];
     }
 }
 

@@ -270,14 +270,7 @@ void solveBoxContactRange(SolverWorkspace& solver, FastWorkspace& fast, const Co
 
 void syncBoxContacts(const FastWorkspace& fast, SolverWorkspace& solver) {
     for (const BoxBatch& batch : fast.boxBatches) {
-        for (int lane = 0; lane < kLanes; ++lane) {
-            if (batch.contact[lane] == kEmptyLane) continue;
-            SolverContact& c = solver.contacts[batch.contact[lane]];
-            c.normalImpulse = batch.normalImpulse[lane];
-            c.tangentImpulse[0] = batch.tangentImpulse0[lane];
-            c.tangentImpulse[1] = batch.tangentImpulse1[lane];
-            c.maxNormalImpulse = batch.maxNormalImpulse[lane];
-        }
+        writeImpulsesBack(batch, solver.contacts);
     }
 }
 

@@ -293,14 +293,7 @@ void syncRoundContacts(const FastWorkspace& fast, SolverWorkspace& solver) {
                 __builtin_prefetch(&solver.contacts[index].maxNormalImpulse, 1);
             }
         }
-        for (int lane = 0; lane < kLanes; ++lane) {
-            if (batch.contact[lane] == kEmptyLane) continue;
-            SolverContact& c = solver.contacts[batch.contact[lane]];
-            c.normalImpulse = batch.normalImpulse[lane];
-            c.tangentImpulse[0] = batch.tangentImpulse0[lane];
-            c.tangentImpulse[1] = batch.tangentImpulse1[lane];
-            c.maxNormalImpulse = batch.maxNormalImpulse[lane];
-        }
+        writeImpulsesBack(batch, solver.contacts);
     }
 }
 
