@@ -9,7 +9,7 @@ set pagination off
 # Substeps count from 1, as stepwise trace counts them ("step 1 [1/16]").
 set $sub = 1
 
-# solveRoundContacts() is built three times (AVX-512, AVX2, any x86-64), and a small "resolver"
+# solveRoundContactRange() is built three times (AVX-512, AVX2, any x86-64), and a small "resolver"
 # picks one copy when the program starts. Stop in main first, so that the resolver has run
 # and the breakpoint below stops only in the copy this processor uses.
 start
@@ -42,7 +42,7 @@ end
 
 # Every substep: a solve pass (useBias true), then a relax pass (false) over the batches.
 # At the relax pass's entry the lanes hold what the solve pass left.
-break stepwise::solveRoundContacts
+break stepwise::solveRoundContactRange
 commands
 silent
 if !useBias

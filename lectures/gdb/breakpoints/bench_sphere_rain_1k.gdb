@@ -10,5 +10,5 @@ set breakpoint pending on
 # stage 4: a thousand balls' contacts become constraints
 break stepwise::prepareContacts
 # stage 6, every substep, on the plain path (the debug build's): one soft pass over the contacts;
-# a copy with FastPath=true runs stepwise::solveRoundContacts instead (appendix 8a)
+# a copy with FastPath=true runs stepwise::solveRoundContactRange instead (appendix 8a)
 break stepwise::solveContacts
