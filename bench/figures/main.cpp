@@ -389,10 +389,11 @@ int clipping() {
 
 // ------------------------------------------------------------------ appendix 8a
 
-/// bench_sphere_rain_1k.scene at step @p step: the round contacts of the step put in waves and
-/// batches by the fast path's own batchRoundContacts(): per wave, its contacts and batches.
-int waves(std::uint64_t step) {
-    World world = loadWorld("bench_sphere_rain_1k.scene");
+/// The contacts of @p file's step @p step as its prepare stage left them: SolverWorkspace::contacts,
+/// the round ones and the others listed in their pass order, and as many (empty) body records as
+/// they name, which is all the wave scheduling reads.
+SolverWorkspace contactsAtStep(const std::string& file, std::uint64_t step) {
+    World world = loadWorld(file);
     for (std::uint64_t i = 1; i < step; ++i) world.step();
     SolverWorkspace solver;
     StageWatcher watcher(Stage::PrepareConstraints, [&](const StageEvent&, const World& w) {
@@ -400,13 +401,20 @@ int waves(std::uint64_t step) {
         std::uint32_t records = 1;
         for (std::uint32_t k = 0; k < solver.contacts.size(); ++k) {
             const SolverContact& c = solver.contacts[k];
-            if (c.rows == kRoundContact) solver.roundContacts.push_back(k);
+            (c.rows == kRoundContact ? solver.roundContacts : solver.otherContacts).push_back(k);
             records = std::max({records, c.bodyA + 1, c.bodyB + 1});
         }
         solver.bodies.resize(records);
         return true;
     });
     stepUntil(world, watcher, 1);
+    return solver;
+}
+
+/// bench_sphere_rain_1k.scene at step @p step: the round contacts of the step put in waves and
+/// batches by the fast path's own batchRoundContacts(): per wave, its contacts and batches.
+int waves(std::uint64_t step) {
+    const SolverWorkspace solver = contactsAtStep("bench_sphere_rain_1k.scene", step);
     FastWorkspace fast;
     batchRoundContacts(solver, fast);
     std::printf("# bench_sphere_rain_1k.scene, step %llu: %zu round contacts in %u waves, %zu batches of %d lanes\n",
@@ -530,21 +538,7 @@ int colours(std::uint64_t step) {
     std::printf("# scene round-contacts box-contacts waves greedy-colours split-in-waves split-in-greedy "
                 "box-contacts-per-wave boxes-in-lanes\n");
     for (const SceneOfFigure& scene : scenes) {
-        World world = loadWorld(scene.file);
-        for (std::uint64_t i = 1; i < step; ++i) world.step();
-        SolverWorkspace solver;
-        StageWatcher watcher(Stage::PrepareConstraints, [&](const StageEvent&, const World& w) {
-            solver.contacts = w.solverContacts();
-            std::uint32_t records = 1;
-            for (std::uint32_t k = 0; k < solver.contacts.size(); ++k) {
-                const SolverContact& c = solver.contacts[k];
-                (c.rows == kRoundContact ? solver.roundContacts : solver.otherContacts).push_back(k);
-                records = std::max({records, c.bodyA + 1, c.bodyB + 1});
-            }
-            solver.bodies.resize(records);
-            return true;
-        });
-        stepUntil(world, watcher, 1);
+        const SolverWorkspace solver = contactsAtStep(scene.file, step);
         // batchBoxContacts()'s test: the box contacts go in lanes when their waves hold
         // kMinBoxContactsPerWave contacts on average.
         FastWorkspace boxWaves;

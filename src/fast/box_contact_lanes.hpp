@@ -106,9 +106,9 @@ struct alignas(kCacheLine) BoxAnchorBatch {
 };
 
 /// @brief The fewest contacts with stored rows a wave must hold on average for the lanes to be
-/// taken. A batch of four lanes costs about what 1.3 contacts solved one at a time cost (the
-/// tower of 20 boxes, 1.05 contacts a wave, solved 0.8 times as fast in lanes as one at a time);
-/// at two a wave the lanes are ahead.
+/// taken. A batch of four lanes costs about what 1.3 contacts solved one at a time cost (measured
+/// on the tower, docs/performance-history.md, "Speed beyond the sphere rain"); at two a wave the
+/// lanes are ahead.
 inline constexpr double kMinBoxContactsPerWave = 2;
 
 /// @brief Puts the contacts with stored rows (SolverWorkspace::otherContacts, in order) in waves and,
