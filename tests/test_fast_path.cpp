@@ -110,7 +110,9 @@ TEST_CASE("Waves: no wave holds two contacts of one dynamic body, each body meet
 
     std::vector<int> solved(workspace.contacts.size(), 0);
     std::vector<std::uint32_t> waveRecords;                                  // the dynamic records of the current wave
-    std::vector<std::int64_t> lastContact(workspace.bodies.size(), -1);      // per record: its last contact solved so far
+    std::vector<std::int64_t> lastContact(workspace.bodies.size(), -1);      // per record: its last contact's place in the pass
+    std::vector<std::int64_t> position(workspace.contacts.size(), -1);       // each contact's place in the pass order
+    for (std::size_t k = 0; k < workspace.roundContacts.size(); ++k) position[workspace.roundContacts[k]] = std::int64_t(k);
     for (std::size_t n = 0; n < fast.roundBatches.size(); ++n) {
         const RoundBatch& batch = fast.roundBatches[n];
         if (n > 0) CHECK(batch.wave >= fast.roundBatches[n - 1].wave);  // wave by wave
@@ -135,8 +137,8 @@ TEST_CASE("Waves: no wave holds two contacts of one dynamic body, each body meet
                 if (record == kStaticSolverBody) continue;
                 waveRecords.push_back(record);
                 INFO("contact " << index << ", record " << record);
-                CHECK(lastContact[record] < std::int64_t(index));  // the body's contacts in their order
-                lastContact[record] = index;
+                CHECK(lastContact[record] < position[index]);  // the body's contacts in the pass's order
+                lastContact[record] = position[index];
             }
         }
     }
@@ -591,8 +593,15 @@ TEST_CASE("Stacks of boxes and a kinematic platform take the fast path with the 
         CHECK(counts.packedSteps == 0);    // box contacts: the road on the objects
         CHECK(counts.boxLaneSteps == 20);  // wide waves: every step's box contacts in lanes
     }
-    SECTION("the tower of 20 boxes (lesson 8)") {
+    SECTION("the tower of 20 boxes (lesson 8), in colour order") {
         Scene scene = loadSceneFile(std::string(STEPWISE_SOURCE_DIR) + "/config/lesson08_tower.scene");
+        const FastPathCounts counts = requireSameOnBothRoads(scene, 60);
+        CHECK(counts.steps == 60);
+        CHECK(counts.boxLaneSteps == 60);  // two colours of ten manifolds each: wide enough for lanes
+    }
+    SECTION("the tower of 20 boxes, in the order found") {
+        Scene scene = loadSceneFile(std::string(STEPWISE_SOURCE_DIR) + "/config/lesson08_tower.scene");
+        scene.settings.contactOrder = ContactOrder::Found;
         const FastPathCounts counts = requireSameOnBothRoads(scene, 60);
         CHECK(counts.steps == 60);
         CHECK(counts.boxLaneSteps == 0);  // a chain: waves too thin, its contacts one at a time
@@ -621,13 +630,18 @@ TEST_CASE("Stacks of boxes and a kinematic platform take the fast path with the 
 TEST_CASE("How full the box lanes are: contacts per wave of the pyramid and the tower", "[fast][lanes]") {
     // Not a timing: how many contacts a wave holds, for the record (the figure the lanes' speed
     // rests on), at the scene's first contacts. A manifold's points share both bodies and fall in
-    // successive waves; a tower is a chain of manifolds, each sharing a box with the next.
+    // successive waves; a tower is a chain of manifolds, each sharing a box with the next. In the
+    // order found, the tower's waves are that chain, one contact each; in colour order its
+    // manifolds take turns, every other one in the same colour, and the waves are the colours.
+    const bool colours = GENERATE(true, false);
+    INFO((colours ? "ContactOrder=Colours" : "ContactOrder=Found"));
     for (const char* name : {"lesson08_pyramid", "lesson08_tower"}) {
         Scene scene = loadSceneFile(std::string(STEPWISE_SOURCE_DIR) + "/config/" + name + ".scene");
         const BodySet bodies{scene.dynamics, scene.kinematics, scene.planes};
         for (DynamicObject& body : scene.dynamics) initialiseMassProperties(body);
         const std::vector<Contact> contacts = contactsOf(bodies);
         SolverWorkspace workspace;
+        workspace.colourOrder = colours;
         prepareContacts(bodies, contacts, {}, scene.settings.timeStep, false, workspace);
         recordPoses(bodies, workspace);
         FastWorkspace fast;
@@ -647,6 +661,12 @@ TEST_CASE("How full the box lanes are: contacts per wave of the pyramid and the 
         REQUIRE(count > 0);
         if (std::string(name) == "lesson08_pyramid") {
             CHECK(waves * 4 < count);  // the pyramid's waves are wide: in lanes
+            requireWavesKeepOrder(fast.boxBatches, workspace.otherContacts, workspace);
+        } else if (colours) {
+            // A manifold's 4 points are in 4 colours (they share both boxes); the floor's and the
+            // manifolds above alternate: 8 colours of 10 contacts, whatever the tower's height.
+            CHECK(waves <= 8);
+            CHECK(waves * 4 < count);
             requireWavesKeepOrder(fast.boxBatches, workspace.otherContacts, workspace);
         } else {
             CHECK(double(count) < kMinBoxContactsPerWave * double(waves));  // the tower's are thin: one at a time

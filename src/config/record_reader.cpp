@@ -272,6 +272,9 @@ private:
             case FieldKind::Narrowphase:
                 readChoice(field, slot, value, wordsOf(kNarrowphaseChoices));
                 break;
+            case FieldKind::ContactOrder:
+                readChoice(field, slot, value, wordsOf(kContactOrderChoices));
+                break;
             case FieldKind::Points:
                 openList_ = &field;
                 openListSlot_ = ref.field;

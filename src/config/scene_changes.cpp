@@ -66,6 +66,7 @@ int choiceMeaning(FieldKind kind, std::size_t index) {
         case FieldKind::Boolean: return kBooleanChoices.at(index).value ? 1 : 0;
         case FieldKind::Compare: return static_cast<int>(kCompareChoices.at(index).value);
         case FieldKind::Narrowphase: return static_cast<int>(kNarrowphaseChoices.at(index).value);
+        case FieldKind::ContactOrder: return static_cast<int>(kContactOrderChoices.at(index).value);
         default: return static_cast<int>(index);
     }
 }

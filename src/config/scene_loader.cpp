@@ -701,6 +701,7 @@ private:
         settings.velocityIterations = count("Iterations", defaults.velocityIterations);
         settings.relaxIterations = count("RelaxIterations", defaults.relaxIterations);
         settings.relaxBallFriction = values.choice<bool>("RelaxBallFriction", kBooleanChoices, defaults.relaxBallFriction);
+        settings.contactOrder = values.choice<ContactOrder>("ContactOrder", kContactOrderChoices, defaults.contactOrder);
         settings.impulseIterations = count("ImpulseIterations", defaults.impulseIterations);
         settings.warmStarting = values.choice<bool>("WarmStarting", kBooleanChoices, defaults.warmStarting);
         settings.accumulateImpulses = values.choice<bool>("AccumulateImpulses", kBooleanChoices, defaults.accumulateImpulses);

@@ -129,6 +129,7 @@ constexpr FieldSpec kWorldFields[] = {
     {"SubstepsPerIsland",   FieldKind::Boolean, kNamedOnly, Range::Any},              // src/dynamics/substep_rule.hpp
     {"Iterations",          FieldKind::Number,  kNamedOnly, Range::Count},            // solve passes per substep
     {"RelaxIterations",     FieldKind::Number,  kNamedOnly, Range::WholeNumber},      // relax passes per substep
+    {"ContactOrder",        FieldKind::ContactOrder, kNamedOnly, Range::Any},         // dynamics/contact_colours.hpp
     {"RelaxBallFriction",   FieldKind::Boolean, kNamedOnly, Range::Any},              // relax passes re-solve a ball's friction
     {"ImpulseIterations",   FieldKind::Number,  kNamedOnly, Range::Count},            // Solver=Impulse passes
     {"WarmStarting",        FieldKind::Boolean, kNamedOnly, Range::Any},
@@ -337,6 +338,12 @@ const std::array<Choice<ExpectCompare>, 3> kCompareChoices = {{
     {"Within", ExpectCompare::Within},
     {"AtLeast", ExpectCompare::AtLeast},
     {"AtMost", ExpectCompare::AtMost},
+}};
+
+const std::array<Choice<ContactOrder>, 3> kContactOrderChoices = {{
+    {"Colours", ContactOrder::Colours},
+    {"Colors", ContactOrder::Colours},
+    {"Found", ContactOrder::Found},
 }};
 
 const std::array<Choice<NarrowphaseKind>, 3> kNarrowphaseChoices = {{

@@ -35,6 +35,7 @@ enum class FieldKind : std::uint8_t {
     Name,        ///< An object name (see parseName()).
     Compare,     ///< A word from kCompareChoices: `Compare=AtLeast` (Expect records).
     Narrowphase, ///< A word from kNarrowphaseChoices.
+    ContactOrder, ///< A word from kContactOrderChoices.
     Points,      ///< A list of points, each a vector: `Vertices=(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)`.
     File,        ///< A file's path, relative to the scene file's folder: `File=models/ramp.obj`.
 };
@@ -108,6 +109,9 @@ extern const std::array<Choice<ExpectCompare>, 3> kCompareChoices;
 
 /// @brief Accepted spellings of NarrowphaseKind (any case): Auto, GjkEpa, Mpr.
 extern const std::array<Choice<NarrowphaseKind>, 3> kNarrowphaseChoices;
+
+/// @brief Accepted spellings of ContactOrder (any case): Colours (or Colors), Found.
+extern const std::array<Choice<ContactOrder>, 3> kContactOrderChoices;
 
 /// @brief Every record type, in the order the documentation lists them.
 std::span<const RecordSpec> allRecords();

@@ -1,15 +1,18 @@
 /// @file thread_pool.cpp
-/// @brief The pool's job hand-over: atomics for the fast road, one mutex and a condition variable for sleepers.
+/// @brief The pool's job hand-over: a ticket word for the fast road, one mutex and a condition variable for sleepers.
 ///
-/// Hand-over, per job: run() stores the job's fields, marks every worker
-/// busy and bumps the generation (a release store, under the mutex so that a
-/// worker falling asleep cannot miss it), and notifies only if a worker
-/// sleeps. Each worker that sees a new generation (an acquire load) takes
-/// chunk numbers with fetch_add until they run out, the caller too, then
-/// counts itself out of the job (a release decrement). run() waits until the
-/// count is zero (an acquire load): every chunk's writes are then visible to
-/// the caller. A worker takes part in every job, so no job can start before
-/// every worker has left the one before.
+/// Hand-over, per job: run() stores the job's fields, resets the count of
+/// finished chunks, publishes the ticket (job number, chunk 0) with a release
+/// store and bumps the generation (under the mutex, so that a worker falling
+/// asleep cannot miss it), and notifies only if a worker sleeps. A thread
+/// claims a chunk by a compare-and-swap of the ticket from (job, i) to
+/// (job, i + 1): the swap succeeds only while the ticket still names the job
+/// whose fields the thread read, so a worker that wakes late, after its job
+/// is over and the next has begun, claims nothing by mistake. Each chunk that
+/// returns adds one to the finished count (a release), and run() returns when
+/// that count reaches the job's chunks (an acquire): every chunk's writes are
+/// then visible to the caller. The caller never waits for a worker that
+/// claimed nothing.
 #include "core/thread_pool.hpp"
 
 #include <cstdint>
@@ -54,20 +57,22 @@ ThreadPool::~ThreadPool() {
 }
 
 void ThreadPool::dispatch(std::size_t chunks, void* context, Trampoline call) {
-    context_ = context;
-    call_ = call;
-    chunkCount_ = chunks;
-    nextChunk_.store(0, std::memory_order_relaxed);
-    busyWorkers_.store(static_cast<unsigned>(workers_.size()), std::memory_order_relaxed);
+    // The last job is over (run() returned), so no thread can be inside it: its fields are free.
+    context_.store(context, std::memory_order_relaxed);
+    call_.store(call, std::memory_order_relaxed);
+    chunkCount_.store(chunks, std::memory_order_relaxed);
+    doneChunks_.store(0, std::memory_order_relaxed);
+    const std::uint64_t job = generation_.load(std::memory_order_relaxed) + 1;
+    ticket_.store(job << 32, std::memory_order_release);
     {
         std::lock_guard<std::mutex> lock(mutex_);
-        generation_.fetch_add(1, std::memory_order_release);
+        generation_.store(job, std::memory_order_release);
     }
     if (sleepers_.load(std::memory_order_acquire) > 0) wake_.notify_all();
-    takeChunks();  // the caller works too
-    // The workers are finishing their last chunks: spin, but give the core away if one of them
-    // is not running (more threads than cores), so that it can finish.
-    for (int spin = 0; busyWorkers_.load(std::memory_order_acquire) != 0; ++spin) {
+    takeChunks(job);  // the caller works too
+    // Chunks other threads claimed are finishing: spin, but give the core away after a while, in
+    // case the thread that holds one is not running (more threads than cores).
+    for (int spin = 0; doneChunks_.load(std::memory_order_acquire) != chunks; ++spin) {
         if (spin < kSpinsPerClockRead) {
             relax();
         } else {
@@ -76,11 +81,22 @@ void ThreadPool::dispatch(std::size_t chunks, void* context, Trampoline call) {
     }
 }
 
-void ThreadPool::takeChunks() {
+void ThreadPool::takeChunks(std::uint64_t job) {
+    std::uint64_t ticket = ticket_.load(std::memory_order_acquire);
     for (;;) {
-        const std::size_t i = nextChunk_.fetch_add(1, std::memory_order_relaxed);
-        if (i >= chunkCount_) return;
-        call_(context_, i);
+        if ((ticket >> 32) != job) return;  // a newer job: this one is over
+        const std::size_t chunk = static_cast<std::size_t>(ticket & 0xffffffffu);
+        const std::size_t chunks = chunkCount_.load(std::memory_order_relaxed);
+        void* const context = context_.load(std::memory_order_relaxed);
+        const Trampoline call = call_.load(std::memory_order_relaxed);
+        if (chunk >= chunks) return;
+        // Claim the chunk only if the ticket has not moved since these fields were read; on
+        // failure `ticket` is reloaded and the loop looks again.
+        if (ticket_.compare_exchange_weak(ticket, ticket + 1, std::memory_order_acquire, std::memory_order_acquire)) {
+            call(context, chunk);
+            doneChunks_.fetch_add(1, std::memory_order_release);
+            ticket = ticket_.load(std::memory_order_acquire);
+        }
     }
 }
 
@@ -105,8 +121,7 @@ void ThreadPool::workerLoop() {
     std::uint64_t seen = 0;
     while (waitForJob(seen)) {
         seen = generation_.load(std::memory_order_acquire);
-        takeChunks();
-        busyWorkers_.fetch_sub(1, std::memory_order_release);
+        takeChunks(seen);
     }
 }
 

@@ -7,6 +7,13 @@
 /// calling thread take chunk numbers from one atomic counter until none are
 /// left, and run() returns when every chunk is done.
 ///
+/// **A busy machine.** run() waits for the chunks, never for the workers: a
+/// worker the operating system has not scheduled (more runnable threads than
+/// cores) simply claims no chunk, and the caller does its share. A pool whose
+/// caller had to wait until every worker had looked at each job would pay a
+/// scheduler time slice, milliseconds, for each of the hundreds of jobs of a
+/// step whenever another program holds a core.
+///
 /// **Jobs in quick succession.** The solver hands out a job per wave of
 /// contacts, hundreds of times a step, each a few microseconds long. Waking
 /// a sleeping thread through the operating system takes tens of
@@ -63,7 +70,7 @@ public:
     template <class ChunkFunction>
     void run(std::size_t chunks, ChunkFunction& chunk) {
         if (chunks == 0) return;
-        if (workers_.empty() || chunks == 1) {
+        if (workers_.empty() || chunks == 1 || chunks > kMaxChunksPerJob) {  // the last: more than a ticket counts
             for (std::size_t i = 0; i < chunks; ++i) chunk(i);
             return;
         }
@@ -72,10 +79,12 @@ public:
 
 private:
     using Trampoline = void (*)(void* context, std::size_t chunk);
-
+    /// The most chunks a job's ticket can count (its low 32 bits); a larger job runs on the caller alone.
+    static constexpr std::size_t kMaxChunksPerJob = 0xffffffffu;
     void dispatch(std::size_t chunks, void* context, Trampoline call);
     void workerLoop();
-    void takeChunks();
+    /// Claims and runs chunks of job @p job until none are left or a newer job has started.
+    void takeChunks(std::uint64_t job);
     /// Waits for a job newer than @p seen: spinning for up to kSpinBeforeSleep, then asleep on wake_.
     /// Returns false when the pool is stopping.
     bool waitForJob(std::uint64_t seen);
@@ -83,15 +92,18 @@ private:
     std::vector<std::thread> workers_;
     std::mutex mutex_;                  ///< Held only to fall asleep and to publish a job to sleepers.
     std::condition_variable wake_;      ///< Workers that spun long enough sleep here.
-
-    // The current job. Its fields are written before generation_ is bumped (a release), and
-    // read after a worker sees the new generation (an acquire).
-    void* context_ = nullptr;
-    Trampoline call_ = nullptr;
-    std::size_t chunkCount_ = 0;
-    std::atomic<std::size_t> nextChunk_{0};
-    std::atomic<std::uint64_t> generation_{0};  ///< Bumped once per job: a worker runs each job once.
-    std::atomic<unsigned> busyWorkers_{0};      ///< Workers still inside the current job.
+    // The current job. Its fields are written before its ticket is published (a release) and read
+    // after a worker loads that ticket (an acquire); atomics, because a worker that comes late may
+    // read them while the next job writes them (it then finds the ticket changed and claims nothing).
+    std::atomic<void*> context_{nullptr};
+    std::atomic<Trampoline> call_{nullptr};
+    std::atomic<std::size_t> chunkCount_{0};
+    /// The job's number in the high 32 bits and its next unclaimed chunk in the low 32: a chunk is
+    /// claimed by a compare-and-swap of the whole word, so a late worker can never claim a chunk of
+    /// a job it has not read.
+    std::atomic<std::uint64_t> ticket_{0};
+    std::atomic<std::size_t> doneChunks_{0};    ///< Chunks of the current job that have returned.
+    std::atomic<std::uint64_t> generation_{0};  ///< The current job's number: what waiting workers watch.
     std::atomic<unsigned> sleepers_{0};         ///< Workers asleep on wake_ (only those need a notify).
     std::atomic<bool> stop_{false};
 };

@@ -30,6 +30,14 @@ const char* toString(NarrowphaseKind kind) {
     return "?";
 }
 
+const char* toString(ContactOrder order) {
+    switch (order) {
+        case ContactOrder::Colours: return "Colours";
+        case ContactOrder::Found: return "Found";
+    }
+    return "?";
+}
+
 const char* toString(BroadphaseKind kind) {
     switch (kind) {
         case BroadphaseKind::Auto: return "Auto";

@@ -59,6 +59,16 @@ enum class NarrowphaseKind : std::uint8_t {
 /// @brief Scene-file spelling of a narrowphase ("Auto", "GjkEpa", "Mpr").
 const char* toString(NarrowphaseKind kind);
 
+/// @brief The order a sequential-impulse pass takes its contacts in (`World, ContactOrder=…`;
+/// dynamics/contact_colours.hpp says why it matters).
+enum class ContactOrder : std::uint8_t {
+    Colours,  ///< Colour by colour (greedy graph colouring), each colour in the order found: solvable in lanes and on threads.
+    Found,    ///< In the order the narrowphase found them.
+};
+
+/// @brief Scene-file spelling of a contact order ("Colours", "Found").
+const char* toString(ContactOrder order);
+
 /// @brief Default time step, s: 60 steps per second, the usual display rate.
 inline constexpr Real kDefaultTimeStep = Real(1) / Real(60);
 /// @brief Default run length of `stepwise run`, s.
@@ -143,6 +153,7 @@ struct WorldSettings {
     /// Sequential impulse: the relax passes solve a ball contact's friction too (false: its normal row only;
     /// a box's contacts always get both). contact_solver.hpp, "Friction in the relax".
     bool relaxBallFriction = false;
+    ContactOrder contactOrder = ContactOrder::Colours; ///< Sequential impulse: the order of a pass's contacts.
     bool accumulateImpulses = true;                    ///< Clamp accumulated impulses (true) or each increment.
     bool positionCorrection = true;                    ///< Soft push-out of overlaps and joint drift.
     Real contactHertz = kDefaultContactHertz;          ///< Contact softness frequency, Hz.

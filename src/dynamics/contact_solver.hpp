@@ -120,11 +120,14 @@ inline constexpr std::uint32_t kRoundContact = 0xffffffffu;
 /// **The order of a pass.** A Gauss–Seidel pass solves the contacts one
 /// after the other, each reading the velocities the earlier ones left, so
 /// the order is part of the result. A pass here takes the round contacts
-/// first, then the others, each group in the order the narrowphase found them
-/// (SolverWorkspace::roundContacts, SolverWorkspace::otherContacts). Any fixed
-/// order is as good a sweep as another; this one is the order in which the
-/// fast path (src/fast/) can also solve four round contacts at a time, so the
-/// two roads compute the same numbers.
+/// first, then the others (SolverWorkspace::roundContacts,
+/// SolverWorkspace::otherContacts), each group colour by colour: no two
+/// contacts of a colour share a dynamic body (contact_colours.hpp,
+/// `ContactOrder=Colours`), or, with `ContactOrder=Found`, in the order the
+/// narrowphase found them. Any fixed order is a valid sweep; the colour order
+/// is one in which the fast path (src/fast/) can solve a whole colour four
+/// contacts at a time and on several threads, so the roads compute the same
+/// numbers.
 ///
 /// **The separation without the contact point.** An anchor either turns with
 /// its body (a box's material point: p = c + R·l, with l fixed in the body)
@@ -235,6 +238,14 @@ inline bool passSolvesFriction(const SolverContact& c, const ContactSolverSettin
     return c.rows != kRoundContact || passSolvesRoundFriction(settings, useBias);
 }
 
+/// @brief Scratch arrays of orderByColour() (contact_colours.hpp), kept so that a settled scene allocates nothing.
+struct ContactColouring {
+    std::vector<std::uint64_t> usedColours;  ///< Per record: bit k set when one of its contacts has colour k.
+    std::vector<std::uint32_t> colourOf;     ///< Per contact of the list: its colour.
+    std::vector<std::uint32_t> colourStart;  ///< Per colour: where its contacts start in the new order.
+    std::vector<std::uint32_t> ordered;      ///< The list in colour order, swapped in.
+};
+
 /// @brief The contact solver's arrays, rebuilt by prepareContacts() every step and reused, so a
 /// step allocates nothing once the scene has settled.
 struct SolverWorkspace {
@@ -242,8 +253,11 @@ struct SolverWorkspace {
     std::vector<ContactStart> starts;            ///< The same contacts' origin and bounce (read by prepare, the bounce, the trace).
     std::vector<ContactRows> rows;               ///< Rows of the contacts that are not round (boxes, moving kinematic bodies).
     std::vector<TurningAnchors> turningAnchors;  ///< Anchors of the contacts with a turning anchor (boxes).
-    std::vector<std::uint32_t> roundContacts;    ///< The round contacts, in order: a pass solves these first.
-    std::vector<std::uint32_t> otherContacts;    ///< The contacts with stored rows, in order: a pass solves these next.
+    std::vector<std::uint32_t> roundContacts;    ///< The round contacts, in pass order: a pass solves these first.
+    std::vector<std::uint32_t> otherContacts;    ///< The contacts with stored rows, in pass order: a pass solves these next.
+    /// Pass order (`ContactOrder`): each list colour by colour (true, contact_colours.hpp) or as found. Set by the World.
+    bool colourOrder = true;
+    ContactColouring colouring;                  ///< orderByColour()'s scratch.
     /// The impacts of the step (ContactStart::touchVelocity < 0), in order: without one that
     /// pushed, applyRestitution() has nothing to do (in a pile at rest there is none).
     std::vector<std::uint32_t> bouncing;
@@ -293,7 +307,9 @@ SolverFootprint solverFootprint(const SolverWorkspace& workspace);
 /// record for each dynamic body in a contact or held by a joint (@p links),
 /// with its world I⁻¹ for the step. Every body a constraint can move has a
 /// record, so the passes over the records (the copies, the drift) reach
-/// all of them and no other. Lists the round and the other contacts, in order.
+/// all of them and no other. Lists the round and the other contacts in the
+/// order a pass takes them: colour by colour (orderByColour(),
+/// SolverWorkspace::colourOrder) or as found.
 ///
 /// The bounce: the relative normal velocity v_n (< 0 approaching) is taken
 /// before any impulse, at the start of the step, when the surfaces are a gap

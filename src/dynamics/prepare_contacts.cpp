@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "dynamics/contact_body.hpp"
+#include "dynamics/contact_colours.hpp"
 #include "dynamics/contact_rows.hpp"
 #include "objects/inertia.hpp"
 
@@ -245,6 +246,11 @@ void prepareContacts(const BodySet& bodies, std::span<const Contact> contacts, s
             // Tangent axes are rebuilt each step: the friction is carried as a world vector.
             for (int k = 0; k < 2; ++k) c.tangentImpulse[k] = glm::dot(cached->frictionImpulse, c.tangent[k]);
         }
+    }
+    // The order of the passes (contact_colours.hpp)
+    if (workspace.colourOrder) {
+        orderByColour(workspace, workspace.roundContacts);
+        orderByColour(workspace, workspace.otherContacts);
     }
 }
 

@@ -180,6 +180,17 @@ PlanDecision islandSubstepsOf(const PlanInputs& in) {
                "4*h*60 Hz), a power of two, at most Substeps");
 }
 
+/// The order of a pass (src/dynamics/contact_colours.hpp): a setting that changes the numbers, shown so
+/// that a reader knows which sweep they are stepping through.
+PlanDecision colourOrderOf(const PlanInputs& in) {
+    if (in.settings.solver == SolverKind::Impulse) return skip("not in the Impulse pipeline (it resolves pairs one by one)");
+    if (in.settings.contactOrder == ContactOrder::Found) {
+        return skip("off: ContactOrder=Found, each pass takes the contacts in the order the narrowphase found them");
+    }
+    return run("runs (src/dynamics/contact_colours.hpp): each pass takes the contacts colour by colour, no two of a "
+               "colour on one dynamic body, so a colour can be solved at once");
+}
+
 PlanDecision idleSkipOf(const PlanInputs& in) {
     if (in.settings.solver == SolverKind::Impulse) {
         return run("on, rarely: the Impulse solver lets no body sleep, so only a world without an awake body is idle");
@@ -343,6 +354,7 @@ StepPlan makeStepPlan(const PlanInputs& in) {
         plan.packedSubsteps = packedSubstepsOf(in, plan);
     }
     plan.islandSubsteps = islandSubstepsOf(in);  // changes the numbers when it runs: a setting, not a skip
+    plan.colourOrder = colourOrderOf(in);        // the same
     return plan;
 }
 
@@ -395,6 +407,7 @@ std::string describeStepPlan(const StepPlan& plan) {
     line("fast path", plan.fastPath);
     line("packed substeps", plan.packedSubsteps);
     line("substeps per island", plan.islandSubsteps);
+    line("colour order", plan.colourOrder);
     text += "  broadphase kind       ";
     text += toString(plan.broadphase);
     text += ": ";

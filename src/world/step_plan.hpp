@@ -80,6 +80,7 @@ struct StepPlan {
     PlanDecision fastPath;         ///< Sequential impulse: do the substeps run on the fast path (src/fast/fast_path.hpp)?
     PlanDecision packedSubsteps;   ///< On the fast path: may a step of balls run its substeps on packed records (src/fast/packed_substeps.hpp)?
     PlanDecision islandSubsteps;   ///< Sequential impulse: does each island get its own count (`SubstepsPerIsland=true`, src/dynamics/substep_rule.hpp)?
+    PlanDecision colourOrder;      ///< Sequential impulse: do the passes take the contacts colour by colour (`ContactOrder`, src/dynamics/contact_colours.hpp)?
     SolverKind solver = SolverKind::SequentialImpulse; ///< The pipeline the scene runs (pipelineOrder()).
     int substeps = 1;              ///< Substeps of a sequential-impulse step.
     BroadphaseKind broadphase = BroadphaseKind::Auto; ///< The broadphase the scene asks for.

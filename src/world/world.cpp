@@ -295,6 +295,7 @@ void World::stepWithSequentialImpulses() {
     //    (src/dynamics/prepare_contacts.cpp, src/dynamics/joints/joint.cpp, src/dynamics/islands.cpp)
     runStage(Stage::PrepareConstraints, [&] {
         if (asleep_ > 0) wakeTouchedIslands(bodies(), contacts_, links_);
+        solverWorkspace_.colourOrder = settings_.contactOrder == ContactOrder::Colours;
         prepareContacts(bodies(), contacts_, links_, h, settings_.warmStarting, solverWorkspace_);
         // A joint's or a spring's anchor on a ball turns with it; nothing else inside a step reads how a ball is turned
         solverWorkspace_.ballsTurnOnce = links_.empty() && springs_.empty();
