@@ -37,9 +37,9 @@ public:
     std::string name;            ///< Unique within a scene; used in output and errors.
     Vec3 scale{1, 1, 1};         ///< Full size, m: a box's edge lengths; a sphere's diameter when no radius is given.
     Color color;                 ///< Display colour.
-    /// How far the object can move during the current step, m (set by the
-    /// sequential-impulse step; 0 otherwise). Its bounds grow by this much and
-    /// a sphere's contacts reach this far, so a contact is found *before* the
+    /// How far the object can move during the current step, m, by itself or knocked by a
+    /// neighbour (World::widenSweepsByKnocks(); sequential-impulse step only, 0 otherwise).
+    /// Its bounds grow by this much and a sphere's contacts reach this far, so a contact is found *before* the
     /// surfaces meet and the solver can stop them exactly at touching. A
     /// plane does not move: its sweep is how far a knock from another body may
     /// carry a body towards it, the largest sweep in the scene (World::measureSweeps()).

@@ -132,6 +132,7 @@ private:
     void checkFinite(Stage stage) const;
     void stepWithImpulses();
     void measureSweeps(Real h);
+    void widenSweepsByKnocks();
     void stepWithSequentialImpulses();
     void warmStart(int substep);
     void solvePass(const ContactSolverSettings& contactSettings, const JointSolverSettings& jointSettings, bool useBias);
@@ -169,6 +170,7 @@ private:
     std::unique_ptr<ThreadPool> threadPool_;  ///< Created once here; a pointer so that the World can be moved.
     NarrowphaseWorkspace narrowphaseWorkspace_;
     SweepWorkspace sweepWorkspace_;
+    std::vector<Real> knockSweeps_;  ///< widenSweepsByKnocks(): each body's sweep with its neighbours' knocks.
     SubstepGroups substepGroups_;  ///< This step's islands, their counts and groups (src/dynamics/substep_rule.hpp).
     bool islandRuleRan_ = false;   ///< The rule chose the counts of the last step (islandSubsteps()).
 
