@@ -298,6 +298,10 @@ TEST_CASE("The solver's footprint counts what a pass reads: the body records and
     // The lanes read the records, their centres and the batches
     const SolverFootprint lanes = fastFootprint(workspace, fast);
     CHECK(lanes.passBytes == records * (sizeof(SolverBody) + sizeof(SolverCentre)) + batches * sizeof(RoundBatch));
+    // A substep walks the passes' arrays and, between the passes, each record's summed turn
+    // (nothing has sized the substep-start velocities yet; these steps took no packed substeps)
+    CHECK(plain.substepBytes == plain.passBytes + records * sizeof(SpinSum) + workspace.substepStart.size() * sizeof(BodyVelocity));
+    CHECK(lanes.substepBytes == lanes.passBytes + records * sizeof(SpinSum) + workspace.substepStart.size() * sizeof(BodyVelocity));
     // Everything else is on top: at least each contact's record and start
     CHECK(plain.allBytes >= plain.passBytes + contacts * sizeof(ContactStart));
     CHECK(lanes.allBytes >= lanes.passBytes + contacts * (sizeof(SolverContact) + sizeof(ContactStart)));

@@ -67,6 +67,8 @@ struct FastWorkspace {
     /// substep's kick starts from (later ones take L = I·ω, as copyVelocitiesOut() writes it).
     std::vector<Vec3> startMomentum;
 
+    bool packedStep = false;  ///< The last step ran on the packed records (for fastFootprint()).
+
     FastPathCounts counts;  ///< How many steps took the fast path, and how many of those the packed substeps.
 };
 
