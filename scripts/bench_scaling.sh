@@ -180,7 +180,8 @@ substep walks outgrows the L3 as well, every substep fetches it again from
 main memory, and the solve and relax stages grow most. The
 [fourteenth](performance-history.md#history-round-14) and
 [seventeenth](performance-history.md#history-round-17) rounds of the
-performance history measure this.
+performance history, and [the cost per body on the EPYC](performance-history.md#history-per-body-2026-11-27),
+measure this.
 
 EOF
     if [[ -f $stage_costs_data ]]; then cat "$stage_costs_data"; else missing stage-costs; fi
