@@ -281,7 +281,9 @@ SolverFootprint fastFootprint(const SolverWorkspace& w, const FastWorkspace& fas
                        bytesOf(w.poses);
     }
     f.substepBytes = f.passBytes + bytesOf(w.substepStart) + bytesOf(w.turnSums);
-    if (fast.packedStep) f.substepBytes += bytesOf(fast.freeFlight) + bytesOf(w.ballInertia);
+    if (fast.packedStep) {
+        f.substepBytes += (fast.sharedFlight ? sizeof(FreeFlight) : bytesOf(fast.freeFlight)) + bytesOf(w.ballInertia);
+    }
     f.allBytes = solverFootprint(w).allBytes + bytesOf(fast.roundBatches) + bytesOf(fast.boxBatches) + bytesOf(fast.nextWave) +
                  bytesOf(fast.waveBatches) +
                  bytesOf(fast.waveOf) + bytesOf(fast.waveStart) + bytesOf(fast.waveOrder) + bytesOf(fast.centres) +
