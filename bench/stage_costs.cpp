@@ -140,6 +140,10 @@ void printFootprint(std::FILE* out, const std::vector<Run>& runs, bool markdown)
     row("the contact solver's, read by each pass", [](const Run& r) {
         return double(r.world->solverFootprint().passBytes) / kBytesPerMegabyte;
     });
+    // The passes and the moves between them: what must stay in a cache from substep to substep
+    row("the contact solver's, a substep walks", [](const Run& r) {
+        return double(r.world->solverFootprint().substepBytes) / kBytesPerMegabyte;
+    });
     const std::string caches = dataCaches();
     std::fprintf(out, markdown ? "\nThe processor's data caches, per core unless shared: %s.\n" : "caches: %s\n",
                  caches.empty() ? "not known" : caches.c_str());

@@ -16,7 +16,8 @@
 /// (World::solverFootprint()), beside the processor's data caches as Linux
 /// lists them. The work per body is the same at every size (contacts per
 /// body, the stage table's last row); what changes is whether a walk over
-/// those arrays is served by a core's own L2 cache or by the shared L3.
+/// those arrays is served by a core's own L2 cache, by the shared L3 or, once
+/// what one substep walks outgrows the L3 too, by main memory.
 #pragma once
 
 #include <cstddef>

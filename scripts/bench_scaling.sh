@@ -171,13 +171,17 @@ whole step's CPU time is the last timed row.
 flat; *contacts per body* is the work per body. The *arrays* table gives
 the megabytes of each size's data (`World::solverFootprint()`; *read by
 each pass*: the body records and the batches that every pass of the
-contact solver walks), beside the processor's caches. Once the arrays a
-pass reads outgrow a core's own L2 cache, every pass fetches them again
-from the slower L3 cache that the cores share: the cost per body then
-grows although the work per body does not. The
+contact solver walks; *a substep walks*: those, and the records'
+arrays that the moves between the passes walk), beside the processor's
+caches. Once the arrays a pass reads outgrow a core's own L2 cache, every
+pass fetches them again from the slower L3 cache that the cores share: the
+cost per body then grows although the work per body does not. Once what a
+substep walks outgrows the L3 as well, every substep fetches it again from
+main memory, and the solve and relax stages grow most. The
 [fourteenth](performance-history.md#history-round-14) and
 [seventeenth](performance-history.md#history-round-17) rounds of the
-performance history measure this.
+performance history, and [the cost per body on the EPYC](performance-history.md#history-per-body-2026-11-27),
+measure this.
 
 EOF
     if [[ -f $stage_costs_data ]]; then cat "$stage_costs_data"; else missing stage-costs; fi

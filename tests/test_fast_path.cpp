@@ -29,6 +29,7 @@
 #include "fast/box_contact_lanes.hpp"
 #include "fast/fast_path.hpp"
 #include "fast/fast_workspace.hpp"
+#include "fast/packed_substeps.hpp"
 #include "fast/round_contact_lanes.hpp"
 #include "objects/inertia.hpp"
 #include "test_support.hpp"
@@ -300,6 +301,10 @@ TEST_CASE("The solver's footprint counts what a pass reads: the body records and
     // The lanes read the records, their centres and the batches
     const SolverFootprint lanes = fastFootprint(workspace, fast);
     CHECK(lanes.passBytes == records * (sizeof(SolverBody) + sizeof(SolverCentre)) + batches * sizeof(RoundBatch));
+    // A substep walks the passes' arrays and, between the passes, each record's summed turn
+    // (nothing has sized the substep-start velocities yet; these steps took no packed substeps)
+    CHECK(plain.substepBytes == plain.passBytes + records * sizeof(SpinSum) + workspace.substepStart.size() * sizeof(BodyVelocity));
+    CHECK(lanes.substepBytes == lanes.passBytes + records * sizeof(SpinSum) + workspace.substepStart.size() * sizeof(BodyVelocity));
     // Everything else is on top: at least each contact's record and start
     CHECK(plain.allBytes >= plain.passBytes + contacts * sizeof(ContactStart));
     CHECK(lanes.allBytes >= lanes.passBytes + contacts * (sizeof(SolverContact) + sizeof(ContactStart)));
@@ -350,6 +355,37 @@ TEST_CASE("A rain of balls on the packed substeps ends every step where the plai
     INFO(counts.packedSteps << " of " << counts.steps << " steps on the packed records");
     CHECK(counts.steps == 90);
     CHECK(counts.packedSteps > 60);  // the comparison covers the packed substeps, not only the road on the objects
+}
+
+TEST_CASE("The packed kick reads one free flight for all balls only when all have the same bits", "[fast][lanes]") {
+    const auto pack = [](BallHeap& heap) {
+        for (DynamicObject& ball : heap.dynamics) ball.acceleration = Vec3(0, -9.81, 0);  // what apply-forces leaves
+        SolverWorkspace workspace;
+        prepareContacts(heap.bodies(), heap.contacts, {}, Real(1) / 60, false, workspace);
+        FastWorkspace fast;
+        REQUIRE(packRecords(workspace, fast));
+        return fast.sharedFlight;
+    };
+    BallHeap gravity;
+    CHECK(pack(gravity));
+    // One ball's torque of −0 instead of +0: equal numbers, other bits (v + h·(−0) is not always v + h·(+0))
+    BallHeap negativeZero;
+    negativeZero.dynamics[7].torque = Vec3(-0.0, 0, 0);
+    CHECK_FALSE(pack(negativeZero));
+
+    // A rain in which some balls have their own acceleration: each ball kicked by its own a, as on the plain path
+    std::string text = "World, Duration=1, Sleep=false\n"
+                       "CollisionPlane, Name=floor, Position=(0,0,0), Normal=(0,1,0)\n"
+                       "CollisionPlane, Name=west, Position=(-1.5,0,0), Normal=(1,0,0)\n"
+                       "CollisionPlane, Name=east, Position=(1.5,0,0), Normal=(-1,0,0)\n";
+    for (int i = 0; i < 24; ++i) {
+        const double x = -1.1 + 0.45 * (i % 6), y = 0.3 + 0.45 * (i / 6);
+        text += "DynamicObject, Name=b" + std::to_string(i) + ", Shape=Sphere, Radius=0.2, Position=(" + std::to_string(x) +
+                "," + std::to_string(y) + ",0), AngularVelocity=(0," + std::to_string(i % 5) + ",0)" +
+                (i % 4 == 0 ? ", Acceleration=(0.5,0,-0.25)" : "") + ", Friction=0.5\n";
+    }
+    const FastPathCounts counts = requireSameOnBothRoads(sceneFrom(text), 60);
+    CHECK(counts.packedSteps > 30);
 }
 
 TEST_CASE("Balls among boxes, on a joint and under Verlet take the fast path on the objects, with the plain numbers", "[fast][lanes]") {

@@ -70,6 +70,7 @@ SolverFootprint solverFootprint(const SolverWorkspace& w) {
     SolverFootprint f;
     f.passBytes = bytesOf(w.bodies) + bytesOf(w.contacts) + bytesOf(w.rows) + bytesOf(w.turningAnchors) + bytesOf(w.poses) +
                   bytesOf(w.roundContacts) + bytesOf(w.otherContacts);
+    f.substepBytes = f.passBytes + bytesOf(w.substepStart) + bytesOf(w.turnSums);
     f.allBytes = f.passBytes + bytesOf(w.starts) + bytesOf(w.bouncing) + bytesOf(w.inertias) + bytesOf(w.recordBody) +
                  bytesOf(w.ballInertia) + bytesOf(w.bodyRecord) + bytesOf(w.previousImpulses) +
                  bytesOf(w.currentImpulses) + bytesOf(w.substepStart) + bytesOf(w.turnSums);

@@ -295,6 +295,12 @@ struct SolverWorkspace {
 /// solverFootprint() names every array of SolverWorkspace: a new one belongs there too.
 struct SolverFootprint {
     std::size_t passBytes = 0;  ///< What every contact pass reads.
+    /// What one substep walks, each array counted once: the passes' arrays and the per-record arrays
+    /// of the moves between them (the warm start's substep-start velocities, the drift's summed turns;
+    /// on the packed substeps, the kick's free flight and I). Every substep walks them all again, so
+    /// they stay in a cache from one substep to the next only while they fit in it. (The dynamic
+    /// objects the plain substeps also walk are not the workspace's: they are not counted.)
+    std::size_t substepBytes = 0;
     std::size_t allBytes = 0;   ///< Every array of the workspace, those included.
 };
 

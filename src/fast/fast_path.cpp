@@ -255,6 +255,7 @@ void runFastSubsteps(const FastSubsteps& in, FastWorkspace& fast) {
         batchBoxContacts(in.contacts, fast);
         packed = in.packedSubsteps && packRecords(in.contacts, fast);
     }, StageRun::Continued);
+    fast.packedStep = packed;
     fast.counts.steps += 1;
     if (!fast.boxBatches.empty()) fast.counts.boxLaneSteps += 1;
     if (packed) {
@@ -278,6 +279,10 @@ SolverFootprint fastFootprint(const SolverWorkspace& w, const FastWorkspace& fas
     if (fast.boxBatches.empty() && !w.otherContacts.empty()) {
         f.passBytes += w.otherContacts.size() * sizeof(SolverContact) + bytesOf(w.rows) + bytesOf(w.turningAnchors) +
                        bytesOf(w.poses);
+    }
+    f.substepBytes = f.passBytes + bytesOf(w.substepStart) + bytesOf(w.turnSums);
+    if (fast.packedStep) {
+        f.substepBytes += (fast.sharedFlight ? sizeof(FreeFlight) : bytesOf(fast.freeFlight)) + bytesOf(w.ballInertia);
     }
     f.allBytes = solverFootprint(w).allBytes + bytesOf(fast.roundBatches) + bytesOf(fast.boxBatches) + bytesOf(fast.nextWave) +
                  bytesOf(fast.waveBatches) +

@@ -63,9 +63,15 @@ struct FastWorkspace {
     /// there by the last substep's drift (SolverWorkspace::turnSums).
     std::vector<Quat> orientations;
     std::vector<FreeFlight> freeFlight;    ///< Per record, on the packed substeps only: its a and τ.
+    /// Every record's FreeFlight is record 1's, bit for bit (gravity alone: a = g, τ = 0): then the
+    /// kick reads that one entry for every ball, and each substep walks 48 bytes a record less
+    /// (set by packRecords()).
+    bool sharedFlight = false;
     /// Per record, on the packed substeps only: its L at the start of the step, kg·m²/s, which the first
     /// substep's kick starts from (later ones take L = I·ω, as copyVelocitiesOut() writes it).
     std::vector<Vec3> startMomentum;
+
+    bool packedStep = false;  ///< The last step ran on the packed records (for fastFootprint()).
 
     FastPathCounts counts;  ///< How many steps took the fast path, and how many of those the packed substeps.
 };

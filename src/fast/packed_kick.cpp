@@ -20,7 +20,7 @@ STEPWISE_LANES_INLINE Real kickOneRecord(SolverWorkspace& workspace, const FastW
                                           bool canTurn, bool firstSubstep) {
     SolverBody& record = workspace.bodies[i];
     BodyVelocity& start = workspace.substepStart[i];
-    const FreeFlight& flight = fast.freeFlight[i];
+    const FreeFlight& flight = fast.freeFlight[fast.sharedFlight ? 1 : i];
     // What the contacts did to the ball in the last substep: Σ_c λ_c·M⁻¹J_cᵀ (warmStartFromLastSubstep(), contact_solver.hpp)
     const Vec3 change = record.velocity - start.velocity;
     const Vec3 turn = record.angularVelocity - start.angularVelocity;
@@ -61,7 +61,7 @@ STEPWISE_LANES_INLINE Lanes kickRecordRows(SolverWorkspace& workspace, const Fas
     const auto angular1 = Lanes{0, 1, 2, 3} < splat(2);   // [ω_y ω_z m⁻¹ I⁻¹]: lanes 0 and 1 are ω
     Real* record = &workspace.bodies[i].velocity.x;
     Real* start = &workspace.substepStart[i].velocity.x;
-    const Real* flight = &fast.freeFlight[i].acceleration.x;
+    const Real* flight = &fast.freeFlight[fast.sharedFlight ? 1 : i].acceleration.x;  // FastWorkspace::sharedFlight
     const Lanes row0 = load(record);
     const Lanes row1 = load(record + kLanes);
     const Lanes change0 = row0 - load(start);  // what the contacts did in the last substep, as above
