@@ -180,7 +180,9 @@ TEST_CASE("The per-record stages cover every record once, in ranges that start w
     // at 1 + 8k (the drift's groups of eight), and the probes summed from every range.
     const unsigned threads = GENERATE(1u, 2u, 4u);
     ThreadPool pool(threads);
-    for (const std::size_t records : {std::size_t(10), kParallelRecords - 1, kParallelRecords, std::size_t(10007)}) {
+    // 4098 records: 4097 to share out, one more than four ranges of 1024 hold
+    for (const std::size_t records :
+         {std::size_t(10), kParallelRecords - 1, kParallelRecords, std::size_t(4098), std::size_t(10007)}) {
         INFO(records << " records, " << threads << " threads");
         std::vector<int> visits(records, 0);
         std::atomic<int> badStarts{0};
@@ -193,6 +195,22 @@ TEST_CASE("The per-record stages cover every record once, in ranges that start w
         for (std::size_t i = 1; i < records; ++i) REQUIRE(visits[i] == 1);
         REQUIRE(badStarts.load() == 0);
         REQUIRE(sum == Real(records - 1));
+    }
+}
+
+TEST_CASE("Free flight on the objects covers every body once, in ranges", "[threads][fast]") {
+    // forBodyRanges() hands out [0, bodies): each body exactly once, the probes summed.
+    const unsigned threads = GENERATE(1u, 2u, 4u);
+    ThreadPool pool(threads);
+    for (const std::size_t bodies : {std::size_t(3), kParallelBodies - 1, kParallelBodies, std::size_t(1025), std::size_t(5003)}) {
+        INFO(bodies << " bodies, " << threads << " threads");
+        std::vector<int> visits(bodies, 0);
+        const Real sum = forBodyRanges(pool, bodies, [&](std::size_t first, std::size_t end) {
+            for (std::size_t i = first; i < end; ++i) visits[i] += 1;
+            return Real(end - first);
+        });
+        for (std::size_t i = 0; i < bodies; ++i) REQUIRE(visits[i] == 1);
+        REQUIRE(sum == Real(bodies));
     }
 }
 

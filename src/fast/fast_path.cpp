@@ -23,10 +23,10 @@ namespace {
 constexpr std::size_t kProbeBlock = 32;
 
 /// Runs @p move over the runs of dynamic bodies that @p picks, each run at most kProbeBlock long,
-/// and probes each run for non-finite numbers straight after, while it is still in cache; only
-/// when a probe fails are the bodies searched, to name the first bad one.
+/// and probes each run for non-finite numbers straight after, while it is still in cache. Returns
+/// the sum of the probes: zero exactly when every body moved is finite.
 template <class Picks, class Move>
-void moveInProbedRuns(std::span<DynamicObject> all, Picks&& picks, Move&& move, const StageAtStep& where) {
+Real moveAndProbe(std::span<DynamicObject> all, Picks&& picks, Move&& move) {
     Real probe = 0;
     for (std::size_t first = 0; first < all.size();) {
         if (!picks(first)) {
@@ -40,7 +40,13 @@ void moveInProbedRuns(std::span<DynamicObject> all, Picks&& picks, Move&& move, 
         for (const DynamicObject& body : run) probe += finiteProbe(body, kPose | kMotion);
         first = end;
     }
-    if (probe != Real(0)) requireFiniteState(all, kPose | kMotion, where);
+    return probe;
+}
+
+/// moveAndProbe(); only when a probe fails are the bodies searched, to name the first bad one.
+template <class Picks, class Move>
+void moveInProbedRuns(std::span<DynamicObject> all, Picks&& picks, Move&& move, const StageAtStep& where) {
+    if (moveAndProbe(all, picks, move) != Real(0)) requireFiniteState(all, kPose | kMotion, where);
 }
 
 /// How a check of the solver's records reads them.
@@ -147,10 +153,14 @@ void substepsOnObjects(const FastSubsteps& in, FastWorkspace& fast) {
                 requireFiniteState(in.dynamics, kEverything, at(Stage::Integrate));
                 return;
             }
-            moveInProbedRuns(
-                in.dynamics, [](std::size_t) { return true; },
-                [&](std::span<DynamicObject> run) { integrateBodies(in.integrator, run, hs, in.forces); },
-                at(Stage::Integrate));
+            // Each body flies on its own numbers: ranges of bodies on the pool's threads
+            // (parallel_records.hpp), the failure named on this thread, after the ranges.
+            const Real probe = forBodyRanges(in.pool, in.dynamics.size(), [&](std::size_t first, std::size_t end) {
+                return moveAndProbe(
+                    in.dynamics.subspan(first, end - first), [](std::size_t) { return true; },
+                    [&](std::span<DynamicObject> run) { integrateBodies(in.integrator, run, hs, in.forces); });
+            });
+            if (probe != Real(0)) requireFiniteState(in.dynamics, kPose | kMotion, at(Stage::Integrate));
         });
         if (in.moveKinematics) {
             timeStage(in.records, Stage::MoveKinematics, [&] {
