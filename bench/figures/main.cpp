@@ -18,7 +18,7 @@
 ///   stepwise-figures sat-axes           lecture 5: both boxes' shadows on each of the 15 axes
 ///   stepwise-figures clipping           lecture 6: the incident face clipped by each side plane in turn
 ///   stepwise-figures waves              appendix 8a: the waves and batches of the 1000-ball rain
-///   stepwise-figures colours            appendix 8a: waves against a greedy colouring, four scenes
+///   stepwise-figures colours            appendix 8a: the waves of the two contact orders, four scenes
 ///   stepwise-figures gjk-bounds         lecture 10: GJK's upper and lower bounds on the distance, per iteration
 ///   stepwise-figures mpr-depth          lecture 11: SAT, EPA and MPR's depth and normal as a box slides off a table
 #include <algorithm>
@@ -38,6 +38,7 @@
 #include "collision/gjk.hpp"
 #include "collision/mpr.hpp"
 #include "config/scene_loader.hpp"
+#include "dynamics/contact_colours.hpp"
 #include "dynamics/contact_solver.hpp"
 #include "fast/box_contact_lanes.hpp"
 #include "fast/contact_waves.hpp"
@@ -390,8 +391,9 @@ int clipping() {
 // ------------------------------------------------------------------ appendix 8a
 
 /// The contacts of @p file's step @p step as its prepare stage left them: SolverWorkspace::contacts,
-/// the round ones and the others listed in their pass order, and as many (empty) body records as
-/// they name, which is all the wave scheduling reads.
+/// the round ones and the others listed in the order the narrowphase found them (`ContactOrder=Found`,
+/// the order of the contact array), and as many (empty) body records as they name, which is all the
+/// colouring and the wave scheduling read.
 SolverWorkspace contactsAtStep(const std::string& file, std::uint64_t step) {
     World world = loadWorld(file);
     for (std::uint64_t i = 1; i < step; ++i) world.step();
@@ -405,16 +407,28 @@ SolverWorkspace contactsAtStep(const std::string& file, std::uint64_t step) {
             records = std::max({records, c.bodyA + 1, c.bodyB + 1});
         }
         solver.bodies.resize(records);
+        solver.colourOrder = w.settings().contactOrder == ContactOrder::Colours;
         return true;
     });
     stepUntil(world, watcher, 1);
     return solver;
 }
 
-/// bench_sphere_rain_1k.scene at step @p step: the round contacts of the step put in waves and
-/// batches by the fast path's own batchRoundContacts(): per wave, its contacts and batches.
+/// @p solver's lists put in the order its scene's passes take them, as prepareContacts() puts them:
+/// colour by colour by the engine's own orderByColour() (`ContactOrder=Colours`, the default), or
+/// left as found.
+void toPassOrder(SolverWorkspace& solver) {
+    if (!solver.colourOrder) return;
+    orderByColour(solver, solver.roundContacts);
+    orderByColour(solver, solver.otherContacts);
+}
+
+/// bench_sphere_rain_1k.scene at step @p step: the round contacts of the step, in the order its passes
+/// take them, put in waves and batches by the fast path's own batchRoundContacts(): per wave, its
+/// contacts and batches.
 int waves(std::uint64_t step) {
-    const SolverWorkspace solver = contactsAtStep("bench_sphere_rain_1k.scene", step);
+    SolverWorkspace solver = contactsAtStep("bench_sphere_rain_1k.scene", step);
+    toPassOrder(solver);
     FastWorkspace fast;
     batchRoundContacts(solver, fast);
     std::printf("# bench_sphere_rain_1k.scene, step %llu: %zu round contacts in %u waves, %zu batches of %d lanes\n",
@@ -439,90 +453,89 @@ int waves(std::uint64_t step) {
     return 0;
 }
 
-/// One pass's list of contacts put in colours: per colour, how many contacts it holds.
-struct Colouring {
-    std::vector<std::size_t> sizes;  ///< Contacts per colour (wave), in the order the pass runs them.
-    std::size_t splitContacts = 0;   ///< Contacts in colours of at least kParallelWaveBatches batches.
+/// One pass's list of contacts put in waves: per wave, how many contacts it holds.
+struct Waves {
+    std::vector<std::size_t> sizes;  ///< Contacts per wave, in the order the pass runs them.
+    std::size_t splitContacts = 0;   ///< Contacts in waves of at least kParallelWaveBatches batches.
+    double boxContactsPerWave = 0;   ///< The list with stored rows: its contacts per wave (batchBoxContacts()'s test).
+    bool boxesInLanes = false;       ///< ... at least kMinBoxContactsPerWave: the fast path solves them in lanes.
 };
 
-/// Contacts of a colour that fill at least kParallelWaveBatches batches of kLanes: a wave the threads split.
+/// Contacts of a wave that fill at least kParallelWaveBatches batches of kLanes: a wave the threads split.
 bool wideEnoughToSplit(std::size_t contacts) {
     return (contacts + kLanes - 1) / kLanes >= kParallelWaveBatches;
 }
 
-/// Fails unless no two contacts of one colour share a dynamic body (record 0, the static one, is shared freely).
+/// Fails unless no two contacts of one wave share a dynamic body (record 0, the static one, is shared freely).
 void requireColouring(const SolverWorkspace& solver, const std::vector<std::uint32_t>& list,
-                      const std::vector<std::uint32_t>& colourOf, const char* what) {
+                      const std::vector<std::uint32_t>& waveOf) {
     std::vector<std::vector<bool>> used(solver.bodies.size());
     for (std::size_t k = 0; k < list.size(); ++k) {
         const SolverContact& c = solver.contacts[list[k]];
         for (const std::uint32_t body : {c.bodyA, c.bodyB}) {
             if (body == kStaticSolverBody) continue;
-            if (used[body].size() <= colourOf[k]) used[body].resize(colourOf[k] + 1, false);
-            if (used[body][colourOf[k]]) throw FigureError(std::string(what) + ": two contacts of one colour share a body");
-            used[body][colourOf[k]] = true;
+            if (used[body].size() <= waveOf[k]) used[body].resize(waveOf[k] + 1, false);
+            if (used[body][waveOf[k]]) throw FigureError("two contacts of one wave share a body");
+            used[body][waveOf[k]] = true;
         }
     }
 }
 
-/// The engine's waves of @p list: scheduleWaves() (contact_waves.hpp), as batchRoundContacts() and
-/// batchBoxContacts() call it. Checked to be a colouring.
-Colouring engineWaves(const SolverWorkspace& solver, const std::vector<std::uint32_t>& list) {
+/// The waves of @p list in its order: the engine's scheduleWaves() (contact_waves.hpp), as
+/// batchRoundContacts() and batchBoxContacts() call it. Checked to share no body within a wave.
+std::vector<std::uint32_t> wavesOf(const SolverWorkspace& solver, const std::vector<std::uint32_t>& list,
+                                   std::vector<std::size_t>& sizes) {
     FastWorkspace fast;
     scheduleWaves(solver, list, fast);
-    requireColouring(solver, list, fast.waveOf, "the waves");
-    Colouring result;
-    for (std::uint32_t wave = 0; wave < fast.waves; ++wave) {
-        const std::size_t size = fast.waveStart[wave] - (wave == 0 ? 0 : fast.waveStart[wave - 1]);
-        result.sizes.push_back(size);
-    }
+    requireColouring(solver, list, fast.waveOf);
+    for (std::uint32_t wave = 0; wave < fast.waves; ++wave)
+        sizes.push_back(fast.waveStart[wave] - (wave == 0 ? 0 : fast.waveStart[wave - 1]));
+    return fast.waveOf;
+}
+
+/// Fails unless the waves of a colour-ordered list are its colours, contact by contact: the k-th
+/// contact of the list in wave c exactly when it is in colour c (contact_colours.hpp; the appendix,
+/// section 6, proves it). @p colours is what orderByColour() returned, @p colourSizes its contacts per colour.
+void requireWavesAreColours(const std::vector<std::uint32_t>& waveOf, std::uint32_t colours,
+                            const std::vector<std::size_t>& colourSizes) {
+    std::size_t k = 0;
+    for (std::uint32_t colour = 0; colour < colours; ++colour)
+        for (std::size_t n = 0; n < colourSizes[colour]; ++n, ++k)
+            if (waveOf[k] != colour) throw FigureError("a colour-ordered list's waves are not its colours");
+}
+
+/// @p solver's two lists (the round contacts, then the others: the plain pass solves them in that
+/// order) put in waves in their current order, with how many contacts sit in waves the threads would
+/// split. The other list's waves are solved in lanes, and split, only when they hold
+/// kMinBoxContactsPerWave contacts on average (batchBoxContacts()).
+Waves bothLists(const SolverWorkspace& solver) {
+    Waves result;
+    std::vector<std::size_t> other;
+    wavesOf(solver, solver.roundContacts, result.sizes);
+    wavesOf(solver, solver.otherContacts, other);
+    const double boxes = double(solver.otherContacts.size());
+    result.boxContactsPerWave = other.empty() ? 0.0 : boxes / double(other.size());
+    result.boxesInLanes = !other.empty() && boxes >= kMinBoxContactsPerWave * double(other.size());
+    for (const std::size_t size : result.sizes)
+        if (wideEnoughToSplit(size)) result.splitContacts += size;
+    for (const std::size_t size : other)
+        if (result.boxesInLanes && wideEnoughToSplit(size)) result.splitContacts += size;
+    result.sizes.insert(result.sizes.end(), other.begin(), other.end());
     return result;
 }
 
-/// A greedy colouring of @p list, for comparison only (the engine has none): walking the contacts
-/// in order, each takes the smallest colour that no earlier contact of either of its dynamic bodies
-/// has, as Box2D v3's constraint graph does (without its cap on the number of colours).
-Colouring greedyColours(const SolverWorkspace& solver, const std::vector<std::uint32_t>& list) {
-    std::vector<std::vector<bool>> taken(solver.bodies.size());  // per record: the colours its contacts have
-    std::vector<std::uint32_t> colourOf(list.size());
-    Colouring result;
-    for (std::size_t k = 0; k < list.size(); ++k) {
-        const SolverContact& c = solver.contacts[list[k]];
-        const auto isTaken = [&](std::uint32_t body, std::uint32_t colour) {
-            return body != kStaticSolverBody && colour < taken[body].size() && taken[body][colour];
-        };
-        std::uint32_t colour = 0;
-        while (isTaken(c.bodyA, colour) || isTaken(c.bodyB, colour)) ++colour;
-        for (const std::uint32_t body : {c.bodyA, c.bodyB}) {
-            if (body == kStaticSolverBody) continue;
-            if (taken[body].size() <= colour) taken[body].resize(colour + 1, false);
-            taken[body][colour] = true;
-        }
-        colourOf[k] = colour;
-        if (result.sizes.size() <= colour) result.sizes.resize(colour + 1, 0);
-        ++result.sizes[colour];
-    }
-    requireColouring(solver, list, colourOf, "the greedy colouring");
-    return result;
+/// Contacts per colour of a list orderByColour() has just reordered (its scratch colourOf holds each
+/// contact's colour, by its place in the list before).
+std::vector<std::size_t> colourSizes(const SolverWorkspace& solver, std::uint32_t colours) {
+    std::vector<std::size_t> sizes(colours, 0);
+    for (const std::uint32_t colour : solver.colouring.colourOf) ++sizes[colour];
+    return sizes;
 }
 
-/// The round list's colours, then the other list's (the plain pass solves the round contacts first),
-/// and how many contacts sit in colours the threads would split. The other list's waves are split
-/// only when they are put in lanes at all (@p boxesInLanes, batchBoxContacts()).
-Colouring bothLists(const SolverWorkspace& solver, Colouring (*colour)(const SolverWorkspace&, const std::vector<std::uint32_t>&),
-                    bool boxesInLanes) {
-    Colouring round = colour(solver, solver.roundContacts);
-    const Colouring other = colour(solver, solver.otherContacts);
-    for (const std::size_t size : round.sizes)
-        if (wideEnoughToSplit(size)) round.splitContacts += size;
-    for (const std::size_t size : other.sizes)
-        if (boxesInLanes && wideEnoughToSplit(size)) round.splitContacts += size;
-    round.sizes.insert(round.sizes.end(), other.sizes.begin(), other.sizes.end());
-    return round;
-}
-
-/// Four scenes at step @p step: each contact list of the step in the engine's waves and in a greedy
-/// colouring. First block: one line per scene; then one block per scene: per colour, its contacts.
+/// Four scenes at step @p step of their default run: the same contacts in the two orders a pass can
+/// take them, and the fast path's waves of each. `ContactOrder=Found`: the order the narrowphase found
+/// them; `ContactOrder=Colours`: orderByColour()'s, whose waves are checked to be its colours. First
+/// block: one line per scene; then one block per scene: per wave, its contacts in each order.
 int colours(std::uint64_t step) {
     struct SceneOfFigure {
         const char* label;
@@ -532,32 +545,36 @@ int colours(std::uint64_t step) {
                                     {"tower", "lesson08_tower.scene"},
                                     {"box-pile-1k", "bench_box_pile_1k.scene"},
                                     {"rain-1k", "bench_sphere_rain_1k.scene"}};
-    std::vector<Colouring> waves, greedy;
-    std::printf("# step %llu; a wave of at least %zu batches of %d (%zu contacts) is split between threads\n",
+    std::vector<Waves> found, coloured;
+    std::printf("# step %llu; a wave of at least %zu batches of %d (%zu contacts) is split between threads;\n",
                 static_cast<unsigned long long>(step), kParallelWaveBatches, kLanes, kParallelWaveBatches * kLanes);
-    std::printf("# scene round-contacts box-contacts waves greedy-colours split-in-waves split-in-greedy "
-                "box-contacts-per-wave boxes-in-lanes\n");
+    std::printf("# box contacts go in lanes when their waves hold %.0f on average\n", double(kMinBoxContactsPerWave));
+    std::printf("# scene round-contacts box-contacts waves-found waves-colours split-found split-colours "
+                "box-contacts-per-wave-found box-contacts-per-wave-colours boxes-in-lanes-found boxes-in-lanes-colours\n");
     for (const SceneOfFigure& scene : scenes) {
-        const SolverWorkspace solver = contactsAtStep(scene.file, step);
-        // batchBoxContacts()'s test: the box contacts go in lanes when their waves hold
-        // kMinBoxContactsPerWave contacts on average.
-        FastWorkspace boxWaves;
-        scheduleWaves(solver, solver.otherContacts, boxWaves);
-        const double perWave = boxWaves.waves == 0 ? 0.0 : double(solver.otherContacts.size()) / double(boxWaves.waves);
-        const bool boxesInLanes = double(solver.otherContacts.size()) >= kMinBoxContactsPerWave * double(boxWaves.waves);
-        waves.push_back(bothLists(solver, engineWaves, boxesInLanes));
-        greedy.push_back(bothLists(solver, greedyColours, boxesInLanes));
-        std::printf("%s %zu %zu %zu %zu %zu %zu %.2f %s\n", scene.label, solver.roundContacts.size(),
-                    solver.otherContacts.size(), waves.back().sizes.size(), greedy.back().sizes.size(),
-                    waves.back().splitContacts, greedy.back().splitContacts, perWave,
-                    solver.otherContacts.empty() ? "-" : (boxesInLanes ? "yes" : "no"));
+        SolverWorkspace solver = contactsAtStep(scene.file, step);
+        found.push_back(bothLists(solver));
+        // The same lists in colour order; the waves of each list must be its colours.
+        for (std::vector<std::uint32_t>* list : {&solver.roundContacts, &solver.otherContacts}) {
+            const std::uint32_t colours = orderByColour(solver, *list);
+            const std::vector<std::size_t> sizes = list->size() < 2 ? std::vector<std::size_t>(colours, 1)
+                                                                    : colourSizes(solver, colours);
+            std::vector<std::size_t> waveSizes;
+            requireWavesAreColours(wavesOf(solver, *list, waveSizes), colours, sizes);
+        }
+        coloured.push_back(bothLists(solver));
+        const auto lanes = [&](const Waves& w) { return solver.otherContacts.empty() ? "-" : (w.boxesInLanes ? "yes" : "no"); };
+        std::printf("%s %zu %zu %zu %zu %zu %zu %.2f %.2f %s %s\n", scene.label, solver.roundContacts.size(),
+                    solver.otherContacts.size(), found.back().sizes.size(), coloured.back().sizes.size(),
+                    found.back().splitContacts, coloured.back().splitContacts, found.back().boxContactsPerWave,
+                    coloured.back().boxContactsPerWave, lanes(found.back()), lanes(coloured.back()));
     }
-    for (std::size_t s = 0; s < waves.size(); ++s) {
-        std::printf("\n\n# %s: colour contacts-in-wave contacts-in-greedy-colour\n", scenes[s].label);
-        const std::size_t n = std::max(waves[s].sizes.size(), greedy[s].sizes.size());
+    for (std::size_t s = 0; s < found.size(); ++s) {
+        std::printf("\n\n# %s: wave contacts-in-wave-found contacts-in-wave-colours\n", scenes[s].label);
+        const std::size_t n = std::max(found[s].sizes.size(), coloured[s].sizes.size());
         for (std::size_t k = 0; k < n; ++k)
-            std::printf("%zu %zu %zu\n", k, k < waves[s].sizes.size() ? waves[s].sizes[k] : 0,
-                        k < greedy[s].sizes.size() ? greedy[s].sizes[k] : 0);
+            std::printf("%zu %zu %zu\n", k, k < found[s].sizes.size() ? found[s].sizes[k] : 0,
+                        k < coloured[s].sizes.size() ? coloured[s].sizes[k] : 0);
     }
     return 0;
 }
