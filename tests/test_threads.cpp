@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <atomic>
+#include <cstring>
 #include <string>
 #include <thread>
 #include <vector>
@@ -11,6 +12,7 @@
 #include "config/scene_generator.hpp"
 #include "config/scene_loader.hpp"
 #include "core/thread_pool.hpp"
+#include "dynamics/contact_solver.hpp"
 #include "fast/fast_path_counts.hpp"
 #include "fast/parallel_records.hpp"
 #include "test_support.hpp"
@@ -241,5 +243,51 @@ TEST_CASE("Boxes on a floor, their contacts in lanes, run bit-identically with 1
         INFO(threads << " threads");
         requireIdentical(one, run(threads, &split));
         REQUIRE(split > 0);  // the split really ran
+    }
+}
+
+TEST_CASE("Contacts prepared in ranges on 2 and 4 threads are the one-thread constraints, bit for bit", "[threads][solver]") {
+    // The 1k box pile once it has landed: thousands of contacts, boxes (stored rows, turning
+    // anchors) and their walls, warm-started from the step before. Each range keeps its rows and
+    // anchors apart and they are joined in range order (prepareContacts()): every number and every
+    // index into the side arrays must be the one-thread one.
+    World world(loadSceneFile(std::string(STEPWISE_SOURCE_DIR) + "/config/bench_box_pile_1k.scene"));
+    for (int step = 0; step < 150; ++step) world.step();
+    std::vector<DynamicObject> dynamics = world.dynamics();
+    const BodySet bodies{dynamics, world.kinematics(), world.planes()};
+    const std::vector<Contact>& contacts = world.contacts();
+    REQUIRE(contacts.size() >= 2 * kParallelPrepareContacts);  // enough for the ranges to run
+    auto prepare = [&](unsigned threads) {
+        ThreadPool pool(threads);
+        SolverWorkspace w;
+        // Last step's impulses, so that the warm-start lookups run too: each contact's key with an impulse
+        for (const Contact& contact : contacts) {
+            CachedImpulse entry;
+            entry.key = keyOf(contact);
+            entry.normalImpulse = Real(0.001) * Real(contact.featureId % 7 + 1);
+            entry.frictionImpulse = Vec3(0.0002, 0, 0.0001);
+            w.previousImpulses.push_back(entry);
+        }
+        std::sort(w.previousImpulses.begin(), w.previousImpulses.end(),
+                  [](const CachedImpulse& x, const CachedImpulse& y) { return x.key < y.key; });
+        prepareContacts(bodies, contacts, {}, Real(1) / 60, true, w, &pool);
+        return w;
+    };
+    const SolverWorkspace one = prepare(1);
+    REQUIRE(!one.rows.empty());
+    REQUIRE(!one.turningAnchors.empty());
+    for (const unsigned threads : {2u, 4u}) {
+        INFO(threads << " threads");
+        const SolverWorkspace many = prepare(threads);
+        REQUIRE(many.contacts.size() == one.contacts.size());
+        REQUIRE(std::memcmp(many.contacts.data(), one.contacts.data(), one.contacts.size() * sizeof(SolverContact)) == 0);
+        REQUIRE(many.rows.size() == one.rows.size());
+        REQUIRE(std::memcmp(many.rows.data(), one.rows.data(), one.rows.size() * sizeof(ContactRows)) == 0);
+        REQUIRE(many.turningAnchors.size() == one.turningAnchors.size());
+        REQUIRE(std::memcmp(many.turningAnchors.data(), one.turningAnchors.data(),
+                            one.turningAnchors.size() * sizeof(TurningAnchors)) == 0);
+        REQUIRE(many.roundContacts == one.roundContacts);
+        REQUIRE(many.otherContacts == one.otherContacts);
+        REQUIRE(many.bouncing == one.bouncing);
     }
 }

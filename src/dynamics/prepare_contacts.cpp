@@ -82,9 +82,10 @@ RoundedAnchor roundedAnchor(const Body& body, const Vec3& lever) {
     return {core, lever - core};
 }
 
-/// The contact's pass record (returned) and its start record @p start.
-SolverContact prepareOne(const BodySet& bodies, const Contact& contact, Real h, SolverWorkspace& w,
-                         ContactStart& start) {
+/// The contact's pass record (returned) and its start record @p start; its stored rows and turning
+/// anchors, if it has them, go to @p out, and the record holds their indices there.
+SolverContact prepareOne(const BodySet& bodies, const Contact& contact, Real h, const SolverWorkspace& w,
+                         ContactStart& start, PreparedSideArrays& out) {
     SolverContact c;
     const DynamicObject& a = bodies.dynamics[contact.a];
     const ContactBody other = contactBody(bodies, contact.b, contact.point);
@@ -147,8 +148,8 @@ SolverContact prepareOne(const BodySet& bodies, const Contact& contact, Real h, 
         TurningAnchors anchors;
         if (turnsA) anchors.localA = glm::conjugate(a.orientation) * anchorA.turning;
         if (turnsB) anchors.localB = glm::conjugate(*orientationB) * anchorB.turning;
-        c.turningAnchors = static_cast<std::uint32_t>(w.turningAnchors.size());
-        w.turningAnchors.push_back(anchors);
+        c.turningAnchors = static_cast<std::uint32_t>(out.turningAnchors.size());
+        out.turningAnchors.push_back(anchors);
     }
 
     const SolverBody& bodyA = w.bodies[c.bodyA];
@@ -180,15 +181,16 @@ SolverContact prepareOne(const BodySet& bodies, const Contact& contact, Real h, 
         }
         // One mass for the pair, or a sliding box's friction is not against its sliding (frictionPairMass())
         c.tangentMass[0] = c.tangentMass[1] = frictionPairMass(tangentInverseMass[0], tangentInverseMass[1]);
-        c.rows = static_cast<std::uint32_t>(w.rows.size());
-        w.rows.push_back(rows);
+        c.rows = static_cast<std::uint32_t>(out.rows.size());
+        out.rows.push_back(rows);
     }
     c.friction = combineFriction(a.friction, other.friction);
 
     // The bounce, decided before any impulse (contact_solver.hpp): the
     // approach speed when the surfaces meet, v_c² = v_n² + 2·a·C, with a the
     // approach acceleration −(a_B − a_A)·n.
-    const Real vn = withRows(c, w, [&](const auto& rows) { return rows.normalVelocity(bodyA, bodyB); });
+    const Real vn = c.rows == kRoundContact ? RoundRows{c}.normalVelocity(bodyA, bodyB)
+                                            : StoredRows{c, out.rows[c.rows]}.normalVelocity(bodyA, bodyB);
     const Real approachAcceleration = -glm::dot(other.acceleration - a.acceleration, c.normal);
     if (vn < 0) {
         start.approachAtTouch =
@@ -224,33 +226,78 @@ ContactSolverSettings makeContactSolverSettings(const WorldSettings& settings, R
 }
 
 void prepareContacts(const BodySet& bodies, std::span<const Contact> contacts, std::span<const BodyLink> links, Real h,
-                     bool warmStart, SolverWorkspace& workspace) {
-    workspace.dynamics = bodies.dynamics;
-    makeBodyRecords(bodies, contacts, links, workspace);  // last step's records are dropped
-    workspace.contacts.resize(contacts.size());
-    workspace.starts.resize(contacts.size());
-    workspace.rows.clear();
-    workspace.turningAnchors.clear();
-    workspace.roundContacts.clear();
-    workspace.otherContacts.clear();
-    workspace.bouncing.clear();
-    std::size_t nextCached = 0;  // the contacts come in key order, mostly: each lookup starts where the last ended
-    for (std::uint32_t i = 0; i < contacts.size(); ++i) {
-        SolverContact& c = workspace.contacts[i];
-        c = prepareOne(bodies, contacts[i], h, workspace, workspace.starts[i]);
-        (c.rows == kRoundContact ? workspace.roundContacts : workspace.otherContacts).push_back(i);
-        if (workspace.starts[i].touchVelocity < Real(0)) workspace.bouncing.push_back(i);
-        if (!warmStart) continue;
-        if (const CachedImpulse* cached = findCachedImpulse(workspace.previousImpulses, keyOf(contacts[i]), nextCached)) {
-            c.normalImpulse = cached->normalImpulse;
-            // Tangent axes are rebuilt each step: the friction is carried as a world vector.
-            for (int k = 0; k < 2; ++k) c.tangentImpulse[k] = glm::dot(cached->frictionImpulse, c.tangent[k]);
+                     bool warmStart, SolverWorkspace& workspace, ThreadPool* pool) {
+    SolverWorkspace& w = workspace;
+    w.dynamics = bodies.dynamics;
+    makeBodyRecords(bodies, contacts, links, w);  // last step's records are dropped
+    w.contacts.resize(contacts.size());
+    w.starts.resize(contacts.size());
+
+    // 1. Each contact on its own numbers: in ranges of contacts, on the pool's threads when there
+    //    are enough. A range keeps its stored rows and turning anchors in side arrays of its own.
+    const std::size_t count = contacts.size();
+    const std::size_t threads = pool == nullptr ? 1 : pool->threadCount();
+    const std::size_t ranges = threads > 1 && count >= kParallelPrepareContacts ? 2 * threads : 1;
+    const std::size_t perRange = (count + ranges - 1) / ranges;
+    w.preparedRanges.resize(std::max(ranges, w.preparedRanges.size()));
+    auto prepareRange = [&](std::size_t r) {
+        PreparedSideArrays& out = w.preparedRanges[r];
+        out.rows.clear();
+        out.turningAnchors.clear();
+        std::size_t nextCached = 0;  // the contacts come in key order, mostly: each lookup starts where the last ended
+        const std::size_t end = std::min(count, (r + 1) * perRange);
+        for (std::size_t i = r * perRange; i < end; ++i) {
+            SolverContact& c = w.contacts[i];
+            c = prepareOne(bodies, contacts[i], h, w, w.starts[i], out);
+            if (!warmStart) continue;
+            if (const CachedImpulse* cached = findCachedImpulse(w.previousImpulses, keyOf(contacts[i]), nextCached)) {
+                c.normalImpulse = cached->normalImpulse;
+                // Tangent axes are rebuilt each step: the friction is carried as a world vector.
+                for (int k = 0; k < 2; ++k) c.tangentImpulse[k] = glm::dot(cached->frictionImpulse, c.tangent[k]);
+            }
+        }
+    };
+    if (ranges == 1) {
+        prepareRange(0);
+    } else {
+        pool->run(ranges, prepareRange);
+    }
+
+    // 2. The side arrays joined in range order, so every index is the one a single range gives.
+    if (ranges == 1) {
+        std::swap(w.rows, w.preparedRanges[0].rows);
+        std::swap(w.turningAnchors, w.preparedRanges[0].turningAnchors);
+    } else {
+        w.rows.clear();
+        w.turningAnchors.clear();
+        for (std::size_t r = 0; r < ranges; ++r) {
+            const auto rowsFrom = static_cast<std::uint32_t>(w.rows.size());
+            const auto anchorsFrom = static_cast<std::uint32_t>(w.turningAnchors.size());
+            const PreparedSideArrays& part = w.preparedRanges[r];
+            w.rows.insert(w.rows.end(), part.rows.begin(), part.rows.end());
+            w.turningAnchors.insert(w.turningAnchors.end(), part.turningAnchors.begin(), part.turningAnchors.end());
+            const std::size_t end = std::min(count, (r + 1) * perRange);
+            for (std::size_t i = r * perRange; i < end; ++i) {
+                SolverContact& c = w.contacts[i];
+                if (c.rows != kRoundContact) c.rows += rowsFrom;
+                if (c.turningAnchors != kNoTurningAnchors) c.turningAnchors += anchorsFrom;
+            }
         }
     }
-    // The order of the passes (contact_colours.hpp)
-    if (workspace.colourOrder) {
-        orderByColour(workspace, workspace.roundContacts);
-        orderByColour(workspace, workspace.otherContacts);
+
+    // 3. The pass lists, and the impacts
+    w.roundContacts.clear();
+    w.otherContacts.clear();
+    w.bouncing.clear();
+    for (std::uint32_t i = 0; i < count; ++i) {
+        (w.contacts[i].rows == kRoundContact ? w.roundContacts : w.otherContacts).push_back(i);
+        if (w.starts[i].touchVelocity < Real(0)) w.bouncing.push_back(i);
+    }
+
+    // 4. The order of the passes (contact_colours.hpp)
+    if (w.colourOrder) {
+        orderByColour(w, w.roundContacts);
+        orderByColour(w, w.otherContacts);
     }
 }
 

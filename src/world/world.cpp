@@ -324,7 +324,7 @@ void World::stepWithSequentialImpulses() {
     runStage(Stage::PrepareConstraints, [&] {
         if (asleep_ > 0) wakeTouchedIslands(bodies(), contacts_, links_);
         solverWorkspace_.colourOrder = settings_.contactOrder == ContactOrder::Colours;
-        prepareContacts(bodies(), contacts_, links_, h, settings_.warmStarting, solverWorkspace_);
+        prepareContacts(bodies(), contacts_, links_, h, settings_.warmStarting, solverWorkspace_, threadPool_.get());
         // A joint's or a spring's anchor on a ball turns with it; nothing else inside a step reads how a ball is turned
         solverWorkspace_.ballsTurnOnce = links_.empty() && springs_.empty();
         if (plan_.jointSolver.runs) prepareJoints(bodies(), joints_, settings_.warmStarting, jointWorkspace_);
