@@ -26,17 +26,6 @@ using namespace stepwise;
 
 namespace {
 
-/// Every contact among @p bodies, as the World's collision stages find them (all pairs tested).
-std::vector<Contact> contactsOf(const BodySet& bodies) {
-    std::vector<CandidatePair> pairs;
-    Broadphase().findPairs(BroadphaseKind::BruteForce, bodies, pairs);
-    ThreadPool pool(1);
-    NarrowphaseWorkspace workspace;
-    std::vector<Contact> contacts;
-    findContacts(bodies, pairs, contacts, false, kSpeculativeDistance, pool, workspace);
-    return contacts;
-}
-
 /// The colours of @p ordered (a list in colour order) worked out again from scratch, independently of
 /// orderByColour(): greedy colouring of @p found, in its order, with a set of colours per body.
 std::vector<std::uint32_t> greedyColours(const SolverWorkspace& w, const std::vector<std::uint32_t>& found) {
@@ -160,7 +149,7 @@ TEST_CASE("Colour order: a body in more than 64 colours sends its further contac
     std::vector<KinematicsObject> kinematics;
     std::vector<CollisionPlane> planes;
     const BodySet bodies{dynamics, kinematics, planes};
-    const std::vector<Contact> contacts = contactsOf(bodies);
+    const std::vector<Contact> contacts = test::contactsOf(bodies);
     REQUIRE(contacts.size() == 70);
     Lists lists;
     prepareBoth(bodies, contacts, lists);

@@ -39,17 +39,6 @@ using namespace stepwise;
 
 namespace {
 
-/// Every contact among @p bodies, as the World's collision stages find them (all pairs tested).
-std::vector<Contact> contactsOf(const BodySet& bodies) {
-    std::vector<CandidatePair> pairs;
-    Broadphase().findPairs(BroadphaseKind::BruteForce, bodies, pairs);
-    ThreadPool pool(1);
-    NarrowphaseWorkspace workspace;
-    std::vector<Contact> contacts;
-    findContacts(bodies, pairs, contacts, false, kSpeculativeDistance, pool, workspace);
-    return contacts;
-}
-
 /// A heap of balls of two sizes and masses, pressed into each other and into
 /// the ground and two walls, moving and spinning at random: many round contacts.
 struct BallHeap {
@@ -86,7 +75,7 @@ struct BallHeap {
         planes.push_back(wallZ);
         for (DynamicObject& body : dynamics) initialiseMassProperties(body);
 
-        contacts = contactsOf({dynamics, kinematics, planes});
+        contacts = test::contactsOf({dynamics, kinematics, planes});
     }
     BodySet bodies() { return {dynamics, kinematics, planes}; }
 };
@@ -465,7 +454,7 @@ struct BoxHeap {
         kinematics.push_back(test::kinematicBox("slab", Vec3(-0.2, 0.7, 0.9), Vec3(0.44, 1.4, 2.0), Vec3(0.5, 0, 0.2)));
         for (DynamicObject& body : dynamics) initialiseMassProperties(body);
 
-        contacts = contactsOf({dynamics, kinematics, planes});
+        contacts = test::contactsOf({dynamics, kinematics, planes});
     }
     BodySet bodies() { return {dynamics, kinematics, planes}; }
 };
@@ -675,7 +664,7 @@ TEST_CASE("How full the box lanes are: contacts per wave of the pyramid and the 
         Scene scene = loadSceneFile(std::string(STEPWISE_SOURCE_DIR) + "/config/" + name + ".scene");
         const BodySet bodies{scene.dynamics, scene.kinematics, scene.planes};
         for (DynamicObject& body : scene.dynamics) initialiseMassProperties(body);
-        const std::vector<Contact> contacts = contactsOf(bodies);
+        const std::vector<Contact> contacts = test::contactsOf(bodies);
         SolverWorkspace workspace;
         workspace.colourOrder = colours;
         prepareContacts(bodies, contacts, {}, scene.settings.timeStep, false, workspace);

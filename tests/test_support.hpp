@@ -4,7 +4,9 @@
 #include <catch2/catch.hpp>
 
 #include <string>
+#include <vector>
 
+#include "collision/broadphase.hpp"
 #include "collision/narrowphase.hpp"
 #include "world/scene.hpp"
 #include "world/world.hpp"
@@ -25,6 +27,17 @@ inline DynamicObject sphere(const std::string& name, Vec3 position, Vec3 velocit
     body.elasticity = elasticity;
     body.friction = friction;
     return body;
+}
+
+/// Every contact among @p bodies, as the World's collision stages find them (all pairs tested, one thread).
+inline std::vector<Contact> contactsOf(const BodySet& bodies) {
+    std::vector<CandidatePair> pairs;
+    Broadphase().findPairs(BroadphaseKind::BruteForce, bodies, pairs);
+    ThreadPool pool(1);
+    NarrowphaseWorkspace workspace;
+    std::vector<Contact> contacts;
+    findContacts(bodies, pairs, contacts, false, kSpeculativeDistance, pool, workspace);
+    return contacts;
 }
 
 /// The plane y = 0 facing up.
