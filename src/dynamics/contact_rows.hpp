@@ -51,12 +51,18 @@ struct StoredRows {
     }
 };
 
-/// Calls @p work with contact @p c's rows, round or stored, and returns what it
-/// returns: the one branch per contact a pass takes on the kind of contact.
+/// Calls @p work with contact @p c's rows, round or stored in @p stored (at index `c.rows`),
+/// and returns what it returns: the one branch per contact a pass takes on the kind of contact.
+template <class Work>
+inline decltype(auto) withRows(const SolverContact& c, const std::vector<ContactRows>& stored, Work&& work) {
+    if (c.rows == kRoundContact) return work(RoundRows{c});
+    return work(StoredRows{c, stored[c.rows]});
+}
+
+/// withRows() with the stored rows of the workspace @p w.
 template <class Work>
 inline decltype(auto) withRows(const SolverContact& c, const SolverWorkspace& w, Work&& work) {
-    if (c.rows == kRoundContact) return work(RoundRows{c});
-    return work(StoredRows{c, w.rows[c.rows]});
+    return withRows(c, w.rows, work);
 }
 
 }  // namespace stepwise

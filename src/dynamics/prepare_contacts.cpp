@@ -189,8 +189,7 @@ SolverContact prepareOne(const BodySet& bodies, const Contact& contact, Real h, 
     // The bounce, decided before any impulse (contact_solver.hpp): the
     // approach speed when the surfaces meet, v_c² = v_n² + 2·a·C, with a the
     // approach acceleration −(a_B − a_A)·n.
-    const Real vn = c.rows == kRoundContact ? RoundRows{c}.normalVelocity(bodyA, bodyB)
-                                            : StoredRows{c, out.rows[c.rows]}.normalVelocity(bodyA, bodyB);
+    const Real vn = withRows(c, out.rows, [&](const auto& rows) { return rows.normalVelocity(bodyA, bodyB); });
     const Real approachAcceleration = -glm::dot(other.acceleration - a.acceleration, c.normal);
     if (vn < 0) {
         start.approachAtTouch =
