@@ -188,15 +188,12 @@ void World::step() {
 /// collisions the move made. Each line is one stage, in its own file.
 void World::stepWithImpulses() {
     const Real h = settings_.timeStep;
-    const SceneForces sceneForces{settings_.gravity, springs_, attractors_, regionForces(h)};
+    const SceneForces sceneForces{settings_.gravity, springs_, attractors_, regionForces(h)};  // gravity, springs, attractors, regions
     const AccelerationFunction forces = std::cref(sceneForces);  // by reference: no allocation per step
 
-    // 1. Forces → accelerations (src/forces/apply_forces.cpp). This pipeline finds the pairs after
-    //    the move, so the regions test every body for who is inside (src/world/world_regions.cpp)
-    runStage(Stage::ApplyForces, [&] {
-        if (!regions_.empty()) findRegionMembers(false);
-        forces(dynamics_);
-    });
+    // 1. Forces → accelerations (src/forces/apply_forces.cpp)
+    if (!regions_.empty()) findRegionMembers(false);  // who is inside each region (src/world/world_regions.cpp)
+    runStage(Stage::ApplyForces, [&] { forces(dynamics_); });
 
     // 2. Advance dynamic bodies by h (src/integrators/*.cpp)
     runStage(Stage::Integrate, [&] {
@@ -299,7 +296,7 @@ void World::widenSweepsByKnocks() {
 void World::stepWithSequentialImpulses() {
     const Real h = settings_.timeStep;
     const Real hs = h / Real(settings_.substeps);
-    const SceneForces sceneForces{settings_.gravity, springs_, attractors_, regionForces(hs)};
+    const SceneForces sceneForces{settings_.gravity, springs_, attractors_, regionForces(hs)};  // gravity, springs, attractors, regions
     const AccelerationFunction forces = std::cref(sceneForces);  // by reference: no allocation per step
     const ContactSolverSettings contactSettings = makeContactSolverSettings(settings_, hs);
     const JointSolverSettings jointSettings = jointSolverSettings(settings_, hs);

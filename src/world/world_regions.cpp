@@ -82,7 +82,9 @@ void World::removeKilledBodies() {
     // The bodies, springs and joints that stay, in their order, with their indices renumbered
     std::size_t next = 0;
     for (std::size_t i = 0; i < dynamics_.size(); ++i) {
-        if (newIndex[i] != kGone) dynamics_[next++] = std::move(dynamics_[i]);
+        if (newIndex[i] == kGone) continue;
+        if (next != i) dynamics_[next] = std::move(dynamics_[i]);  // never onto itself, which would empty its name
+        ++next;
     }
     dynamics_.resize(kept);
     std::erase_if(springs_, [&](const Spring& s) {
