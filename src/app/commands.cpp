@@ -220,6 +220,34 @@ void printJoints(const World& world) {
     }
 }
 
+/// Each region, what it does and whom it held in the last step; then what Kill regions removed.
+void printRegions(const World& world) {
+    if (world.regions().empty()) return;
+    std::printf("\nRegions (the bodies each held in the last step)\n");
+    const std::vector<Region>& regions = world.regions();
+    for (std::size_t r = 0; r < regions.size(); ++r) {
+        const Region& region = regions[r];
+        std::printf("  %-16s %-12s ", region.name.c_str(), toString(region.effect));
+        if (region.effect == RegionEffect::Kill) {
+            std::size_t taken = 0;
+            for (const RemovedBody& gone : world.removedBodies()) taken += gone.region == region.name ? 1 : 0;
+            std::printf("removed %zu bod%s in all\n", taken, taken == 1 ? "y" : "ies");
+            continue;
+        }
+        const std::span<const std::uint32_t> inside = world.regionMembers().of(r);
+        std::string names;
+        for (std::size_t k = 0; k < inside.size() && k < kMaxListedObjects; ++k) {
+            names += (k == 0 ? "" : ", ") + world.dynamics()[inside[k]].name;
+        }
+        if (inside.size() > kMaxListedObjects) names += ", ... " + std::to_string(inside.size() - kMaxListedObjects) + " more";
+        std::printf("%zu inside%s%s\n", inside.size(), inside.empty() ? "" : ": ", names.c_str());
+    }
+    for (const RemovedBody& gone : world.removedBodies()) {
+        std::printf("  removed: %s by %s at t = %.6g s, at %s m\n", gone.name.c_str(), gone.region.c_str(),
+                    double(gone.time), vec(gone.position).c_str());
+    }
+}
+
 /// Which broadphase ran, and, when the scene left the choice to Auto, why; or why none ran.
 void printBroadphase(const World& world) {
     // Auto chooses when the broadphase first runs, so a run in which it never ran has no choice to show.
@@ -399,6 +427,7 @@ int runCommand(const RunOptions& options) {
     printBroadphase(world);
     printFinalState(world);
     printJoints(world);
+    printRegions(world);
     printConservation(energyBefore, energyOf(world), momentumBefore, linearMomentumOf(world), angularMomentumBefore,
                       angularMomentumOf(world));
     printStageTimes(world, wall);
@@ -447,6 +476,9 @@ int checkCommand(const std::string& scenePath) {
     for (const Attractor& a : scene->attractors) {
         std::printf("  Attractor        %-16s at %s m, mu %.6g m^3/s^2\n", a.name.c_str(), vec(a.position).c_str(),
                     double(a.mu));
+    }
+    for (const Region& r : scene->regions) {
+        std::printf("  Region           %-16s %s at %s m\n", r.name.c_str(), toString(r.effect), vec(r.position).c_str());
     }
     for (const JointDef& j : scene->joints) {
         std::printf("  %-16s %-16s %s - %s\n", toString(j.kind), j.name.c_str(), j.bodyA.c_str(),

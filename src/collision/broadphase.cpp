@@ -140,4 +140,11 @@ void Broadphase::sortIntoCanonicalOrder(const BodySet& bodies, std::vector<Candi
     }
 }
 
+void Broadphase::dynamicBodiesOverlapping(const Aabb& box, std::vector<std::uint32_t>& out) const {
+    out.clear();
+    for (std::size_t i = 0; i < boxes_.size(); ++i) {
+        if (boxes_[i].overlaps(box)) out.push_back(static_cast<std::uint32_t>(i));
+    }
+}
+
 }  // namespace stepwise

@@ -96,6 +96,9 @@ public:
     /// @param pairs output, cleared first
     void findPairs(BroadphaseKind kind, const BodySet& bodies, std::vector<CandidatePair>& pairs);
 
+    /// @brief The dynamic bodies whose boxes of the last findPairs() meet @p box, ascending (out cleared first).
+    void dynamicBodiesOverlapping(const Aabb& box, std::vector<std::uint32_t>& out) const;
+
     /// @brief The broadphase that ran last (Auto resolved), BruteForce before the first call.
     BroadphaseKind lastKind() const { return lastKind_; }
     /// @brief What Auto chose, once it has run; an empty reason before that.

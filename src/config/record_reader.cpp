@@ -275,6 +275,15 @@ private:
             case FieldKind::ContactOrder:
                 readChoice(field, slot, value, wordsOf(kContactOrderChoices));
                 break;
+            case FieldKind::RegionShape:
+                readChoice(field, slot, value, wordsOf(kRegionShapeChoices));
+                break;
+            case FieldKind::Effect:
+                readChoice(field, slot, value, wordsOf(kEffectChoices));
+                break;
+            case FieldKind::DragLaw:
+                readChoice(field, slot, value, wordsOf(kDragLawChoices));
+                break;
             case FieldKind::Points:
                 openList_ = &field;
                 openListSlot_ = ref.field;

@@ -67,6 +67,9 @@ int choiceMeaning(FieldKind kind, std::size_t index) {
         case FieldKind::Compare: return static_cast<int>(kCompareChoices.at(index).value);
         case FieldKind::Narrowphase: return static_cast<int>(kNarrowphaseChoices.at(index).value);
         case FieldKind::ContactOrder: return static_cast<int>(kContactOrderChoices.at(index).value);
+        case FieldKind::RegionShape: return static_cast<int>(kRegionShapeChoices.at(index).value);
+        case FieldKind::Effect: return static_cast<int>(kEffectChoices.at(index).value);
+        case FieldKind::DragLaw: return static_cast<int>(kDragLawChoices.at(index).value);
         default: return static_cast<int>(index);
     }
 }

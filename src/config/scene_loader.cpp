@@ -180,6 +180,13 @@ std::string joinMessages(const std::vector<ConfigDiagnostic>& diagnostics) {
 // ------------------------------------------------------------------ SceneAssembler
 
 /// Turns tokenized lines into a Scene, one record at a time, collecting every problem.
+/// Where a Buoyancy region was written, to point at it if a body's shape cannot float.
+struct BuoyancyLine {
+    int line = 0;
+    int column = 0;
+    std::string name;
+};
+
 class SceneAssembler {
 public:
     SceneAssembler(const std::string& sourceName, const SceneReadOptions& options) : sink_(sourceName), options_(options) {
@@ -219,6 +226,7 @@ public:
                 partLines_.emplace_back(line.number, lineText(line));
                 addPart(values, line, index);
                 break;
+            case RecordKind::Region: addRegion(values, line, index); break;
         }
     }
 
@@ -229,6 +237,7 @@ public:
         resolveMayChange();
         resolveSprings();
         resolveJoints();
+        checkBuoyantShapes();
         if (sink_.diagnostics().empty()) {
             warnAboutUnstableSprings();
             warnAboutMassRatios();
@@ -1036,6 +1045,106 @@ private:
         scene_.attractors.push_back(std::move(attractor));
     }
 
+    /// A Region: its volume, its effect, and the fields that effect takes (src/forces/region.hpp).
+    ///
+    /// A field the effect does not use is an error rather than ignored: `Density=1000` on a Drag
+    /// region most likely meant Buoyancy, and a silent region that does nothing is the hardest
+    /// mistake to find.
+    void addRegion(const RecordValues& values, const SceneLine& line, int index) {
+        const Token& recordName = line.tokens.front();
+        Region region;
+        region.name = claimName(values, line, index);
+        region.shape = values.choice<RegionShape>("Shape", kRegionShapeChoices, RegionShape::Box);
+        region.position = values.triple("Position", kZero);
+        region.halfExtents = values.triple("Scale", Vec3(1)) * Real(0.5);
+        region.radius = values.number("Radius", region.radius);
+        region.normal = values.triple("Normal", kDefaultNormal);
+        region.law = values.choice<DragLaw>("Law", kDragLawChoices, DragLaw::Linear);
+        region.coefficient = values.number("Coefficient", 0);
+        region.angularCoefficient = values.number("AngularCoefficient", 0);
+        region.velocity = values.triple("Velocity", kZero);
+        region.gravity = values.triple("Gravity", kZero);
+        region.density = values.number("Density", 0);
+        region.strength = values.number("Strength", 0);
+        const Real seed = values.number("Seed", 0);
+        if (!values.isSet("Effect")) {
+            sink_.report(line.number, recordName.column, "Region", "an Effect field (every region needs one)",
+                         std::string(recordName.text),
+                         "say what it does: Effect=Drag, Wind, Gravity, Buoyancy, RandomForce or Kill");
+            return;
+        }
+        region.effect = values.choice<RegionEffect>("Effect", kEffectChoices, RegionEffect::Drag);
+        const std::string effect = toString(region.effect);
+
+        // The size fields of the other shapes
+        const auto refuse = [&](std::string_view field, const std::string& why, const std::string& hint) {
+            if (!values.isSet(field)) return;
+            sink_.report(line.number, values.valueColumn(field), std::string(field), why,
+                         std::string(field) + "=" + values.asWritten(field), hint);
+        };
+        const char* shape = region.shape == RegionShape::Box      ? "Box"
+                            : region.shape == RegionShape::Sphere ? "Sphere"
+                                                                  : "HalfSpace";
+        if (region.shape != RegionShape::Box) refuse("Scale", std::string("no Scale on a ") + shape + " region", "Scale is a Box region's edges");
+        if (region.shape != RegionShape::Sphere) refuse("Radius", std::string("no Radius on a ") + shape + " region", "Radius is a Sphere region's");
+        if (region.shape != RegionShape::HalfSpace) refuse("Normal", std::string("no Normal on a ") + shape + " region", "Normal is a HalfSpace region's");
+
+        // What each effect takes: required (R) and optional (O); anything else is refused
+        struct Use { std::string_view field; bool required; };
+        std::vector<Use> uses;
+        switch (region.effect) {
+            case RegionEffect::Drag: uses = {{"Coefficient", false}, {"AngularCoefficient", false}, {"Law", false}, {"Velocity", false}}; break;
+            case RegionEffect::Wind: uses = {{"Velocity", true}, {"Coefficient", true}, {"AngularCoefficient", false}, {"Law", false}}; break;
+            case RegionEffect::Gravity: uses = {{"Gravity", true}}; break;
+            case RegionEffect::Buoyancy: uses = {{"Density", true}, {"Coefficient", false}, {"AngularCoefficient", false}, {"Law", false}, {"Velocity", false}}; break;
+            case RegionEffect::RandomForce: uses = {{"Strength", true}, {"Seed", false}}; break;
+            case RegionEffect::Kill: break;
+        }
+        constexpr std::string_view kEffectFields[] = {"Law", "Coefficient", "AngularCoefficient", "Velocity", "Gravity", "Density", "Strength", "Seed"};
+        for (const std::string_view field : kEffectFields) {
+            const auto use = std::find_if(uses.begin(), uses.end(), [&](const Use& u) { return u.field == field; });
+            if (use == uses.end()) {
+                refuse(field, "no " + std::string(field) + " on an Effect=" + effect + " region",
+                       "docs/config-format.md#region lists the fields each effect takes");
+            } else if (use->required && !values.isSet(field)) {
+                sink_.report(line.number, recordName.column, "Region",
+                             "a " + std::string(field) + " field (every Effect=" + effect + " region needs one)",
+                             std::string(recordName.text), "docs/config-format.md#region lists the fields each effect takes");
+            }
+        }
+        if (region.effect == RegionEffect::Drag && region.coefficient == 0 && region.angularCoefficient == 0) {
+            sink_.report(line.number, recordName.column, "Region", "a Coefficient or AngularCoefficient > 0",
+                         std::string(recordName.text), "a drag of 0 does nothing: give Coefficient=c in N*s/m");
+        }
+        if (region.effect == RegionEffect::Buoyancy && region.shape == RegionShape::Sphere) {
+            sink_.report(line.number, values.valueColumn("Shape"), "Shape", "Box or HalfSpace for Effect=Buoyancy",
+                         "Shape=" + values.asWritten("Shape"),
+                         "a fluid has a flat surface: the top of a Box region, or the plane of a HalfSpace");
+        }
+        if (seed != std::floor(seed) || seed > Real(9007199254740992.0)) {
+            sink_.report(line.number, values.valueColumn("Seed"), "Seed", "a whole number from 0 to 2^53",
+                         "Seed=" + values.asWritten("Seed"), "the same seed gives the same run");
+        }
+        region.seed = static_cast<std::uint64_t>(seed);
+        if (region.effect == RegionEffect::Buoyancy) buoyancyLines_.push_back({line.number, recordName.column, region.name});
+        scene_.regions.push_back(std::move(region));
+    }
+
+    /// Buoyancy has exact submerged volumes for spheres and boxes only (src/forces/buoyancy.hpp):
+    /// a scene with a buoyancy region and another dynamic shape would float it wrongly, so it is refused.
+    void checkBuoyantShapes() {
+        if (buoyancyLines_.empty()) return;
+        for (const DynamicObject& body : scene_.dynamics) {
+            if (body.shape == Shape::Sphere || body.shape == Shape::Box) continue;
+            const BuoyancyLine& where = buoyancyLines_.front();
+            sink_.report(where.line, where.column, "Region",
+                         "only spheres and boxes among the dynamic bodies of a scene with a Buoyancy region",
+                         "DynamicObject '" + body.name + "' of another shape",
+                         "buoyancy computes the submerged volume of spheres and boxes exactly, and of no other shape yet");
+            return;
+        }
+    }
+
     /// Looks up each spring's bodies by name, now that every DynamicObject is
     /// known, and sets a missing RestLength to the anchors' starting distance.
     void resolveSprings() {
@@ -1475,6 +1584,7 @@ private:
     std::array<int, kRecordKindCount> counts_{};  ///< Records seen so far, per RecordKind (for default names).
     std::vector<PendingSpring> pendingSprings_;   ///< Springs in file order, resolved by finish().
     std::vector<int> springLines_;                ///< Line of each resolved spring in scene_.springs.
+    std::vector<BuoyancyLine> buoyancyLines_;     ///< Where each Buoyancy region was written.
     std::vector<PendingJoint> pendingJoints_;    ///< Parallel to scene_.joints.
     int worldLine_ = 0;                     ///< Line of the World record; 0 before one is seen.
     SceneReadOptions options_;              ///< What the loader may read besides the text.

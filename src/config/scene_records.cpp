@@ -47,6 +47,11 @@ constexpr std::string_view kMuHint =
 constexpr std::string_view kForceHint = "a force in newtons; leave MaxForce out for a joint that never breaks";
 constexpr std::string_view kLengthHint = "a length in metres; leave Length out to use the distance at the start";
 constexpr std::string_view kTorqueHint = "a torque in newton metres; leave MaxMotorTorque out for an unlimited motor";
+constexpr std::string_view kDragHint =
+    "a drag coefficient: N*s/m under Law=Linear (F = -c*v), kg/m under Law=Quadratic (F = -c*|v|*v); 0 or more";
+constexpr std::string_view kDensityHint = "a fluid's density in kg/m^3, e.g. 1000 for water, 1.2 for air";
+constexpr std::string_view kStrengthHint = "the largest random force, in newtons";
+constexpr std::string_view kSeedHint = "a whole number from 0 to 2^53; the same seed gives the same run";
 constexpr std::string_view kHeightHint =
     "Height is a capsule's segment between its two ball centres, or a cylinder's full length, in metres";
 
@@ -194,6 +199,26 @@ constexpr FieldSpec kAttractorFields[] = {
     {"Mu",              FieldKind::Number,     kNamedOnly, Range::Positive, kMuHint},  // m³/s², required
 };
 
+/// Region: a volume with an effect (src/forces/region.hpp), named fields only. Which fields an
+/// effect needs, and which it refuses, the loader checks (scene_loader.cpp, addRegion()).
+constexpr FieldSpec kRegionFields[] = {
+    {"Name",               FieldKind::Name,        kNamedOnly, Range::Any},
+    {"Shape",              FieldKind::RegionShape, kNamedOnly, Range::Any},            // Box (default), Sphere, HalfSpace
+    {"Position",           FieldKind::Vector,      kNamedOnly, Range::Any},            // m: the centre, or a point of the plane
+    {"Scale",              FieldKind::Vector,      kNamedOnly, Range::Size, kSizeHint},  // m: a Box's full edges
+    {"Radius",             FieldKind::Number,      kNamedOnly, Range::Radius, kSizeHint},// m: a Sphere's
+    {"Normal",             FieldKind::Vector,      kNamedOnly, Range::Any},            // a HalfSpace's, out of the region
+    {"Effect",             FieldKind::Effect,      kNamedOnly, Range::Any},            // required
+    {"Law",                FieldKind::DragLaw,     kNamedOnly, Range::Any},            // Linear (default) or Quadratic
+    {"Coefficient",        FieldKind::Number,      kNamedOnly, Range::NonNegative, kDragHint},  // N·s/m or kg/m
+    {"AngularCoefficient", FieldKind::Number,      kNamedOnly, Range::NonNegative, kDragHint},  // N·m·s
+    {"Velocity",           FieldKind::Vector,      kNamedOnly, Range::Any},            // m/s: the fluid's or the wind's
+    {"Gravity",            FieldKind::Vector,      kNamedOnly, Range::Any},            // m/s²: inside a Gravity region
+    {"Density",            FieldKind::Number,      kNamedOnly, Range::Positive, kDensityHint},  // kg/m³: the fluid's
+    {"Strength",           FieldKind::Number,      kNamedOnly, Range::Positive, kStrengthHint}, // N: RandomForce's largest
+    {"Seed",               FieldKind::Number,      kNamedOnly, Range::NonNegative, kSeedHint},  // a whole number
+};
+
 // Joints (docs/config-format.md#joints): named fields only. Bodies are
 // DynamicObject names; points and axes are in WORLD space at the start
 // (the World turns them into each body's frame).
@@ -270,6 +295,7 @@ constexpr RecordSpec kRecords[] = {
     {RecordKind::HingeJoint,       "HingeJoint",       kHingeJointFields},
     {RecordKind::AngularMotor,     "AngularMotor",     kAngularMotorFields},
     {RecordKind::Part,             "Part",             kPartFields},
+    {RecordKind::Region,           "Region",           kRegionFields},
 };
 // clang-format on
 static_assert(std::size(kRecords) == kRecordKindCount, "one record table per RecordKind");
@@ -338,6 +364,26 @@ const std::array<Choice<ExpectCompare>, 3> kCompareChoices = {{
     {"Within", ExpectCompare::Within},
     {"AtLeast", ExpectCompare::AtLeast},
     {"AtMost", ExpectCompare::AtMost},
+}};
+
+const std::array<Choice<RegionShape>, 3> kRegionShapeChoices = {{
+    {"Box", RegionShape::Box},
+    {"Sphere", RegionShape::Sphere},
+    {"HalfSpace", RegionShape::HalfSpace},
+}};
+
+const std::array<Choice<RegionEffect>, 6> kEffectChoices = {{
+    {"Drag", RegionEffect::Drag},
+    {"Wind", RegionEffect::Wind},
+    {"Gravity", RegionEffect::Gravity},
+    {"Buoyancy", RegionEffect::Buoyancy},
+    {"RandomForce", RegionEffect::RandomForce},
+    {"Kill", RegionEffect::Kill},
+}};
+
+const std::array<Choice<DragLaw>, 2> kDragLawChoices = {{
+    {"Linear", DragLaw::Linear},
+    {"Quadratic", DragLaw::Quadratic},
 }};
 
 const std::array<Choice<ContactOrder>, 3> kContactOrderChoices = {{

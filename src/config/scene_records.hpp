@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "config/field_values.hpp"
+#include "forces/region.hpp"
 #include "objects/game_object.hpp"
 #include "world/expectations.hpp"
 #include "core/world_settings.hpp"
@@ -38,6 +39,9 @@ enum class FieldKind : std::uint8_t {
     ContactOrder, ///< A word from kContactOrderChoices.
     Points,      ///< A list of points, each a vector: `Vertices=(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)`.
     File,        ///< A file's path, relative to the scene file's folder: `File=models/ramp.obj`.
+    RegionShape, ///< A word from kRegionShapeChoices (Region records).
+    Effect,      ///< A word from kEffectChoices (Region records).
+    DragLaw,     ///< A word from kDragLawChoices (Region records).
 };
 
 /// @brief firstPositional of a field that can only be given as `Field=Value`.
@@ -69,10 +73,11 @@ enum class RecordKind : std::uint8_t {
     AngularMotor,      ///< A torque-limited spin about one axis.
     MayChange,         ///< A field a student may edit (`stepwise grade --expect` compares the rest with the starter).
     Part,              ///< One part of a `Shape=Compound` body.
+    Region,            ///< A volume with an effect on the bodies inside (src/forces/region.hpp).
 };
 
 /// @brief Number of RecordKind values.
-inline constexpr std::size_t kRecordKindCount = 14;
+inline constexpr std::size_t kRecordKindCount = 15;
 
 /// @brief One record type: its name and its field table.
 struct RecordSpec {
@@ -112,6 +117,15 @@ extern const std::array<Choice<NarrowphaseKind>, 3> kNarrowphaseChoices;
 
 /// @brief Accepted spellings of ContactOrder (any case): Colours (or Colors), Found.
 extern const std::array<Choice<ContactOrder>, 3> kContactOrderChoices;
+
+/// @brief Accepted spellings of RegionShape (any case): Box, Sphere, HalfSpace.
+extern const std::array<Choice<RegionShape>, 3> kRegionShapeChoices;
+
+/// @brief Accepted spellings of RegionEffect (any case): Drag, Wind, Gravity, Buoyancy, RandomForce, Kill.
+extern const std::array<Choice<RegionEffect>, 6> kEffectChoices;
+
+/// @brief Accepted spellings of DragLaw (any case): Linear, Quadratic.
+extern const std::array<Choice<DragLaw>, 2> kDragLawChoices;
 
 /// @brief Every record type, in the order the documentation lists them.
 std::span<const RecordSpec> allRecords();

@@ -23,6 +23,7 @@ void SceneForces::operator()(std::span<DynamicObject> bodies) const {
     applyUniformForces(bodies, gravity);  // sets a = g + a_obj and τ = 0
     applySprings(bodies, springs);        // adds F/m and r × F at each anchor (spring.cpp)
     applyAttractors(bodies, attractors);  // adds −μ·r̂/r² (attractor.cpp)
+    applyRegions(bodies, regions);        // adds drag, wind, buoyancy, ... on the bodies inside (region.cpp)
 }
 
 }  // namespace stepwise

@@ -6,6 +6,7 @@
 #include <span>
 
 #include "forces/attractor.hpp"
+#include "forces/region.hpp"
 #include "forces/spring.hpp"
 #include "objects/game_object.hpp"
 
@@ -39,7 +40,7 @@ void applyUniformForces(std::span<DynamicObject> bodies, const Vec3& gravity);
 /// @brief The AccelerationFunction of a World whose only forces are uniform fields.
 AccelerationFunction uniformForces(const Vec3& gravity);
 
-/// @brief Stage 1 as World::step() runs it: the uniform fields, then every spring, then every attractor.
+/// @brief Stage 1 as World::step() runs it: the uniform fields, then every spring, every attractor, every region.
 ///
 /// A function object, so that it can be an AccelerationFunction and velocity
 /// Verlet evaluates exactly the same forces at the new positions. The World
@@ -50,6 +51,7 @@ struct SceneForces {
     Vec3 gravity{0, 0, 0};                   ///< The World's uniform gravity, m/s².
     std::span<const Spring> springs;         ///< The World's springs (src/forces/spring.hpp).
     std::span<const Attractor> attractors;   ///< The World's attractors (src/forces/attractor.hpp).
+    RegionForces regions;                    ///< The World's regions and who is inside (src/forces/region.hpp).
 
     /// @brief Writes every body's acceleration (m/s²) and torque (N·m) from the bodies' current state.
     void operator()(std::span<DynamicObject> bodies) const;

@@ -195,10 +195,20 @@ void TraceObserver::writeStage(const StageEvent& event, const World& world) {
 
 /// The total acceleration each awake body got, and the force F = m·a it stands for (derived).
 void TraceObserver::writeForces(const std::string& head, const World& world) {
-    for (const DynamicObject& b : world.dynamics()) {
+    const auto& bodies = world.dynamics();
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+        const DynamicObject& b = bodies[i];
         if (b.asleep || !objectSelected(b.name)) continue;
         std::string fields = "F " + vec(b.mass * b.acceleration) + " N  a " + vec(b.acceleration) + " m/s^2";
         if (b.torque != Vec3(0)) fields += "  torque " + vec(b.torque) + " N*m";
+        // The regions that acted on it: known once they have looked for their bodies, after the broadphase
+        std::string inside;
+        for (std::size_t r = 0; r < world.regions().size(); ++r) {
+            const std::span<const std::uint32_t> held = world.regionMembers().of(r);
+            if (!std::binary_search(held.begin(), held.end(), static_cast<std::uint32_t>(i))) continue;
+            inside += (inside.empty() ? "" : ",") + world.regions()[r].name + "(" + toString(world.regions()[r].effect) + ")";
+        }
+        if (!inside.empty()) fields += "  regions " + inside;
         line(head, b.name, fields);
     }
 }

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "forces/attractor.hpp"
+#include "forces/region.hpp"
 #include "forces/spring.hpp"
 #include "dynamics/joints/joint_def.hpp"
 #include "objects/game_object.hpp"
@@ -38,6 +39,7 @@ struct Scene {
     std::vector<CollisionPlane> planes;      ///< Infinite planes.
     std::vector<Spring> springs;             ///< Springs between dynamic bodies (indices into `dynamics`).
     std::vector<Attractor> attractors;       ///< Fixed points pulling by the inverse-square law.
+    std::vector<Region> regions;             ///< Volumes with effects: drag, wind, buoyancy, ... (src/forces/region.hpp).
     std::vector<JointDef> joints;            ///< Joints between dynamic bodies (or to the world), in world space.
     std::vector<std::string> warnings;       ///< Things that load but may surprise (e.g. features not yet simulated).
     std::vector<Expectation> expectations;   ///< `Expect` records: what `stepwise run` checks (World ignores them).

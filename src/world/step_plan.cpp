@@ -6,6 +6,7 @@
 #include <string>
 
 #include "collision/broadphase.hpp"
+#include "forces/kill_region.hpp"
 
 namespace stepwise {
 
@@ -119,6 +120,7 @@ PlanDecision substepForcesOf(const PlanInputs& in) {
     if (in.settings.solver == SolverKind::Impulse) return skip("not in the Impulse pipeline (one step, one force evaluation)");
     if (!in.springs.empty()) return run("runs: springs pull by where their ends are, which changes every substep");
     if (!in.attractors.empty()) return run("runs: attractors pull by where a body is, which changes every substep");
+    if (!in.regions.empty()) return run("runs: regions push by where a body is and how it moves, which change every substep");
     return skip("skipped: only uniform forces (gravity, ConstantAcceleration): the step's a and torque hold for every substep");
 }
 
@@ -166,8 +168,8 @@ PlanDecision islandSubstepsOf(const PlanInputs& in) {
     if (in.settings.solver == SolverKind::Impulse) return skip("not in the Impulse pipeline (it has no substeps)");
     if (!in.settings.substepsPerIsland) return skip("off: SubstepsPerIsland=false, every island runs Substeps");
     if (!in.joints.empty()) return skip("off: joints act in every substep; every island runs Substeps");
-    if (!in.springs.empty() || !in.attractors.empty()) {
-        return skip("off: springs or attractors act in every substep; every island runs Substeps");
+    if (!in.springs.empty() || !in.attractors.empty() || !in.regions.empty()) {
+        return skip("off: springs, attractors or regions act in every substep; every island runs Substeps");
     }
     for (const KinematicsObject& body : in.kinematics) {
         if (body.velocity != Vec3(0) || body.angularVelocity != Vec3(0)) {
@@ -189,6 +191,24 @@ PlanDecision colourOrderOf(const PlanInputs& in) {
     }
     return run("runs (src/dynamics/contact_colours.hpp): each pass takes the contacts colour by colour, no two of a "
                "colour on one dynamic body, so a colour can be solved at once");
+}
+
+/// Regions push the bodies inside them (src/forces/region.hpp); a Kill region removes them.
+PlanDecision regionsOf(const PlanInputs& in) {
+    for (const Region& region : in.regions) {
+        if (region.effect != RegionEffect::Kill) {
+            return run("runs (src/forces/region.cpp): after the broadphase, each region finds the bodies inside it and "
+                       "pushes them, again in every substep");
+        }
+    }
+    return skip("skipped: no region with a force (Drag, Wind, Gravity, Buoyancy, RandomForce)");
+}
+
+PlanDecision killRegionsOf(const PlanInputs& in) {
+    if (anyKillRegion(in.regions)) {
+        return run("runs (src/world/world_regions.cpp): a body whose centre ends a step in a Kill region is removed");
+    }
+    return skip("skipped: no Kill region");
 }
 
 PlanDecision idleSkipOf(const PlanInputs& in) {
@@ -355,6 +375,8 @@ StepPlan makeStepPlan(const PlanInputs& in) {
     }
     plan.islandSubsteps = islandSubstepsOf(in);  // changes the numbers when it runs: a setting, not a skip
     plan.colourOrder = colourOrderOf(in);        // the same
+    plan.regions = regionsOf(in);                // forces, not skips: they run whenever the scene has them
+    plan.killRegions = killRegionsOf(in);
     return plan;
 }
 
@@ -408,6 +430,8 @@ std::string describeStepPlan(const StepPlan& plan) {
     line("packed substeps", plan.packedSubsteps);
     line("substeps per island", plan.islandSubsteps);
     line("colour order", plan.colourOrder);
+    line("regions", plan.regions);
+    line("kill regions", plan.killRegions);
     text += "  broadphase kind       ";
     text += toString(plan.broadphase);
     text += ": ";

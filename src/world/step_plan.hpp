@@ -26,6 +26,7 @@
 #include "dynamics/joints/joint.hpp"
 #include "dynamics/substep_rule.hpp"
 #include "forces/attractor.hpp"
+#include "forces/region.hpp"
 #include "forces/spring.hpp"
 #include "objects/game_object.hpp"
 #include "core/stages.hpp"
@@ -81,6 +82,8 @@ struct StepPlan {
     PlanDecision packedSubsteps;   ///< On the fast path: may a step of balls run its substeps on packed records (src/fast/packed_substeps.hpp)?
     PlanDecision islandSubsteps;   ///< Sequential impulse: does each island get its own count (`SubstepsPerIsland=true`, src/dynamics/substep_rule.hpp)?
     PlanDecision colourOrder;      ///< Sequential impulse: do the passes take the contacts colour by colour (`ContactOrder`, src/dynamics/contact_colours.hpp)?
+    PlanDecision regions;          ///< Do regions push the bodies inside them (src/forces/region.hpp)?
+    PlanDecision killRegions;      ///< Are bodies that end a step in a Kill region removed (src/forces/kill_region.hpp)?
     SolverKind solver = SolverKind::SequentialImpulse; ///< The pipeline the scene runs (pipelineOrder()).
     int substeps = 1;              ///< Substeps of a sequential-impulse step.
     BroadphaseKind broadphase = BroadphaseKind::Auto; ///< The broadphase the scene asks for.
@@ -100,6 +103,7 @@ struct PlanInputs {
     std::span<const CollisionPlane> planes;       ///< Infinite planes.
     std::span<const Spring> springs;              ///< Springs (their anchors may apply torque).
     std::span<const Attractor> attractors;        ///< Attractors (their pull depends on where a body is).
+    std::span<const Region> regions;              ///< Regions (what they do depends on who is inside, and how it moves).
     std::span<const Joint> joints;                ///< Joints, broken ones included.
 };
 

@@ -63,7 +63,8 @@ World::World(Scene scene)
       kinematics_(std::move(scene.kinematics)),
       planes_(std::move(scene.planes)),
       springs_(std::move(scene.springs)),
-      attractors_(std::move(scene.attractors)) {
+      attractors_(std::move(scene.attractors)),
+      regions_(std::move(scene.regions)) {
     require(isFinite(settings_.timeStep) && settings_.timeStep > 0, "World", "time step must be > 0 s");
     require(stepwise::isFinite(settings_.gravity), "World", "gravity must be finite");
     // The limits of core/limits.hpp, which the loader reports at their line and column
@@ -109,6 +110,12 @@ World::World(Scene scene)
         require(isFinite(attractor.mu) && attractor.mu > 0, attractor.name, "Mu must be > 0 m^3/s^2");
         require(stepwise::isFinite(attractor.position), attractor.name, "position must be finite");
     }
+    for (Region& region : regions_) {
+        require(usableDirection(region.normal), region.name, "the region's normal must be a direction of finite length > 0");
+        region.normal /= glm::length(region.normal);
+        require(stepwise::isFinite(region.position) && stepwise::isFinite(region.halfExtents) && isFinite(region.radius),
+                region.name, "position and size must be finite");
+    }
     joints_ = makeJoints(scene.joints, dynamics_, settings_.solver);  // src/dynamics/joints/joint.cpp
     jointLinks(joints_, links_);
     fastWorkspace_ = std::make_unique<FastWorkspace>();
@@ -121,7 +128,7 @@ World& World::operator=(World&&) noexcept = default;
 
 /// The step plan from what the World holds now (src/world/step_plan.cpp); it allocates nothing.
 void World::replan() {
-    plan_ = makeStepPlan({settings_, dynamics_, kinematics_, planes_, springs_, attractors_, joints_});
+    plan_ = makeStepPlan({settings_, dynamics_, kinematics_, planes_, springs_, attractors_, regions_, joints_});
     asleep_ = 0;
     for (DynamicObject& body : dynamics_) {
         body.canTurn = plan_.rotation.runs;  // read by the integrators
@@ -181,10 +188,11 @@ void World::step() {
 /// collisions the move made. Each line is one stage, in its own file.
 void World::stepWithImpulses() {
     const Real h = settings_.timeStep;
-    const SceneForces sceneForces{settings_.gravity, springs_, attractors_};  // gravity, springs, attractors
+    const SceneForces sceneForces{settings_.gravity, springs_, attractors_, regionForces(h)};  // gravity, springs, attractors, regions
     const AccelerationFunction forces = std::cref(sceneForces);  // by reference: no allocation per step
 
     // 1. Forces → accelerations (src/forces/apply_forces.cpp)
+    if (!regions_.empty()) findRegionMembers(false);  // who is inside each region (src/world/world_regions.cpp)
     runStage(Stage::ApplyForces, [&] { forces(dynamics_); });
 
     // 2. Advance dynamic bodies by h (src/integrators/*.cpp)
@@ -221,6 +229,9 @@ void World::stepWithImpulses() {
     // 7. Push overlapping bodies apart (src/dynamics/impulse_resolver.cpp, correctPositions)
     const Real supportStep = positionShareOfVelocityChange(settings_.integrator) * h;
     runStage(Stage::CorrectPositions, [&] { correctPositions(bodies(), contacts_, h, supportStep, contactWorkspace_); });
+
+    // 8. Bodies that ended the step in a Kill region leave the world (src/world/world_regions.cpp)
+    if (plan_.killRegions.runs) removeKilledBodies();
 }
 
 /// Sweep = |v|·h + ½|a|·h²: the distance free flight can carry a body in a
@@ -285,7 +296,7 @@ void World::widenSweepsByKnocks() {
 void World::stepWithSequentialImpulses() {
     const Real h = settings_.timeStep;
     const Real hs = h / Real(settings_.substeps);
-    const SceneForces sceneForces{settings_.gravity, springs_, attractors_};  // gravity, springs, attractors
+    const SceneForces sceneForces{settings_.gravity, springs_, attractors_, regionForces(hs)};  // gravity, springs, attractors, regions
     const AccelerationFunction forces = std::cref(sceneForces);  // by reference: no allocation per step
     const ContactSolverSettings contactSettings = makeContactSolverSettings(settings_, hs);
     const JointSolverSettings jointSettings = jointSolverSettings(settings_, hs);
@@ -294,6 +305,7 @@ void World::stepWithSequentialImpulses() {
     //    springs or attractors make them depend on where the bodies are (step_plan.hpp).
     //    How far each body can move this step sets how far ahead contacts are looked for.
     runStage(Stage::ApplyForces, [&] {
+        regionMembers_.start.clear();  // who is inside is found after the broadphase (1b)
         forces(dynamics_);
         measureSweeps(h);
         if (settings_.continuousCollision) recordStartPositions(bodies(), sweepWorkspace_);  // for stage 7b
@@ -307,6 +319,16 @@ void World::stepWithSequentialImpulses() {
         // What a joint holds does not collide (joint.hpp)
         if (plan_.jointSolver.runs) dropJointedPairs(joints_, jointWorkspace_, pairs_);
     });
+
+    // 1b. The regions' pushes: who is inside each, asked of the broadphase, and what the region does
+    //     to them (src/world/world_regions.cpp, src/forces/region.cpp). The bodies have not moved
+    //     since stage 1, so these add to its accelerations what a full evaluation would.
+    if (plan_.regions.runs) {
+        runStage(Stage::ApplyForces, [&] {
+            findRegionMembers(plan_.runs(Stage::Broadphase));  // a scene that cannot collide keeps no structure
+            applyRegions(dynamics_, sceneForces.regions);
+        });
+    }
 
     // 3. Which of them touch, or are about to (src/collision/narrowphase.cpp → *_*.cpp)
     runStage(Stage::Narrowphase, [&] {
@@ -400,6 +422,9 @@ void World::stepWithSequentialImpulses() {
     if (settings_.sleeping) {
         runStage(Stage::Sleep, [&] { asleep_ = updateSleep(bodies(), contacts_, links_, settings_, islandWorkspace_); });
     }
+
+    // 10. Bodies that ended the step in a Kill region leave the world (src/world/world_regions.cpp)
+    if (plan_.killRegions.runs) removeKilledBodies();
 }
 
 /// Stages 5–7 for each group of islands that share a count n (src/dynamics/substep_rule.hpp): the

@@ -22,6 +22,8 @@
 #include "dynamics/joints/joint.hpp"
 #include "dynamics/substep_rule.hpp"
 #include "forces/apply_forces.hpp"
+#include "forces/kill_region.hpp"
+#include "forces/region.hpp"
 #include "objects/body_set.hpp"
 #include "world/scene.hpp"
 #include "world/step_observer.hpp"
@@ -73,6 +75,11 @@ public:
     const std::vector<CollisionPlane>& planes() const { return planes_; }     ///< Infinite planes.
     const std::vector<Spring>& springs() const { return springs_; }           ///< Springs (src/forces/spring.hpp).
     const std::vector<Attractor>& attractors() const { return attractors_; }  ///< Central forces (src/forces/attractor.hpp).
+    const std::vector<Region>& regions() const { return regions_; }  ///< Volumes with effects (src/forces/region.hpp).
+    /// @brief Which bodies each region held in the last step (src/forces/region.hpp, RegionMembers).
+    const RegionMembers& regionMembers() const { return regionMembers_; }
+    /// @brief The bodies Kill regions have removed so far, in the order they went (src/forces/kill_region.hpp).
+    const std::vector<RemovedBody>& removedBodies() const { return removedBodies_; }
     const IslandWorkspace& islands() const { return islandWorkspace_; }  ///< Islands of the last step (islandOf()).
     const std::vector<Joint>& joints() const { return joints_; }              ///< Joints, broken ones included.
 
@@ -139,6 +146,9 @@ private:
     void runFastPath(const AccelerationFunction& forces, const ContactSolverSettings& contactSettings,
                      const JointSolverSettings& jointSettings);
     void runIslandGroups(const AccelerationFunction& forces);
+    void findRegionMembers(bool throughBroadphase);  // world_regions.cpp
+    RegionForces regionForces(Real substepTime) const;  // world_regions.cpp
+    void removeKilledBodies();                       // world_regions.cpp
     BodySet bodies();
 
     WorldSettings settings_;
@@ -147,6 +157,10 @@ private:
     std::vector<CollisionPlane> planes_;
     std::vector<Spring> springs_;
     std::vector<Attractor> attractors_;
+    std::vector<Region> regions_;              ///< Volumes with effects (src/forces/region.hpp).
+    RegionMembers regionMembers_;              ///< Who each region holds this step.
+    std::vector<std::uint32_t> regionCandidates_;  ///< Scratch: the broadphase's answer for one region.
+    std::vector<RemovedBody> removedBodies_;   ///< What Kill regions took, for the run's summary.
     std::vector<Joint> joints_;
 
     Broadphase broadphase_;

@@ -43,6 +43,7 @@ void SceneForces::operator()(std::span<DynamicObject> bodies) const {
     applyUniformForces(bodies, gravity);  // sets a = g + a_obj and tau = 0
     applySprings(bodies, springs);        // adds F/m and r x F at each anchor (spring.cpp)
     applyAttractors(bodies, attractors);  // adds -mu r/|r|^3 (attractor.cpp)
+    applyRegions(bodies, regions);        // adds drag, wind, buoyancy, ... on the bodies inside (region.cpp)
 }
 
 }  // namespace stepwise
