@@ -52,6 +52,8 @@ constexpr std::string_view kDragHint =
 constexpr std::string_view kDensityHint = "a fluid's density in kg/m^3, e.g. 1000 for water, 1.2 for air";
 constexpr std::string_view kStrengthHint = "the largest random force, in newtons";
 constexpr std::string_view kSeedHint = "a whole number from 0 to 2^53; the same seed gives the same run";
+constexpr std::string_view kTimeScaleHint =
+    "simulated seconds per second of the shared clock: 0.5 runs at half speed, 2 at double; it must be positive";
 constexpr std::string_view kHeightHint =
     "Height is a capsule's segment between its two ball centres, or a cylinder's full length, in metres";
 
@@ -75,6 +77,7 @@ constexpr FieldSpec kDynamicFields[] = {
     {"Height",          FieldKind::Number,     kNamedOnly, Range::Length, kHeightHint}, // m, Capsule and Cylinder
     {"Vertices",        FieldKind::Points,     kNamedOnly, Range::Any},              // m, Hull: the points it wraps
     {"File",            FieldKind::File,       kNamedOnly, Range::Any},              // an OBJ file: Hull points
+    {"Space",           FieldKind::Name,       kNamedOnly, Range::Any},              // a Space record's Name
 };
 
 /// KinematicsObject: 10 positional values (no velocity, mass or radius among them).
@@ -93,6 +96,7 @@ constexpr FieldSpec kKinematicFields[] = {
     {"Height",          FieldKind::Number,     kNamedOnly, Range::Length, kHeightHint}, // m, Capsule and Cylinder
     {"Vertices",        FieldKind::Points,     kNamedOnly, Range::Any},              // m, Hull
     {"File",            FieldKind::File,       kNamedOnly, Range::Any},              // an OBJ file: Hull points, Mesh triangles
+    {"Space",           FieldKind::Name,       kNamedOnly, Range::Any},              // a Space record's Name
 };
 
 /// Part: one part of a Shape=Compound body (docs/config-format.md#part), named fields only.
@@ -120,6 +124,7 @@ constexpr FieldSpec kPlaneFields[] = {
     {"Color",           FieldKind::Color,      kNamedOnly, Range::UnitInterval},
     {"Elasticity",      FieldKind::Number,     kNamedOnly, Range::UnitInterval, kElasticityHint},
     {"Friction",        FieldKind::Number,     kNamedOnly, Range::NonNegative, kFrictionHint},
+    {"Space",           FieldKind::Name,       kNamedOnly, Range::Any},              // a Space record's Name
 };
 
 /// World: simulation settings, named fields only.
@@ -157,6 +162,25 @@ constexpr FieldSpec kWorldFields[] = {
     {"Threads",             FieldKind::Number,  kNamedOnly, Range::ThreadCount},      // 0: one per hardware thread
     {"Narrowphase",         FieldKind::Narrowphase, kNamedOnly, Range::Any},          // convex pairs: Auto, GjkEpa, Mpr
 };
+
+/// Space: a simulation of its own (src/world/spaces.hpp): its name, how fast it runs against the
+/// shared clock, whether it starts paused, then every World field but Duration (the loader refuses
+/// that one: the run's length is the World record's), over the World record's values.
+constexpr FieldSpec kSpaceOwnFields[] = {
+    {"Name",            FieldKind::Name,       kNamedOnly, Range::Any},              // required
+    {"TimeScale",       FieldKind::Number,     kNamedOnly, Range::Positive, kTimeScaleHint},
+    {"Paused",          FieldKind::Boolean,    kNamedOnly, Range::Any},
+};
+
+/// The rows of two tables, one after the other, as one table.
+template <std::size_t A, std::size_t B>
+constexpr std::array<FieldSpec, A + B> joined(const FieldSpec (&a)[A], const FieldSpec (&b)[B]) {
+    std::array<FieldSpec, A + B> rows{};
+    for (std::size_t i = 0; i < A; ++i) rows[i] = a[i];
+    for (std::size_t i = 0; i < B; ++i) rows[A + i] = b[i];
+    return rows;
+}
+constexpr auto kSpaceFields = joined(kSpaceOwnFields, kWorldFields);
 
 /// Expect: one checked outcome (src/world/expectations.hpp), named fields only.
 /// Exactly one quantity field (Position … NotThroughPlane) per record; at most
@@ -197,6 +221,7 @@ constexpr FieldSpec kAttractorFields[] = {
     {"Name",            FieldKind::Name,       kNamedOnly, Range::Any},
     {"Position",        FieldKind::Vector,     kNamedOnly, Range::Any},              // m
     {"Mu",              FieldKind::Number,     kNamedOnly, Range::Positive, kMuHint},  // m³/s², required
+    {"Space",           FieldKind::Name,       kNamedOnly, Range::Any},              // a Space record's Name
 };
 
 /// Region: a volume with an effect (src/forces/region.hpp), named fields only. Which fields an
@@ -217,6 +242,7 @@ constexpr FieldSpec kRegionFields[] = {
     {"Density",            FieldKind::Number,      kNamedOnly, Range::Positive, kDensityHint},  // kg/m³: the fluid's
     {"Strength",           FieldKind::Number,      kNamedOnly, Range::Positive, kStrengthHint}, // N: RandomForce's largest
     {"Seed",               FieldKind::Number,      kNamedOnly, Range::NonNegative, kSeedHint},  // a whole number
+    {"Space",           FieldKind::Name,       kNamedOnly, Range::Any},              // a Space record's Name
 };
 
 // Joints (docs/config-format.md#joints): named fields only. Bodies are
@@ -295,6 +321,7 @@ constexpr RecordSpec kRecords[] = {
     {RecordKind::HingeJoint,       "HingeJoint",       kHingeJointFields},
     {RecordKind::AngularMotor,     "AngularMotor",     kAngularMotorFields},
     {RecordKind::Part,             "Part",             kPartFields},
+    {RecordKind::Space,            "Space",            kSpaceFields},
     {RecordKind::Region,           "Region",           kRegionFields},
 };
 // clang-format on

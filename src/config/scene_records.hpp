@@ -73,11 +73,12 @@ enum class RecordKind : std::uint8_t {
     AngularMotor,      ///< A torque-limited spin about one axis.
     MayChange,         ///< A field a student may edit (`stepwise grade --expect` compares the rest with the starter).
     Part,              ///< One part of a `Shape=Compound` body.
+    Space,             ///< A simulation of its own, beside the others (src/world/spaces.hpp).
     Region,            ///< A volume with an effect on the bodies inside (src/forces/region.hpp).
 };
 
 /// @brief Number of RecordKind values.
-inline constexpr std::size_t kRecordKindCount = 15;
+inline constexpr std::size_t kRecordKindCount = 16;
 
 /// @brief One record type: its name and its field table.
 struct RecordSpec {
