@@ -275,6 +275,9 @@ private:
             case FieldKind::ContactOrder:
                 readChoice(field, slot, value, wordsOf(kContactOrderChoices));
                 break;
+            case FieldKind::Combine:
+                readChoice(field, slot, value, wordsOf(kCombineChoices));
+                break;
             case FieldKind::Points:
                 openList_ = &field;
                 openListSlot_ = ref.field;

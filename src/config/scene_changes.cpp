@@ -67,6 +67,7 @@ int choiceMeaning(FieldKind kind, std::size_t index) {
         case FieldKind::Compare: return static_cast<int>(kCompareChoices.at(index).value);
         case FieldKind::Narrowphase: return static_cast<int>(kNarrowphaseChoices.at(index).value);
         case FieldKind::ContactOrder: return static_cast<int>(kContactOrderChoices.at(index).value);
+        case FieldKind::Combine: return static_cast<int>(kCombineChoices.at(index).value);
         default: return static_cast<int>(index);
     }
 }

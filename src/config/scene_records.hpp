@@ -38,6 +38,7 @@ enum class FieldKind : std::uint8_t {
     ContactOrder, ///< A word from kContactOrderChoices.
     Points,      ///< A list of points, each a vector: `Vertices=(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)`.
     File,        ///< A file's path, relative to the scene file's folder: `File=models/ramp.obj`.
+    Combine,     ///< A word from kCombineChoices: `FrictionCombine=GeometricMean`.
 };
 
 /// @brief firstPositional of a field that can only be given as `Field=Value`.
@@ -69,10 +70,12 @@ enum class RecordKind : std::uint8_t {
     AngularMotor,      ///< A torque-limited spin about one axis.
     MayChange,         ///< A field a student may edit (`stepwise grade --expect` compares the rest with the starter).
     Part,              ///< One part of a `Shape=Compound` body.
+    Material,          ///< Density, friction and elasticity that objects share (src/objects/materials.hpp).
+    MaterialPair,      ///< The friction and elasticity of contacts between two materials.
 };
 
 /// @brief Number of RecordKind values.
-inline constexpr std::size_t kRecordKindCount = 14;
+inline constexpr std::size_t kRecordKindCount = 16;
 
 /// @brief One record type: its name and its field table.
 struct RecordSpec {
@@ -112,6 +115,9 @@ extern const std::array<Choice<NarrowphaseKind>, 3> kNarrowphaseChoices;
 
 /// @brief Accepted spellings of ContactOrder (any case): Colours (or Colors), Found.
 extern const std::array<Choice<ContactOrder>, 3> kContactOrderChoices;
+
+/// @brief Accepted spellings of CombineRule (any case): Product, Min, Max, Average, GeometricMean.
+extern const std::array<Choice<CombineRule>, 5> kCombineChoices;
 
 /// @brief Every record type, in the order the documentation lists them.
 std::span<const RecordSpec> allRecords();

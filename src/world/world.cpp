@@ -63,7 +63,8 @@ World::World(Scene scene)
       kinematics_(std::move(scene.kinematics)),
       planes_(std::move(scene.planes)),
       springs_(std::move(scene.springs)),
-      attractors_(std::move(scene.attractors)) {
+      attractors_(std::move(scene.attractors)),
+      materials_(settings_, scene.materials.size(), scene.materialPairs) {
     require(isFinite(settings_.timeStep) && settings_.timeStep > 0, "World", "time step must be > 0 s");
     require(stepwise::isFinite(settings_.gravity), "World", "gravity must be finite");
     // The limits of core/limits.hpp, which the loader reports at their line and column
@@ -121,7 +122,7 @@ World& World::operator=(World&&) noexcept = default;
 
 /// The step plan from what the World holds now (src/world/step_plan.cpp); it allocates nothing.
 void World::replan() {
-    plan_ = makeStepPlan({settings_, dynamics_, kinematics_, planes_, springs_, attractors_, joints_});
+    plan_ = makeStepPlan({settings_, dynamics_, kinematics_, planes_, springs_, attractors_, joints_, &materials_});
     asleep_ = 0;
     for (DynamicObject& body : dynamics_) {
         body.canTurn = plan_.rotation.runs;  // read by the integrators
@@ -149,7 +150,7 @@ const DynamicObject* World::findDynamic(std::string_view name) const {
     return nullptr;
 }
 
-BodySet World::bodies() { return {dynamics_, kinematics_, planes_}; }
+BodySet World::bodies() { return {dynamics_, kinematics_, planes_, &materials_}; }
 
 void World::step() {
     for (StageRecord& record : stageRecords_) {

@@ -148,6 +148,7 @@ private:
     std::vector<Spring> springs_;
     std::vector<Attractor> attractors_;
     std::vector<Joint> joints_;
+    ContactMaterials materials_;  ///< The combine rules and material pairs every contact's preparation reads.
 
     Broadphase broadphase_;
     std::vector<CandidatePair> pairs_;
