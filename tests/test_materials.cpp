@@ -103,7 +103,7 @@ TEST_CASE("Density gives a sphere 4/3 pi r^3 rho and a box abc rho, and the iner
     CHECK_THAT(world.dynamics()[0].inertiaBody.x, WithinRel(double(Real(0.4) * ball * Real(0.09)), 1e-12));
 }
 
-TEST_CASE("Density fills a capsule, a compound body and a part", "[materials]") {
+TEST_CASE("Density fills a capsule, a compound body, a part and a hull", "[materials]") {
     const Scene scene = parseScene(
         "DynamicObject, Name=pill, Shape=Capsule, Radius=0.1, Height=0.5, Density=1000\n"
         "DynamicObject, Name=ell, Shape=Compound, Density=250\n"
@@ -111,12 +111,14 @@ TEST_CASE("Density fills a capsule, a compound body and a part", "[materials]") 
         "Part, Body=ell, Shape=Box, Position=(0.5, 1, 0), Scale=(1, 1, 1)\n"
         "DynamicObject, Name=hammer, Shape=Compound\n"
         "Part, Body=hammer, Shape=Box, Scale=(0.1, 0.1, 0.1), Density=7850\n"
-        "Part, Body=hammer, Shape=Cylinder, Radius=0.02, Height=0.3, Position=(0, -0.2, 0), Mass=0.2\n",
+        "Part, Body=hammer, Shape=Cylinder, Radius=0.02, Height=0.3, Position=(0, -0.2, 0), Mass=0.2\n"
+        "DynamicObject, Name=corner, Shape=Hull, Vertices=(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1), Density=600\n",
         kSource);
     const Real pill = (kPi * Real(0.01) * Real(0.5) + Real(4) / 3 * kPi * Real(0.001)) * 1000;
     CHECK_THAT(scene.dynamics[0].mass, WithinRel(double(pill), 1e-12));
     CHECK_THAT(scene.dynamics[1].mass, WithinRel(3 * 250.0, 1e-12));  // 3 m³ of parts
     CHECK_THAT(scene.dynamics[2].mass, WithinRel(0.001 * 7850 + 0.2, 1e-12));
+    CHECK_THAT(scene.dynamics[3].mass, WithinRel(600.0 / 6, 1e-12));  // the unit corner tetrahedron: V = 1/6 m³
 }
 
 TEST_CASE("An object's own Friction, Elasticity and Mass win over its material's", "[materials]") {
@@ -160,6 +162,9 @@ TEST_CASE("Mass and Density on one object is an error at the Density", "[materia
           "Mass is given at column 32; with Density the mass is density x the shape's volume");
     CHECK_THAT(loadError("DynamicObject, Name=c, Shape=Compound, Mass=1\nPart, Body=c, Mass=1, Density=2\n"),
                Contains("materials.scene:2:31: error: Density: expected either Mass or Density, not both"));
+    // A density whose mass the World cannot take: 1e-20 kg/m³ × 0.52 m³ is below 1e-12 kg.
+    CHECK_THAT(loadError("DynamicObject, Density=1e-20\n"),
+               Contains("1:24: error: Density: expected a mass from 1e-12 to 1e12 kg as density x volume"));
     // A hollow sphere has no volume for a density.
     CHECK_THAT(loadError("DynamicObject, Hollow=true, Density=100\n"),
                Contains("1:37: error: Density: expected Mass for a hollow sphere"));
