@@ -10,6 +10,7 @@
 #include "forces/spring.hpp"
 #include "dynamics/joints/joint_def.hpp"
 #include "objects/game_object.hpp"
+#include "objects/materials.hpp"
 #include "world/expectations.hpp"
 #include "core/world_settings.hpp"
 
@@ -44,6 +45,8 @@ struct Scene {
     std::vector<std::string> warnings;       ///< Things that load but may surprise (e.g. features not yet simulated).
     std::vector<Expectation> expectations;   ///< `Expect` records: what `stepwise run` checks (World ignores them).
     std::vector<MayChange> mayChange;        ///< `MayChange` records: what `stepwise grade` lets a student edit.
+    std::vector<Material> materials;         ///< `Material` records, in file order (objects' `material` indexes them).
+    std::vector<MaterialPair> materialPairs; ///< `MaterialPair` records: pairs with their own μ or e.
 };
 
 }  // namespace stepwise
