@@ -57,6 +57,7 @@ figures=(
     "10-gjk-bounds.png:gjk_bounds"
     "11-mpr-depth.png:mpr_depth"
     "12-capsule-roll.png:capsule_roll"
+    "13-terminal-speed.png:terminal_speed"
 )
 if [[ $list == 1 ]]; then
     for entry in "${figures[@]}"; do echo "${entry%%:*}"; done
@@ -187,6 +188,12 @@ capsule_roll() {
     plot config/lesson12_capsule_ramp.scene --quantity velocity --object capsule,cylinder --component norm \
         --data "$work/capsule-roll.csv"
     draw 12-capsule-roll.gp "$1"
+}
+
+terminal_speed() {
+    plot config/lesson13_terminal_speed.scene --quantity velocity --object stokes,newton --component norm \
+        --data "$work/terminal-speed.csv"
+    draw 13-terminal-speed.gp "$1"
 }
 
 gjk_bounds() {

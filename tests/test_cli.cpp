@@ -85,6 +85,18 @@ TEST_CASE("check validates a scene and describes it", "[cli]") {
                              Contains("Mass") && Contains("nothing was loaded"));
 }
 
+TEST_CASE("check lists a scene's materials, its pairs and its combine rules", "[cli][materials]") {
+    const Result r = runStepwise("check '" + kSourceDir + "/config/lesson07_materials.scene'");
+    CHECK(r.exitCode == 0);
+    CHECK_THAT(r.output, Contains("3 material(s), 1 pair(s); contacts combine friction by GeometricMean") &&
+                             Contains("mass 137.5 kg") &&  // rubber: 1100 kg/m^3 x 0.125 m^3
+                             Contains("Material         ice              density 917 kg/m^3") &&
+                             Contains("MaterialPair     ice / wood       friction 0.15, elasticity -"));
+    // A scene without materials says nothing about them.
+    const Result classic = runStepwise("check '" + kSourceDir + "/config/lesson03_bounce.scene'");
+    CHECK_THAT(classic.output, !Contains("material"));
+}
+
 TEST_CASE("run --csv writes the header, the initial state and every K-th step", "[cli]") {
     TempFile csv("trajectory.csv");
     const std::string scene = "'" + kSourceDir + "/config/lesson03_collisions.scene'";

@@ -93,7 +93,7 @@ TEST_CASE("The World's force stage is gravity plus springs plus attractors", "[f
     Attractor sun;  // at (0, 0, 0), μ = 8: a = −μ/r² x̂ = (−2, 0, 0) m/s²
     sun.mu = 8;
     const SceneForces forces{Vec3(0, -9.81, 0), std::span<const Spring>(&spring, 1),
-                             std::span<const Attractor>(&sun, 1)};
+                             std::span<const Attractor>(&sun, 1), RegionForces{}};  // no regions
     bodies[0].torque = Vec3(1, 2, 3);  // stale: the stage must reset it
     forces(bodies);
     CHECK(glm::length(bodies[0].acceleration - Vec3(-1.5 - 2, -9.81, 0)) < 1e-12);

@@ -7,7 +7,7 @@
 #   interactive:  gdb -x lectures/gdb/07a-no-resting-rule.gdb --args build/debug/stepwise run /tmp/rest_Euler.scene --duration 10
 #   all at once:  gdb -q -batch -x lectures/gdb/07a-no-resting-rule.gdb --args build/debug/stepwise run /tmp/rest_Euler.scene --duration 10
 source lectures/gdb/stepwise.py
-break-at impulse_resolver.cpp "const Real e = c.resting ? Real(0) : combineElasticity(a.elasticity, other.elasticity);"
+break-at impulse_resolver.cpp "const Real e = c.resting ? Real(0) : material.elasticity;"
 commands
 silent
 set var c.resting = approachAtTouch <= 0

@@ -61,6 +61,13 @@ void printSceneHeader(const std::string& path, const Scene& scene) {
                 scene.planes.size());
     if (!scene.joints.empty()) std::printf(", %zu joint(s) at %.3g Hz", scene.joints.size(), double(jointHertzInUse(s)));
     std::printf("\n");
+    // Said only when the scene departs from the products, so the classic scenes print as before.
+    const bool rules = s.frictionCombine != CombineRule::Product || s.elasticityCombine != CombineRule::Product;
+    if (rules || !scene.materials.empty()) {
+        std::printf("  %zu material(s), %zu pair(s); contacts combine friction by %s, elasticity by %s\n",
+                    scene.materials.size(), scene.materialPairs.size(), toString(s.frictionCombine),
+                    toString(s.elasticityCombine));
+    }
 }
 
 class Progress {
@@ -568,6 +575,21 @@ int checkCommand(const std::string& scenePath) {
     for (const CollisionPlane& p : scene->planes) {
         std::printf("  CollisionPlane   %-16s through %s m, normal %s\n", p.name.c_str(), vec(p.position).c_str(),
                     vec(p.normal).c_str());
+    }
+    // "-" for a value the material leaves to each object's own default.
+    const auto optional = [](const std::optional<Real>& value) {
+        char text[32] = "-";
+        if (value) std::snprintf(text, sizeof text, "%.6g", double(*value));
+        return std::string(text);
+    };
+    for (const Material& m : scene->materials) {
+        std::printf("  Material         %-16s density %s kg/m^3, friction %s, elasticity %s\n", m.name.c_str(),
+                    optional(m.density).c_str(), optional(m.friction).c_str(), optional(m.elasticity).c_str());
+    }
+    for (const MaterialPair& pair : scene->materialPairs) {
+        const std::string names = scene->materials[pair.a].name + " / " + scene->materials[pair.b].name;
+        std::printf("  MaterialPair     %-16s friction %s, elasticity %s\n", names.c_str(), optional(pair.friction).c_str(),
+                    optional(pair.elasticity).c_str());
     }
     for (const Expectation& e : scene->expectations) std::printf("  Expect (line %d)  %s\n", e.line, describe(e).c_str());
     for (const MayChange& m : scene->mayChange) {

@@ -284,6 +284,9 @@ private:
             case FieldKind::DragLaw:
                 readChoice(field, slot, value, wordsOf(kDragLawChoices));
                 break;
+            case FieldKind::Combine:
+                readChoice(field, slot, value, wordsOf(kCombineChoices));
+                break;
             case FieldKind::Points:
                 openList_ = &field;
                 openListSlot_ = ref.field;

@@ -70,6 +70,7 @@ int choiceMeaning(FieldKind kind, std::size_t index) {
         case FieldKind::RegionShape: return static_cast<int>(kRegionShapeChoices.at(index).value);
         case FieldKind::Effect: return static_cast<int>(kEffectChoices.at(index).value);
         case FieldKind::DragLaw: return static_cast<int>(kDragLawChoices.at(index).value);
+        case FieldKind::Combine: return static_cast<int>(kCombineChoices.at(index).value);
         default: return static_cast<int>(index);
     }
 }

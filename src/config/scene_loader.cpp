@@ -13,7 +13,10 @@
 /// from its scale, a plane's normal must not be zero, names are unique, there
 /// is at most one World record, a Spring's or a joint's bodies exist (they
 /// may come later in the file, so springs and joints are resolved at the
-/// end). Every problem is collected; only a file with none becomes a Scene.
+/// end), an object's Material exists (Material records are read before every
+/// other record, parseScene(), so they too may come anywhere), and a mass comes
+/// from Mass or from Density, never both. Every problem is collected; only a
+/// file with none becomes a Scene.
 /// Last, springs too stiff for the time step are *warned* about (Scene::warnings).
 #include "config/scene_loader.hpp"
 
@@ -73,8 +76,9 @@ constexpr std::string_view kHeightMeaning =
 constexpr Real kDynamicElasticity = Real(0.5);
 constexpr Real kDynamicFriction = Real(0.5);
 /// Static things (kinematic objects, planes) default to 1 because contact
-/// coefficients combine by product, e = e_A · e_B and μ = μ_A · μ_B: with 1 on
-/// the static side, the dynamic body's own value is the one that acts.
+/// coefficients combine by product by default, e = e_A · e_B and μ = μ_A · μ_B: with 1 on
+/// the static side, the dynamic body's own value is the one that acts (under the
+/// World's other combine rules only Min keeps it so; objects/materials.hpp).
 constexpr Real kStaticElasticity = 1;
 constexpr Real kStaticFriction = 1;
 
@@ -241,7 +245,16 @@ public:
                 break;
             case RecordKind::Region: addRegion(values, line, index); break;
             case RecordKind::Space: addSpace(values, line, index); break;
+            case RecordKind::Material: addMaterial(values, line, index); break;
+            case RecordKind::MaterialPair: addMaterialPair(values, line, index); break;
         }
+    }
+
+    /// Does @p line declare a Material? parseScene() adds those first, so an object may name a
+    /// material declared anywhere in the file.
+    static bool declaresMaterial(const SceneLine& line) {
+        const RecordSpec* spec = findRecord(line.tokens.front().text);
+        return spec != nullptr && spec->kind == RecordKind::Material;
     }
 
     /// The finished Scene, or ConfigError with every problem found.
@@ -271,6 +284,8 @@ private:
         int line = 0;             ///< Its line.
         int column = 0;           ///< Column of its Shape value.
         int massColumn = 0;       ///< Column of its Mass value; 0 when not given.
+        std::optional<Real> density;  ///< kg/m³ that makes its mass, its own or its material's; nullopt: none.
+        int densityColumn = 0;    ///< Column of its own Density value; 0 when not given (or from its material).
     };
 
     /// A Part record as read, before it is joined to its compound.
@@ -303,8 +318,11 @@ private:
         body.scale = values.triple("Scale", kUnitScale);
         body.radius = values.number("Radius", kRadiusPerDiameter * body.scale.x);
         body.setMass(values.number("Mass", kDefaultMass));
-        body.elasticity = values.number("Elasticity", kDynamicElasticity);
-        body.friction = values.number("Friction", kDynamicFriction);
+        // The object's own fields win over its material's, which win over the format's defaults.
+        const Material* material = materialOf(values, line, body.material);
+        body.elasticity = values.number("Elasticity", materialValue(material, &Material::elasticity, kDynamicElasticity));
+        body.friction = values.number("Friction", materialValue(material, &Material::friction, kDynamicFriction));
+        const std::optional<Real> density = densityOf(values, line, material);
         body.orientation = orientationFromDegrees(values.triple("Rotation", kZero));
         body.angularVelocity = values.triple("AngularVelocity", kZero);
         body.hollow = values.choice<bool>("Hollow", kBooleanChoices, kDefaultHollow);
@@ -332,8 +350,13 @@ private:
                 }
             } else if (body.shape == Shape::Compound) {
                 pendingCompounds_.push_back({true, scene_.dynamics.size(), line.number, shapeColumn(values, line),
-                                             values.isSet("Mass") ? values.valueColumn("Mass") : 0});
+                                             values.isSet("Mass") ? values.valueColumn("Mass") : 0, density,
+                                             values.isSet("Density") ? values.valueColumn("Density") : 0});
             }
+            // A compound's volume is known once its parts are (shareMass()).
+            const bool solid = body.shape != Shape::Compound && body.shape != Shape::Mesh &&
+                               (body.shape != Shape::Hull || body.hull != nullptr);
+            if (density && solid) setMassFromDensity(body, *density, values, line);
         }
         moveTo(body, frame);
         dynamicFrames_.push_back(frame);
@@ -353,8 +376,9 @@ private:
         mover.velocity = values.triple("Velocity", kZero);
         mover.angularVelocity = values.triple("AngularVelocity", kZero);
         mover.orientation = orientationFromDegrees(values.triple("Rotation", kZero));
-        mover.elasticity = values.number("Elasticity", kStaticElasticity);
-        mover.friction = values.number("Friction", kStaticFriction);
+        const Material* material = materialOf(values, line, mover.material);
+        mover.elasticity = values.number("Elasticity", materialValue(material, &Material::elasticity, kStaticElasticity));
+        mover.friction = values.number("Friction", materialValue(material, &Material::friction, kStaticFriction));
         mover.height = values.number("Height", mover.scale.y);
         if (checkShapeFields(values, line, mover.shape)) {
             if (mover.shape == Shape::Hull) {
@@ -369,11 +393,133 @@ private:
                     mover.scale = kUnitScale;
                 }
             } else if (mover.shape == Shape::Compound) {
-                pendingCompounds_.push_back({false, scene_.kinematics.size(), line.number, shapeColumn(values, line), 0});
+                pendingCompounds_.push_back({false, scene_.kinematics.size(), line.number, shapeColumn(values, line), 0,
+                                             std::nullopt, 0});
             }
         }
         noteSpace(values, line.number, kinematicSpaceRefs_);
         scene_.kinematics.push_back(std::move(mover));
+    }
+
+    // ---------------------------------------------------------- materials
+
+    /// A Material record: Name is required, every value optional. parseScene() adds the
+    /// Material records before any other, so the objects of the whole file can name them.
+    void addMaterial(const RecordValues& values, const SceneLine& line, int index) {
+        if (!values.isSet("Name")) {
+            sink_.report(line.number, line.tokens.front().column, "Name", "a Name for the Material", lineText(line),
+                         "objects name their material, e.g. Material, Name=rubber, Density=1100, Friction=0.9, "
+                         "Elasticity=0.8 and DynamicObject, Material=rubber");
+        }
+        Material material;
+        material.name = claimName(values, line, index);
+        const auto optional = [&](std::string_view field) {
+            return values.isSet(field) ? std::optional<Real>(values.number(field, 0)) : std::nullopt;
+        };
+        material.density = optional("Density");
+        material.friction = optional("Friction");
+        material.elasticity = optional("Elasticity");
+        materialIndex_.emplace(toLower(material.name), static_cast<std::uint32_t>(scene_.materials.size()));
+        scene_.materials.push_back(std::move(material));
+    }
+
+    /// A MaterialPair record: two materials (A and B, in either order) and the Friction or
+    /// Elasticity, or both, of their contacts.
+    void addMaterialPair(const RecordValues& values, const SceneLine& line, int index) {
+        (void)claimName(values, line, index);
+        MaterialPair pair;
+        std::uint32_t a = kNoMaterial;
+        std::uint32_t b = kNoMaterial;
+        const Material* materialA = materialOf(values, line, a, "A");
+        const Material* materialB = materialOf(values, line, b, "B");
+        for (const std::string_view side : {"A", "B"}) {
+            if (values.isSet(side)) continue;
+            sink_.report(line.number, line.tokens.front().column, std::string(side), "the Name of a Material",
+                         lineText(line), "a pair names two materials, e.g. MaterialPair, A=rubber, B=ice, Friction=0.05");
+        }
+        if (!values.isSet("Friction") && !values.isSet("Elasticity")) {
+            sink_.report(line.number, line.tokens.front().column, "MaterialPair", "Friction=..., Elasticity=... or both",
+                         lineText(line), "a pair gives its contacts their own coefficients; without any it changes nothing");
+        }
+        if (materialA == nullptr || materialB == nullptr) return;
+        pair.a = a;
+        pair.b = b;
+        if (values.isSet("Friction")) pair.friction = values.number("Friction", 0);
+        if (values.isSet("Elasticity")) pair.elasticity = values.number("Elasticity", 0);
+        scene_.materialPairs.push_back(pair);
+    }
+
+    /// The Material that @p field names, with its index in @p index; nullptr (and kNoMaterial) when the
+    /// record names none, or after reporting a name no Material has.
+    const Material* materialOf(const RecordValues& values, const SceneLine& line, std::uint32_t& index,
+                               std::string_view field = "Material") {
+        index = kNoMaterial;
+        const std::optional<std::string> name = values.text(field);
+        if (!name) return nullptr;  // not given, or a malformed name (reported by the reader)
+        if (const auto found = materialIndex_.find(toLower(*name)); found != materialIndex_.end()) {
+            index = found->second;
+            return &scene_.materials[found->second];
+        }
+        std::vector<std::string> known;
+        for (const Material& material : scene_.materials) known.push_back(material.name);
+        std::string hint;
+        if (const auto other = names_.find(toLower(*name)); other != names_.end()) {
+            hint = quoted(other->second.name) + " is the " + std::string(other->second.record) + " on line " +
+                   std::to_string(other->second.line) + ", not a Material";
+        } else if (const auto suggestion = closestMatch(*name, known)) {
+            hint = "did you mean '" + *suggestion + "'?";
+        } else {
+            hint = "declare it anywhere in the file, e.g. Material, Name=" + *name + ", Friction=0.5, Elasticity=0.5";
+        }
+        sink_.report(line.number, values.valueColumn(field), std::string(field), "the Name of a Material in this file",
+                     *name, std::move(hint));
+        return nullptr;
+    }
+
+    /// A material's value for a field the object leaves out, or @p fallback when it has none.
+    static Real materialValue(const Material* material, std::optional<Real> Material::*value, Real fallback) {
+        return material != nullptr && (material->*value) ? *(material->*value) : fallback;
+    }
+
+    /// The density that makes the object's mass: its own Density, or its material's when it gives
+    /// neither Mass nor Density; nullopt when its Mass is given or defaults. Mass and Density on one
+    /// record are an error (reported at Density).
+    std::optional<Real> densityOf(const RecordValues& values, const SceneLine& line, const Material* material) {
+        const bool mass = values.isSet("Mass");
+        if (values.isSet("Density")) {
+            if (mass) {
+                sink_.report(line.number, values.valueColumn("Density"), "Density", "either Mass or Density, not both",
+                             formatNumber(values.number("Density", 0)),
+                             "Mass is given at column " + std::to_string(values.valueColumn("Mass")) +
+                                 "; with Density the mass is density x the shape's volume");
+                return std::nullopt;
+            }
+            return values.number("Density", 0);
+        }
+        if (!mass && material != nullptr) return material->density;
+        return std::nullopt;
+    }
+
+    /// Is m = ρ·V a mass the World accepts? Reports it at @p column when not.
+    bool massInRange(Real mass, Real density, Real volume, int line, int column) {
+        if (mass >= kMinMass && mass <= kMaxMass) return true;
+        sink_.report(line, column, "Density", describe(Range::Mass) + " as density x volume",
+                     formatNumber(density) + " kg/m^3 x " + formatNumber(volume) + " m^3 = " + formatNumber(mass) + " kg",
+                     "the mass is the density times the shape's volume; give Mass=... instead");
+        return false;
+    }
+
+    /// m = ρ·V for a body whose shape is known (not a compound, whose parts come later).
+    void setMassFromDensity(DynamicObject& body, Real density, const RecordValues& values, const SceneLine& line) {
+        const int column = values.isSet("Density") ? values.valueColumn("Density") : values.valueColumn("Material");
+        if (body.hollow) {
+            sink_.report(line.number, column, "Density", "Mass for a hollow sphere",
+                         formatNumber(density), "a thin shell has no volume for a density to fill; give its Mass");
+            return;
+        }
+        const Real volume = shapeVolume(body);
+        const Real mass = density * volume;
+        if (massInRange(mass, density, volume, line.number, column)) body.setMass(mass);
     }
 
     // ---------------------------------------------------------- shapes with data
@@ -545,6 +691,7 @@ private:
         part.height = values.number("Height", part.scale.y);
         pending.massColumn = values.isSet("Mass") ? values.valueColumn("Mass") : 0;
         part.mass = values.number("Mass", 0);
+        const std::optional<Real> density = densityOf(values, line, nullptr);
         if (part.shape == Shape::Compound || part.shape == Shape::Mesh) {
             sink_.report(line.number, values.valueColumn("Shape"), "Shape",
                          "a convex part (Sphere, Box, Capsule, Cylinder or Hull)", values.text("Shape").value_or(""),
@@ -563,6 +710,11 @@ private:
             } else {
                 pending.usable = false;
             }
+        }
+        if (density && pending.usable) {
+            // A part's Density stands for its Mass: the every-part-or-none rule counts it as given.
+            part.mass = *density * partVolume(part);
+            pending.massColumn = values.valueColumn("Density");
         }
         pendingParts_.push_back(std::move(pending));
     }
@@ -660,6 +812,12 @@ private:
                              formatNumber(body.mass), "the body's mass is the sum of its parts' Mass; leave one out");
                 return false;
             }
+            if (compound.densityColumn != 0) {
+                sink_.report(compound.line, compound.densityColumn, "Density",
+                             "no Density on a compound whose parts give their Mass", formatNumber(*compound.density),
+                             "the body's mass is the sum of its parts' Mass; leave one out");
+                return false;
+            }
             Real total = 0;
             for (const CompoundPart& part : shape.parts) total += part.mass;
             body.setMass(total);
@@ -667,6 +825,16 @@ private:
         }
         Real volume = 0;
         for (const CompoundPart& part : shape.parts) volume += partVolume(part);
+        if (compound.dynamic && compound.density) {
+            // m = ρ·ΣV: the parts' masses are then ρ·V each, shared out below as for a given Mass.
+            DynamicObject& body = scene_.dynamics[compound.index];
+            const Real mass = *compound.density * volume;
+            if (!massInRange(mass, *compound.density, volume, compound.line,
+                             compound.densityColumn != 0 ? compound.densityColumn : compound.column)) {
+                return false;
+            }
+            body.setMass(mass);
+        }
         const Real total = compound.dynamic ? scene_.dynamics[compound.index].mass : kKinematicCompoundMass;
         for (CompoundPart& part : shape.parts) part.mass = total * partVolume(part) / volume;
         return true;
@@ -685,8 +853,9 @@ private:
         plane.name = claimName(values, line, index);
         plane.position = values.triple("Position", kZero);
         plane.color = toColor(values.triple("Color", kDefaultColor));
-        plane.elasticity = values.number("Elasticity", kStaticElasticity);
-        plane.friction = values.number("Friction", kStaticFriction);
+        const Material* material = materialOf(values, line, plane.material);
+        plane.elasticity = values.number("Elasticity", materialValue(material, &Material::elasticity, kStaticElasticity));
+        plane.friction = values.number("Friction", materialValue(material, &Material::friction, kStaticFriction));
 
         const Vec3 normal = values.triple("Normal", kDefaultNormal);
         if (!usableDirection(normal)) {  // core/limits.hpp: what World::World requires too
@@ -759,6 +928,9 @@ private:
         settings.threads = count("Threads", defaults.threads);
         settings.narrowphase = values.choice<NarrowphaseKind>("Narrowphase", kNarrowphaseChoices, defaults.narrowphase);
         return settings;
+        settings.frictionCombine = values.choice<CombineRule>("FrictionCombine", kCombineChoices, defaults.frictionCombine);
+        settings.elasticityCombine =
+            values.choice<CombineRule>("ElasticityCombine", kCombineChoices, defaults.elasticityCombine);
     }
 
     /// An Expect record (src/world/expectations.hpp): exactly one quantity,
@@ -1732,6 +1904,7 @@ private:
     std::vector<PendingPart> pendingParts_;          ///< Part records, joined in finish().
     std::vector<std::pair<int, std::string>> partLines_;  ///< Each Part's line number and text.
     std::vector<BodyFrame> dynamicFrames_;  ///< Parallel to scene_.dynamics: where each body's frame moved.
+    std::map<std::string, std::uint32_t> materialIndex_;  ///< Lower-cased Material name → index in scene_.materials.
 };
 
 }  // namespace
@@ -1760,7 +1933,14 @@ Scene parseScene(std::string_view text, const std::string& sourceName) {
 
 Scene parseScene(std::string_view text, const std::string& sourceName, const SceneReadOptions& options) {
     SceneAssembler assembler(sourceName, options);
-    for (const SceneLine& line : tokenizeScene(text)) assembler.add(line);
+    const std::vector<SceneLine> lines = tokenizeScene(text);
+    // Materials first: an object may name a Material declared anywhere in the file, before it or after.
+    for (const SceneLine& line : lines) {
+        if (SceneAssembler::declaresMaterial(line)) assembler.add(line);
+    }
+    for (const SceneLine& line : lines) {
+        if (!SceneAssembler::declaresMaterial(line)) assembler.add(line);
+    }
     return assembler.finish();
 }
 

@@ -49,11 +49,13 @@ constexpr std::string_view kLengthHint = "a length in metres; leave Length out t
 constexpr std::string_view kTorqueHint = "a torque in newton metres; leave MaxMotorTorque out for an unlimited motor";
 constexpr std::string_view kDragHint =
     "a drag coefficient: N*s/m under Law=Linear (F = -c*v), kg/m under Law=Quadratic (F = -c*|v|*v); 0 or more";
-constexpr std::string_view kDensityHint = "a fluid's density in kg/m^3, e.g. 1000 for water, 1.2 for air";
+constexpr std::string_view kFluidDensityHint = "a fluid's density in kg/m^3, e.g. 1000 for water, 1.2 for air";
 constexpr std::string_view kStrengthHint = "the largest random force, in newtons";
 constexpr std::string_view kSeedHint = "a whole number from 0 to 2^53; the same seed gives the same run";
 constexpr std::string_view kTimeScaleHint =
     "simulated seconds per second of the shared clock: 0.5 runs at half speed, 2 at double; it must be positive";
+constexpr std::string_view kDensityHint =
+    "density is in kg/m^3 (water 1000, wood about 600, steel 7850); the mass is density x the shape's volume";
 constexpr std::string_view kHeightHint =
     "Height is a capsule's segment between its two ball centres, or a cylinder's full length, in metres";
 
@@ -78,6 +80,8 @@ constexpr FieldSpec kDynamicFields[] = {
     {"Vertices",        FieldKind::Points,     kNamedOnly, Range::Any},              // m, Hull: the points it wraps
     {"File",            FieldKind::File,       kNamedOnly, Range::Any},              // an OBJ file: Hull points
     {"Space",           FieldKind::Name,       kNamedOnly, Range::Any},              // a Space record's Name
+    {"Material",        FieldKind::Name,       kNamedOnly, Range::Any},              // a Material's Name
+    {"Density",         FieldKind::Number,     kNamedOnly, Range::Positive, kDensityHint}, // kg/m³, instead of Mass
 };
 
 /// KinematicsObject: 10 positional values (no velocity, mass or radius among them).
@@ -97,6 +101,7 @@ constexpr FieldSpec kKinematicFields[] = {
     {"Vertices",        FieldKind::Points,     kNamedOnly, Range::Any},              // m, Hull
     {"File",            FieldKind::File,       kNamedOnly, Range::Any},              // an OBJ file: Hull points, Mesh triangles
     {"Space",           FieldKind::Name,       kNamedOnly, Range::Any},              // a Space record's Name
+    {"Material",        FieldKind::Name,       kNamedOnly, Range::Any},              // a Material's Name
 };
 
 /// Part: one part of a Shape=Compound body (docs/config-format.md#part), named fields only.
@@ -114,6 +119,7 @@ constexpr FieldSpec kPartFields[] = {
     {"Vertices",        FieldKind::Points,     kNamedOnly, Range::Any},              // m, Hull
     {"File",            FieldKind::File,       kNamedOnly, Range::Any},              // an OBJ file: Hull points
     {"Mass",            FieldKind::Number,     kNamedOnly, Range::Mass, kMassHint},  // kg; see the Part section
+    {"Density",         FieldKind::Number,     kNamedOnly, Range::Positive, kDensityHint}, // kg/m³, instead of Mass
 };
 
 /// CollisionPlane: a point and a normal, 6 positional values.
@@ -125,6 +131,7 @@ constexpr FieldSpec kPlaneFields[] = {
     {"Elasticity",      FieldKind::Number,     kNamedOnly, Range::UnitInterval, kElasticityHint},
     {"Friction",        FieldKind::Number,     kNamedOnly, Range::NonNegative, kFrictionHint},
     {"Space",           FieldKind::Name,       kNamedOnly, Range::Any},              // a Space record's Name
+    {"Material",        FieldKind::Name,       kNamedOnly, Range::Any},              // a Material's Name
 };
 
 /// World: simulation settings, named fields only.
@@ -161,6 +168,8 @@ constexpr FieldSpec kWorldFields[] = {
     {"ContinuousCollision", FieldKind::Boolean, kNamedOnly, Range::Any},              // src/collision/continuous.hpp
     {"Threads",             FieldKind::Number,  kNamedOnly, Range::ThreadCount},      // 0: one per hardware thread
     {"Narrowphase",         FieldKind::Narrowphase, kNamedOnly, Range::Any},          // convex pairs: Auto, GjkEpa, Mpr
+    {"FrictionCombine",     FieldKind::Combine, kNamedOnly, Range::Any},              // objects/materials.hpp
+    {"ElasticityCombine",   FieldKind::Combine, kNamedOnly, Range::Any},              // objects/materials.hpp
 };
 
 /// Space: a simulation of its own (src/world/spaces.hpp): its name, how fast it runs against the
@@ -239,7 +248,7 @@ constexpr FieldSpec kRegionFields[] = {
     {"AngularCoefficient", FieldKind::Number,      kNamedOnly, Range::NonNegative, kDragHint},  // N·m·s
     {"Velocity",           FieldKind::Vector,      kNamedOnly, Range::Any},            // m/s: the fluid's or the wind's
     {"Gravity",            FieldKind::Vector,      kNamedOnly, Range::Any},            // m/s²: inside a Gravity region
-    {"Density",            FieldKind::Number,      kNamedOnly, Range::Positive, kDensityHint},  // kg/m³: the fluid's
+    {"Density",            FieldKind::Number,      kNamedOnly, Range::Positive, kFluidDensityHint},  // kg/m³: the fluid's
     {"Strength",           FieldKind::Number,      kNamedOnly, Range::Positive, kStrengthHint}, // N: RandomForce's largest
     {"Seed",               FieldKind::Number,      kNamedOnly, Range::NonNegative, kSeedHint},  // a whole number
     {"Space",           FieldKind::Name,       kNamedOnly, Range::Any},              // a Space record's Name
@@ -306,6 +315,24 @@ constexpr FieldSpec kMayChangeFields[] = {
     {"Field",            FieldKind::Name,    kNamedOnly, Range::Any},              // one of its fields, or one component: ScaleY
 };
 
+/// Material: values objects share by naming it (src/objects/materials.hpp), named fields only.
+/// Name is required. An object's own Friction, Elasticity and Mass win over its material's.
+constexpr FieldSpec kMaterialFields[] = {
+    {"Name",             FieldKind::Name,    kNamedOnly, Range::Any},
+    {"Density",          FieldKind::Number,  kNamedOnly, Range::Positive, kDensityHint},        // kg/m³
+    {"Friction",         FieldKind::Number,  kNamedOnly, Range::NonNegative, kFrictionHint},
+    {"Elasticity",       FieldKind::Number,  kNamedOnly, Range::UnitInterval, kElasticityHint},
+};
+
+/// MaterialPair: the coefficients of contacts between materials A and B (in either order), named fields only.
+constexpr FieldSpec kMaterialPairFields[] = {
+    {"Name",             FieldKind::Name,    kNamedOnly, Range::Any},
+    {"A",                FieldKind::Name,    kNamedOnly, Range::Any},              // a Material's Name, required
+    {"B",                FieldKind::Name,    kNamedOnly, Range::Any},              // a Material's Name, required
+    {"Friction",         FieldKind::Number,  kNamedOnly, Range::NonNegative, kFrictionHint},
+    {"Elasticity",       FieldKind::Number,  kNamedOnly, Range::UnitInterval, kElasticityHint},
+};
+
 constexpr RecordSpec kRecords[] = {
     {RecordKind::DynamicObject,    "DynamicObject",    kDynamicFields},
     {RecordKind::KinematicsObject, "KinematicsObject", kKinematicFields},
@@ -321,8 +348,10 @@ constexpr RecordSpec kRecords[] = {
     {RecordKind::HingeJoint,       "HingeJoint",       kHingeJointFields},
     {RecordKind::AngularMotor,     "AngularMotor",     kAngularMotorFields},
     {RecordKind::Part,             "Part",             kPartFields},
-    {RecordKind::Space,            "Space",            kSpaceFields},
     {RecordKind::Region,           "Region",           kRegionFields},
+    {RecordKind::Material,         "Material",         kMaterialFields},
+    {RecordKind::MaterialPair,     "MaterialPair",     kMaterialPairFields},
+    {RecordKind::Space,            "Space",            kSpaceFields},
 };
 // clang-format on
 static_assert(std::size(kRecords) == kRecordKindCount, "one record table per RecordKind");
@@ -423,6 +452,14 @@ const std::array<Choice<NarrowphaseKind>, 3> kNarrowphaseChoices = {{
     {"Auto", NarrowphaseKind::Auto},
     {"GjkEpa", NarrowphaseKind::GjkEpa},
     {"Mpr", NarrowphaseKind::Mpr},
+}};
+
+const std::array<Choice<CombineRule>, 5> kCombineChoices = {{
+    {"Product", CombineRule::Product},
+    {"Min", CombineRule::Min},
+    {"Max", CombineRule::Max},
+    {"Average", CombineRule::Average},
+    {"GeometricMean", CombineRule::GeometricMean},
 }};
 
 std::span<const RecordSpec> allRecords() { return kRecords; }

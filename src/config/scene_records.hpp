@@ -42,6 +42,7 @@ enum class FieldKind : std::uint8_t {
     RegionShape, ///< A word from kRegionShapeChoices (Region records).
     Effect,      ///< A word from kEffectChoices (Region records).
     DragLaw,     ///< A word from kDragLawChoices (Region records).
+    Combine,     ///< A word from kCombineChoices: `FrictionCombine=GeometricMean`.
 };
 
 /// @brief firstPositional of a field that can only be given as `Field=Value`.
@@ -73,12 +74,14 @@ enum class RecordKind : std::uint8_t {
     AngularMotor,      ///< A torque-limited spin about one axis.
     MayChange,         ///< A field a student may edit (`stepwise grade --expect` compares the rest with the starter).
     Part,              ///< One part of a `Shape=Compound` body.
-    Space,             ///< A simulation of its own, beside the others (src/world/spaces.hpp).
     Region,            ///< A volume with an effect on the bodies inside (src/forces/region.hpp).
+    Material,          ///< Density, friction and elasticity that objects share (src/objects/materials.hpp).
+    MaterialPair,      ///< The friction and elasticity of contacts between two materials.
+    Space,             ///< A simulation of its own, beside the others (src/world/spaces.hpp).
 };
 
 /// @brief Number of RecordKind values.
-inline constexpr std::size_t kRecordKindCount = 16;
+inline constexpr std::size_t kRecordKindCount = 18;
 
 /// @brief One record type: its name and its field table.
 struct RecordSpec {
@@ -127,6 +130,9 @@ extern const std::array<Choice<RegionEffect>, 6> kEffectChoices;
 
 /// @brief Accepted spellings of DragLaw (any case): Linear, Quadratic.
 extern const std::array<Choice<DragLaw>, 2> kDragLawChoices;
+
+/// @brief Accepted spellings of CombineRule (any case): Product, Min, Max, Average, GeometricMean.
+extern const std::array<Choice<CombineRule>, 5> kCombineChoices;
 
 /// @brief Every record type, in the order the documentation lists them.
 std::span<const RecordSpec> allRecords();

@@ -30,6 +30,17 @@ const char* toString(NarrowphaseKind kind) {
     return "?";
 }
 
+const char* toString(CombineRule rule) {
+    switch (rule) {
+        case CombineRule::Product: return "Product";
+        case CombineRule::Min: return "Min";
+        case CombineRule::Max: return "Max";
+        case CombineRule::Average: return "Average";
+        case CombineRule::GeometricMean: return "GeometricMean";
+    }
+    return "?";
+}
+
 const char* toString(ContactOrder order) {
     switch (order) {
         case ContactOrder::Colours: return "Colours";

@@ -69,6 +69,19 @@ enum class ContactOrder : std::uint8_t {
 /// @brief Scene-file spelling of a contact order ("Colours", "Found").
 const char* toString(ContactOrder order);
 
+/// @brief How a contact mixes the friction (or the restitution) of its two sides
+/// (`World, FrictionCombine=…, ElasticityCombine=…`; src/objects/materials.hpp).
+enum class CombineRule : std::uint8_t {
+    Product,        ///< a·b: a side of 1 lets the other decide (the default; Bullet's rule).
+    Min,            ///< min(a, b): the slipperier (or deader) side wins.
+    Max,            ///< max(a, b): the grippier (or bouncier) side wins (Box2D's and Jolt's restitution).
+    Average,        ///< (a + b)/2.
+    GeometricMean,  ///< √(a·b) (Box2D's and Jolt's friction).
+};
+
+/// @brief Scene-file spelling of a combine rule ("Product", "Min", "Max", "Average", "GeometricMean").
+const char* toString(CombineRule rule);
+
 /// @brief Default time step, s: 60 steps per second, the usual display rate.
 inline constexpr Real kDefaultTimeStep = Real(1) / Real(60);
 /// @brief Default run length of `stepwise run`, s.
@@ -172,6 +185,8 @@ struct WorldSettings {
     bool fastPath = kFastPathByDefault;                ///< Let the step plan send the substeps to the fast path (src/fast/).
     bool continuousCollision = true;                   ///< Fast bodies stop where their path first touches (src/collision/continuous.hpp).
     int threads = kAutoThreads;                        ///< Threads for the narrowphase and the fast path's passes, ≥ 0 (kAutoThreads: one per hardware thread).
+    CombineRule frictionCombine = CombineRule::Product;   ///< How a contact mixes its two sides' friction.
+    CombineRule elasticityCombine = CombineRule::Product; ///< How a contact mixes its two sides' elasticity.
 };
 
 /// @brief The step the integrator takes, s: TimeStep, or TimeStep/Substeps under

@@ -20,6 +20,7 @@ struct ContactBody {
     Vec3 acceleration{0, 0, 0};        ///< Acceleration of B, m/s² (zero unless dynamic).
     Real elasticity = 1;               ///< Restitution factor of B's material.
     Real friction = 1;                 ///< Friction factor of B's material.
+    std::uint32_t material = kNoMaterial; ///< B's material index, for a MaterialPair (objects/materials.hpp).
 };
 
 /// @brief Looks up body @p ref and describes it at world point @p point.
@@ -33,6 +34,7 @@ inline ContactBody contactBody(const BodySet& bodies, const BodyRef& ref, const 
             view.acceleration = body.acceleration;
             view.elasticity = body.elasticity;
             view.friction = body.friction;
+            view.material = body.material;
             break;
         }
         case BodyKind::Kinematic: {
@@ -41,12 +43,14 @@ inline ContactBody contactBody(const BodySet& bodies, const BodyRef& ref, const 
             view.velocity = body.velocity + glm::cross(body.angularVelocity, point - body.position);
             view.elasticity = body.elasticity;
             view.friction = body.friction;
+            view.material = body.material;
             break;
         }
         case BodyKind::Plane: {
             const CollisionPlane& plane = bodies.planes[ref.index];
             view.elasticity = plane.elasticity;
             view.friction = plane.friction;
+            view.material = plane.material;
             break;
         }
     }

@@ -6,20 +6,35 @@
 #include <vector>
 
 #include "collision/contact.hpp"
+#include "dynamics/contact_body.hpp"
 #include "objects/body_set.hpp"
 
 namespace stepwise {
 
-/// @brief Restitution of a pair of materials: the product e = e_A · e_B.
+/// @brief Restitution of a pair of materials by the default rule: the product e = e_A · e_B.
 ///
 /// With the product, an object of elasticity 1 (the default for planes and
 /// kinematic objects) lets the other object's value decide, which is how
 /// the classic assignment format (elasticity on dynamic objects only) reads.
-/// Bullet combines restitution the same way.
+/// Bullet combines restitution the same way. `World, ElasticityCombine=…`
+/// picks another rule (src/objects/materials.hpp).
 inline Real combineElasticity(Real a, Real b) { return a * b; }
 
-/// @brief Friction of a pair of materials: the product μ = μ_A · μ_B (same reasoning).
+/// @brief Friction of a pair of materials by the default rule: the product μ = μ_A · μ_B (same reasoning).
 inline Real combineFriction(Real a, Real b) { return a * b; }
+
+/// @brief μ and e of a contact between body @p a and the other side @p other, decided once per
+/// contact when it is prepared (by both solvers, so the fast path reads the same μ and e).
+///
+/// A scene without materials, or whose rules are both Product, takes the products above and
+/// looks up nothing; otherwise the World's rules or a MaterialPair decide
+/// (ContactMaterials::mix()).
+inline ContactCoefficients contactCoefficients(const BodySet& bodies, const DynamicObject& a, const ContactBody& other) {
+    if (bodies.materials == nullptr || bodies.materials->plain()) {
+        return {combineFriction(a.friction, other.friction), combineElasticity(a.elasticity, other.elasticity)};
+    }
+    return bodies.materials->mix(a.material, a.friction, a.elasticity, other.material, other.friction, other.elasticity);
+}
 
 /// Passes of the position correction over all contacts. Like the impulse
 /// passes, they let several contacts on one body (a box's corners) agree.

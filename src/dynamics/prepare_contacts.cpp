@@ -184,7 +184,10 @@ SolverContact prepareOne(const BodySet& bodies, const Contact& contact, Real h, 
         c.rows = static_cast<std::uint32_t>(out.rows.size());
         out.rows.push_back(rows);
     }
-    c.friction = combineFriction(a.friction, other.friction);
+    // μ and e of the pair, once per contact: the World's combine rules (products by default), or a
+    // MaterialPair's. The fast path reads them from here too.
+    const ContactCoefficients material = contactCoefficients(bodies, a, other);
+    c.friction = material.friction;
 
     // The bounce, decided before any impulse (contact_solver.hpp): the
     // approach speed when the surfaces meet, v_c² = v_n² + 2·a·C, with a the
@@ -198,7 +201,7 @@ SolverContact prepareOne(const BodySet& bodies, const Contact& contact, Real h, 
     const Real stepAcceleration = std::max({std::abs(approachAcceleration), std::abs(glm::dot(a.acceleration, c.normal)),
                                             std::abs(glm::dot(other.acceleration, c.normal))});
     const bool resting = start.approachAtTouch <= kRestingContactSteps * stepAcceleration * h;
-    start.elasticity = combineElasticity(a.elasticity, other.elasticity);
+    start.elasticity = material.elasticity;
     start.restitution = resting ? Real(0) : start.elasticity;
     // Where the compression starts (applyRestitution()): the approach at touch for an impact, the
     // separation speed for bodies already parting, nothing for two that merely touch. A contact

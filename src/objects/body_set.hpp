@@ -5,6 +5,7 @@
 #include <span>
 
 #include "objects/game_object.hpp"
+#include "objects/materials.hpp"
 
 namespace stepwise {
 
@@ -17,6 +18,8 @@ struct BodySet {
     std::span<DynamicObject> dynamics;             ///< Simulated bodies (stages may change them).
     std::span<const KinematicsObject> kinematics;  ///< Prescribed-motion bodies (read-only here).
     std::span<const CollisionPlane> planes;        ///< Infinite planes (read-only).
+    /// How contacts mix their sides' friction and elasticity; nullptr: by product, as ContactMaterials() does.
+    const ContactMaterials* materials = nullptr;
 };
 
 }  // namespace stepwise

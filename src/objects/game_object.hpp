@@ -14,12 +14,16 @@
 /// virtual call per body or per pair. Nothing here knows about rendering.
 #pragma once
 
+#include <cstdint>
 #include <string>
 
 #include "core/types.hpp"
 #include "objects/shapes.hpp"
 
 namespace stepwise {
+
+/// @brief An object's `material` when it names none (every object of a scene without materials).
+inline constexpr std::uint32_t kNoMaterial = 0xFFFFFFFFu;
 
 /// @brief Display colour, each channel from 0 to 1. Used only by viewers.
 struct Color {
@@ -92,6 +96,9 @@ public:
     Real elasticity = Real(0.5);     ///< Coefficient of restitution, 0–1.
     Real friction = Real(0.5);       ///< Coulomb friction coefficient, ≥ 0.
     bool hollow = false;             ///< Sphere only: a thin shell (I = ⅔·m·r²) instead of a solid ball (⅖·m·r²).
+    /// Index of its material in the scene's list (objects/materials.hpp), or kNoMaterial. Only a
+    /// MaterialPair reads it: `elasticity` and `friction` already hold the material's values.
+    std::uint32_t material = kNoMaterial;
     Vec3 inertiaBody{1, 1, 1};       ///< Principal moments of inertia about the centre of mass, body axes, kg·m².
     Real stillTime = 0;              ///< How long the body has been below the sleep speeds, s.
     std::uint32_t sleepIsland = 0;   ///< Island it fell asleep with (bodies of one island wake together).
@@ -122,8 +129,9 @@ public:
     std::shared_ptr<const TriangleMesh> mesh;       ///< Shape=Mesh: its triangles (shapes.hpp).
     Vec3 velocity{0, 0, 0};          ///< Prescribed linear velocity, m/s.
     Vec3 angularVelocity{0, 0, 0};   ///< Prescribed angular velocity in world space, rad/s.
-    Real elasticity = Real(1);       ///< Restitution factor, 0–1 (combined by product).
-    Real friction = Real(1);         ///< Friction factor, ≥ 0 (combined by product).
+    Real elasticity = Real(1);       ///< Restitution factor, 0–1 (combined by the World's rule, Product by default).
+    Real friction = Real(1);         ///< Friction factor, ≥ 0 (combined by the World's rule, Product by default).
+    std::uint32_t material = kNoMaterial; ///< Its material's index, or kNoMaterial (as DynamicObject::material).
 
     /// @brief Half the box's edge lengths, m.
     Vec3 halfExtents() const { return scale * Real(0.5); }
@@ -139,8 +147,9 @@ public:
 class CollisionPlane : public GameObject {
 public:
     Vec3 normal{0, 1, 0};            ///< Unit normal pointing out of the solid side.
-    Real elasticity = Real(1);       ///< Restitution factor, 0–1 (combined by product).
-    Real friction = Real(1);         ///< Friction factor, ≥ 0 (combined by product).
+    Real elasticity = Real(1);       ///< Restitution factor, 0–1 (combined by the World's rule, Product by default).
+    Real friction = Real(1);         ///< Friction factor, ≥ 0 (combined by the World's rule, Product by default).
+    std::uint32_t material = kNoMaterial; ///< Its material's index, or kNoMaterial (as DynamicObject::material).
 
     /// @brief Signed distance of point @p p from the plane, m (positive on the normal's side).
     Real signedDistance(const Vec3& p) const { return glm::dot(p - position, normal); }

@@ -319,6 +319,26 @@ Real partReach(const CompoundPart& part) {
     return centre;
 }
 
+Real shapeVolume(const DynamicObject& body) {
+    switch (body.shape) {
+        case Shape::Sphere: return sphereVolume(body.radius);
+        case Shape::Box: return boxVolume(body.scale);
+        case Shape::Capsule: return capsuleVolume(body.radius, body.height);
+        case Shape::Cylinder: return cylinderVolume(body.radius, body.height);
+        case Shape::Hull:
+            if (!body.hull) throw std::invalid_argument("DynamicObject '" + body.name + "' is a Hull without a hull");
+            return body.hull->volume;
+        case Shape::Compound: {
+            if (!body.compound) throw std::invalid_argument("DynamicObject '" + body.name + "' is a Compound without parts");
+            Real volume = 0;
+            for (const CompoundPart& part : body.compound->parts) volume += partVolume(part);
+            return volume;
+        }
+        case Shape::Mesh: break;
+    }
+    throw std::invalid_argument("DynamicObject '" + body.name + "' is a Mesh: a triangle mesh has no volume");
+}
+
 Vec3 shapeInertia(const DynamicObject& body) {
     switch (body.shape) {
         case Shape::Sphere:

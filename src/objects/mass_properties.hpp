@@ -144,6 +144,14 @@ BodyFrame moveToPrincipalFrame(CompoundShape& compound);
 /// @brief The farthest any point of @p part reaches from the body's origin, m.
 Real partReach(const CompoundPart& part);
 
+/// @brief Volume of a solid body's shape, m³: what a density multiplies into its mass.
+///
+/// A sphere is the solid ball (its `hollow` flag is not read: a thin shell has no volume,
+/// so the loader refuses a density for one); a hull's is its polyhedron's; a compound's is
+/// the sum of its parts' (they are taken not to overlap).
+/// @throws std::invalid_argument for a Mesh, or a Hull or Compound body without its data.
+Real shapeVolume(const DynamicObject& body);
+
 /// @brief Principal moments of a Capsule, Cylinder, Hull or Compound body, kg·m².
 ///
 /// A hull and a compound must already be in their principal frames (as the

@@ -11,6 +11,7 @@
 #include "forces/spring.hpp"
 #include "dynamics/joints/joint_def.hpp"
 #include "objects/game_object.hpp"
+#include "objects/materials.hpp"
 #include "world/expectations.hpp"
 #include "core/world_settings.hpp"
 
@@ -63,6 +64,8 @@ struct Scene {
     /// With spaces: the space of each object, kDefaultSpace or 1 + its index in `spaces`, parallel to
     /// `dynamics`, `kinematics`, `planes`, `attractors` and `regions`. Empty without spaces.
     std::vector<std::uint32_t> dynamicSpace, kinematicSpace, planeSpace, attractorSpace, regionSpace;
+    std::vector<Material> materials;         ///< `Material` records, in file order (objects' `material` indexes them).
+    std::vector<MaterialPair> materialPairs; ///< `MaterialPair` records: pairs with their own μ or e.
 };
 
 }  // namespace stepwise

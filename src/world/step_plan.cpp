@@ -77,10 +77,25 @@ PlanDecision clippingOf(const PlanInputs& in) {
     return run("runs: touching faces and edges (boxes, hulls, cylinders, capsules, meshes) are clipped for their points");
 }
 
-/// Can μ = μ_A·μ_B be non-zero for some pair that can touch?
+/// Can the combined μ be non-zero for some pair that can touch?
 bool anyFriction(const PlanInputs& in) {
+    // A MaterialPair may give any pair friction: assume one can touch.
+    if (in.materials != nullptr && in.materials->hasPairs()) return true;
     std::size_t rough = 0;  // dynamic bodies with μ ≠ 0
     for (const DynamicObject& body : in.dynamics) rough += body.friction != 0 ? 1 : 0;
+    // Max and Average give μ > 0 when either side has some: a frictionless ball on a rough floor.
+    const bool eitherSide =
+        in.settings.frictionCombine == CombineRule::Max || in.settings.frictionCombine == CombineRule::Average;
+    if (eitherSide && rough > 0) return true;
+    if (eitherSide && !in.dynamics.empty()) {
+        for (const KinematicsObject& body : in.kinematics) {
+            if (body.friction != 0) return true;
+        }
+        for (const CollisionPlane& plane : in.planes) {
+            if (plane.friction != 0) return true;
+        }
+    }
+    // Product, Min and GeometricMean are 0 when either side is: one rough side is not enough.
     if (rough == 0) return false;
     if (rough >= 2) return true;  // two rough dynamic bodies can touch each other
     for (const KinematicsObject& body : in.kinematics) {

@@ -29,6 +29,7 @@
 #include "forces/region.hpp"
 #include "forces/spring.hpp"
 #include "objects/game_object.hpp"
+#include "objects/materials.hpp"
 #include "core/stages.hpp"
 #include "core/world_settings.hpp"
 
@@ -105,6 +106,7 @@ struct PlanInputs {
     std::span<const Attractor> attractors;        ///< Attractors (their pull depends on where a body is).
     std::span<const Region> regions;              ///< Regions (what they do depends on who is inside, and how it moves).
     std::span<const Joint> joints;                ///< Joints, broken ones included.
+    const ContactMaterials* materials = nullptr;  ///< The material pairs (nullptr: none), for the friction rule.
 };
 
 /// @brief Builds the plan: a pure function of the scene's contents, allocating nothing.
@@ -126,8 +128,8 @@ struct PlanInputs {
 ///   never reaches collideBoxBox() or a clip; the plan says so, it need not enforce it.
 /// - **Rotation** is impossible when every dynamic body is a sphere with no
 ///   angular velocity (any other shape turns when a contact pushes it off
-///   its centre), no contact has friction (μ = μ_A·μ_B = 0 for every
-///   pair that can touch), no spring is hooked off a body's centre and there
+///   its centre), no contact has friction (μ = 0 for every
+///   pair that can touch, by the World's FrictionCombine rule, and no MaterialPair gives any), no spring is hooked off a body's centre and there
 ///   are no joints: every force then acts through a sphere's centre, so
 ///   L = 0 for ever. The integrators then skip a sphere's angular update
 ///   (the inertia tensor turned into the world, the free-body rotation)

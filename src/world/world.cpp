@@ -64,7 +64,8 @@ World::World(Scene scene)
       planes_(std::move(scene.planes)),
       springs_(std::move(scene.springs)),
       attractors_(std::move(scene.attractors)),
-      regions_(std::move(scene.regions)) {
+      regions_(std::move(scene.regions)),
+      materials_(settings_, scene.materials.size(), scene.materialPairs) {
     require(isFinite(settings_.timeStep) && settings_.timeStep > 0, "World", "time step must be > 0 s");
     require(stepwise::isFinite(settings_.gravity), "World", "gravity must be finite");
     // The limits of core/limits.hpp, which the loader reports at their line and column
@@ -128,7 +129,7 @@ World& World::operator=(World&&) noexcept = default;
 
 /// The step plan from what the World holds now (src/world/step_plan.cpp); it allocates nothing.
 void World::replan() {
-    plan_ = makeStepPlan({settings_, dynamics_, kinematics_, planes_, springs_, attractors_, regions_, joints_});
+    plan_ = makeStepPlan({settings_, dynamics_, kinematics_, planes_, springs_, attractors_, regions_, joints_, &materials_});
     asleep_ = 0;
     for (DynamicObject& body : dynamics_) {
         body.canTurn = plan_.rotation.runs;  // read by the integrators
@@ -156,7 +157,7 @@ const DynamicObject* World::findDynamic(std::string_view name) const {
     return nullptr;
 }
 
-BodySet World::bodies() { return {dynamics_, kinematics_, planes_}; }
+BodySet World::bodies() { return {dynamics_, kinematics_, planes_, &materials_}; }
 
 void World::step() {
     for (StageRecord& record : stageRecords_) {

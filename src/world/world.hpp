@@ -162,6 +162,7 @@ private:
     std::vector<std::uint32_t> regionCandidates_;  ///< Scratch: the broadphase's answer for one region.
     std::vector<RemovedBody> removedBodies_;   ///< What Kill regions took, for the run's summary.
     std::vector<Joint> joints_;
+    ContactMaterials materials_;  ///< The combine rules and material pairs every contact's preparation reads.
 
     Broadphase broadphase_;
     std::vector<CandidatePair> pairs_;

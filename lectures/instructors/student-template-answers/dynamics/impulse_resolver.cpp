@@ -97,7 +97,9 @@ ContactConstraint prepare(const BodySet& bodies, const Contact& contact, Real h,
     c.normalMass = Real(1) / inverseEffectiveMass(c, c.normal);
     c.tangentMass[0] = c.tangentMass[1] =
         frictionPairMass(inverseEffectiveMass(c, c.tangent[0]), inverseEffectiveMass(c, c.tangent[1]));
-    c.friction = combineFriction(a.friction, other.friction);
+    // μ and e of the pair: the World's combine rules (products by default), or a MaterialPair's.
+    const ContactCoefficients material = contactCoefficients(bodies, a, other);
+    c.friction = material.friction;
 
     // The bounce is decided once, from the velocities before any impulse:
     // restitution is a property of the impact, not of the passes.
@@ -114,7 +116,7 @@ ContactConstraint prepare(const BodySet& bodies, const Contact& contact, Real h,
     const Real stepAcceleration = std::max({std::abs(an), std::abs(glm::dot(a.acceleration, c.normal)),
                                             std::abs(glm::dot(other.acceleration, c.normal))});
     c.resting = approachAtTouch <= kRestingContactSteps * stepAcceleration * h;
-    const Real e = c.resting ? Real(0) : combineElasticity(a.elasticity, other.elasticity);
+    const Real e = c.resting ? Real(0) : material.elasticity;
     c.targetSeparation = e * approachAtTouch;
     if (contact.depth < -kTouchTolerance) {  // closer than that is touching, as in the narrowphase
         // A speculative point, still a gap g apart: a slow approach may close
