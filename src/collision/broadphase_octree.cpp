@@ -15,6 +15,11 @@ namespace {
 /// 8 children, and a path holds at most kOctreeMaxDepth + 1 nodes, so 7 per level
 /// wait beside the path, plus the 8 children of the deepest node.
 constexpr int kStackSize = 8 * (kOctreeMaxDepth + 1);
+/// Most jobs the pair search keeps waiting. Taking off a job adds at most 45 (a node within
+/// itself: its own bodies against 8 children, 8 children within, 28 pairs of children) or 9
+/// (two subtrees: own bodies and 8 children against the other); along one chain of jobs each
+/// step goes one level deeper on one side or ends, at most 3 (kOctreeMaxDepth + 1) steps.
+constexpr int kJobStackSize = 45 * 3 * (kOctreeMaxDepth + 1);
 
 /// The octant of @p point in a cell of centre @p centre: bit 0 set for x ≥ centre.x, bit 1 for y, bit 2 for z.
 int octantOf(const Vec3& point, const Vec3& centre) {
@@ -180,29 +185,71 @@ void LooseOctree::findOverlaps(const ProxySet& proxies, std::vector<ProxyPair>& 
         counters.reinsertions += n;
     }
 
-    // Each proxy descends with its own box, testing the nodes of its level and deeper
-    // (at its own level, only partners of higher index), so each pair is met once.
+    // The pairs of the whole tree: pairs of subtrees whose loose boxes meet, split until
+    // one side is a node's own bodies (see the class comment).
+    enum class Task : std::uint8_t { Within, Between, OwnAgainst };
+    struct Job {
+        std::int32_t x, y;
+        Task task;
+    };
+    Job jobs[kJobStackSize];
+    int top = 0;
+    jobs[top++] = {0, 0, Task::Within};
+    const auto test = [&](std::uint32_t a, std::uint32_t b) {
+        if (proxies.isKinematic(a) && proxies.isKinematic(b)) return;  // neither can be pushed
+        ++counters.pairTests;
+        if (proxies.boxes[a].overlaps(proxies.boxes[b])) pairs.push_back(orderedPair(a, b));
+    };
+    const auto looseMeet = [&](std::int32_t x, std::int32_t y) {
+        ++counters.structureTests;
+        return nodes_[x].loose.overlaps(nodes_[y].loose);
+    };
     std::int32_t stack[kStackSize];
-    for (std::uint32_t a = 0; a < n; ++a) {
-        const Aabb& box = proxies.boxes[a];
-        const std::int32_t level = nodes_[nodeOf_[a]].level;
-        const bool kinematic = proxies.isKinematic(a);
-        int top = 0;
-        stack[top++] = 0;
-        while (top > 0) {
-            const Node& node = nodes_[stack[--top]];
-            if (node.level >= level) {
-                for (std::int32_t p = node.first; p != kNull; p = next_[p]) {
-                    const auto b = static_cast<std::uint32_t>(p);
-                    if (b == a || (node.level == level && b < a) || (kinematic && proxies.isKinematic(b))) continue;
-                    ++counters.pairTests;
-                    if (box.overlaps(proxies.boxes[b])) pairs.push_back(orderedPair(a, b));
+    while (top > 0) {
+        const Job job = jobs[--top];
+        const Node& x = nodes_[job.x];
+        if (job.task == Task::Within) {
+            // Own × own, each pair once; own × each child's subtree; each child within; children two by two.
+            for (std::int32_t p = x.first; p != kNull; p = next_[p]) {
+                for (std::int32_t q = next_[p]; q != kNull; q = next_[q]) test(std::uint32_t(p), std::uint32_t(q));
+            }
+            for (int i = 0; i < 8; ++i) {
+                const std::int32_t ci = x.child[i];
+                if (ci == kNull) continue;
+                if (x.first != kNull) jobs[top++] = {job.x, ci, Task::OwnAgainst};
+                jobs[top++] = {ci, ci, Task::Within};
+                for (int j = i + 1; j < 8; ++j) {
+                    const std::int32_t cj = x.child[j];
+                    if (cj != kNull && looseMeet(ci, cj)) jobs[top++] = {ci, cj, Task::Between};
                 }
             }
+        } else if (job.task == Task::Between) {
+            // Two subtrees apart in the tree: split the shallower one into its own bodies and its children.
+            const bool splitX = x.level <= nodes_[job.y].level;
+            const std::int32_t split = splitX ? job.x : job.y;
+            const std::int32_t other = splitX ? job.y : job.x;
+            const Node& node = nodes_[split];
+            if (node.first != kNull) jobs[top++] = {split, other, Task::OwnAgainst};
             for (const std::int32_t child : node.child) {
-                if (child == kNull) continue;
+                if (child != kNull && looseMeet(child, other)) jobs[top++] = {child, other, Task::Between};
+            }
+        } else {
+            // A node's own bodies against a subtree: each body descends it with its own box.
+            for (std::int32_t p = x.first; p != kNull; p = next_[p]) {
+                const auto a = static_cast<std::uint32_t>(p);
+                const Aabb& box = proxies.boxes[a];
+                int depth = 0;
                 ++counters.structureTests;
-                if (nodes_[child].loose.overlaps(box)) stack[top++] = child;
+                if (nodes_[job.y].loose.overlaps(box)) stack[depth++] = job.y;
+                while (depth > 0) {
+                    const Node& node = nodes_[stack[--depth]];
+                    for (std::int32_t q = node.first; q != kNull; q = next_[q]) test(a, std::uint32_t(q));
+                    for (const std::int32_t child : node.child) {
+                        if (child == kNull) continue;
+                        ++counters.structureTests;
+                        if (nodes_[child].loose.overlaps(box)) stack[depth++] = child;
+                    }
+                }
             }
         }
     }

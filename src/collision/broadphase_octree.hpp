@@ -62,10 +62,19 @@ inline constexpr std::uint32_t kOctreeRefitShare = 8;
 /// meets more nodes than in a tight octree; a body costs one descent, never
 /// more than the few cells its size allows.
 ///
-/// **Pairs.** Each body queries the tree with its own box. A pair is found
-/// once: the body at the shallower node finds the deeper one (a body tests
-/// only the nodes of its own level and deeper), and of two bodies at the same
-/// level, the one of lower index finds the other.
+/// **Pairs.** Found by descending pairs of subtrees, as the AABB tree descends
+/// itself (Ericson, RTCD §6.5.1), never one body at a time from the root. The
+/// pairs within the subtree of node X are those among X's own bodies, those
+/// of X's own bodies with each child's subtree, those within each child's
+/// subtree, and those between two children's subtrees; the pairs between two
+/// subtrees X and Y apart in the tree are X's own bodies against Y, plus each
+/// child of X against Y (X the shallower). Each pair of bodies falls in
+/// exactly one of these, and two subtrees whose loose boxes are apart hold no
+/// overlapping pair (every body lies in the loose box of its node and of its
+/// ancestors), so such a pair of subtrees is dropped whole. A node's own bodies
+/// against a subtree descend it one body at a time, pruned by each body's box.
+/// Compared with one descent from the root per body, this tests 2 to 3.5
+/// times fewer loose boxes (docs/broadphase.md).
 ///
 /// **From step to step.** A body stays where it is while its box is still
 /// inside its node's loose box and its node is not too coarse for it
