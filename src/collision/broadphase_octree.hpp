@@ -73,7 +73,7 @@ inline constexpr std::uint32_t kOctreeRefitShare = 8;
 /// overlapping pair (every body lies in the loose box of its node and of its
 /// ancestors), so such a pair of subtrees is dropped whole. A node's own bodies
 /// against a subtree descend it one body at a time, pruned by each body's box.
-/// Compared with one descent from the root per body, this tests 2 to 3.5
+/// Compared with one descent from the root per body, this tests 1.5 to 3.5
 /// times fewer loose boxes (docs/broadphase.md).
 ///
 /// **From step to step.** A body stays where it is while its box is still
