@@ -73,8 +73,8 @@ inline constexpr std::uint32_t kOctreeRefitShare = 8;
 /// overlapping pair (every body lies in the loose box of its node and of its
 /// ancestors), so such a pair of subtrees is dropped whole. A node's own bodies
 /// against a subtree descend it one body at a time, pruned by each body's box.
-/// Compared with one descent from the root per body, this tests 1.5 to 3.5
-/// times fewer loose boxes (docs/broadphase.md).
+/// Far parts of the scene are so dropped once, near the root, where a descent
+/// per body would test their loose boxes again for every body.
 ///
 /// **From step to step.** A body stays where it is while its box is still
 /// inside its node's loose box and its node is not too coarse for it
