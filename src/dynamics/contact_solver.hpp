@@ -250,11 +250,23 @@ struct PreparedSideArrays {
 /// 200 ns to prepare, so 1024 are some 200 µs against a hand-over of a few.
 inline constexpr std::size_t kParallelPrepareContacts = 1024;
 
+/// @brief A list of contacts put in waves by scheduleWaves() (contact_colours.hpp), and its scratch.
+struct ContactWaveSchedule {
+    std::vector<std::uint32_t> nextWave;  ///< Per record: the first wave its next contact may take (scratch).
+    std::vector<std::uint32_t> waveOf;    ///< Per contact of the list, in the list's order: its wave.
+    std::vector<std::uint32_t> ends;      ///< Per wave: where its contacts end in `order`; then the list's size.
+    std::vector<std::uint32_t> order;     ///< The list wave by wave, each wave in the list's order.
+    std::uint32_t waves = 0;              ///< How many waves.
+};
+
 /// @brief Scratch arrays of orderByColour() (contact_colours.hpp), kept so that a settled scene allocates nothing.
 struct ContactColouring {
     std::vector<std::uint64_t> usedColours;  ///< Per record: bit k set when one of its contacts has colour k.
     std::vector<std::uint32_t> colourOf;     ///< Per contact of the list: its colour.
-    std::vector<std::uint32_t> colourStart;  ///< Per colour: where its contacts start in the new order.
+    /// Per colour of SolverWorkspace::roundContacts: where its contacts end there (orderByColour()),
+    /// then the list's size. Empty unless the list is in colour order.
+    std::vector<std::uint32_t> roundColourEnds;
+    std::vector<std::uint32_t> otherColourEnds;  ///< The same for SolverWorkspace::otherContacts.
     std::vector<std::uint32_t> ordered;      ///< The list in colour order, swapped in.
 };
 
