@@ -259,6 +259,15 @@ struct ContactWaveSchedule {
     std::uint32_t waves = 0;              ///< How many waves.
 };
 
+/// Contacts of the compression from which applyRestitution() splits its passes between threads:
+/// fewer cannot fill a wave of kParallelRestitutionWave twice over.
+inline constexpr std::size_t kParallelRestitution = 2048;
+
+/// A wave of the compression's contacts is split between threads from this many contacts on; smaller
+/// ones run on the calling thread. A contact costs some 10–30 ns a pass, so 1024 are some 10–30 µs,
+/// against a hand-over and a barrier of a few µs (more on a busy machine), every pass, every wave.
+inline constexpr std::size_t kParallelRestitutionWave = 1024;
+
 /// @brief Scratch arrays of orderByColour() (contact_colours.hpp), kept so that a settled scene allocates nothing.
 struct ContactColouring {
     std::vector<std::uint64_t> usedColours;  ///< Per record: bit k set when one of its contacts has colour k.
@@ -287,6 +296,7 @@ struct SolverWorkspace {
     /// pushed, applyRestitution() has nothing to do (in a pile at rest there is none).
     std::vector<std::uint32_t> bouncing;
     std::vector<std::uint32_t> pressed;          ///< applyRestitution(): the contacts that pushed this step.
+    ContactWaveSchedule pressedWaves;            ///< applyRestitution() on threads: `pressed` in waves.
     std::vector<SolverBody> impactBodies;        ///< applyRestitution(): each record's velocity change in the compression.
     std::vector<SolverBody> bodies;              ///< Record 0 static, then one per dynamic body in a contact or a joint (solver_body.hpp).
     std::vector<SolverBodyInertia> inertias;     ///< The same records' inertia (read by prepare and a box's write-back).
@@ -502,7 +512,15 @@ inline constexpr Real kCompressionTolerance = Real(1e-6);
 /// contact to v_n = e·v_c one after the other does not: the last one driven undoes the others,
 /// and a gas of 1000 balls loses most of its energy in seconds.
 /// @return true if any contact bounced (only then did a solver body's velocity change).
-bool applyRestitution(SolverWorkspace& workspace);
+///
+/// **On threads.** Each contact's update reads and writes only its own two bodies' records and its
+/// own numbers. So with a @p pool of several threads and at least kParallelRestitution contacts in
+/// the compression, the passes take the contacts wave by wave (scheduleWaves(), contact_colours.hpp:
+/// no wave holds a body twice, and every body meets its contacts in the order of the one-thread
+/// pass), and cut each wide wave into ranges on the threads: every number is the one-thread pass's,
+/// to the bit, and so is each pass's largest change, a maximum, which no order changes.
+/// @param pool threads to share the passes (nullptr: the calling thread alone)
+bool applyRestitution(SolverWorkspace& workspace, ThreadPool* pool = nullptr);
 
 /// @brief Keeps this step's impulses for the next step's warm start, and fills @p reports (may be empty).
 void storeContactImpulses(std::span<const Contact> contacts, SolverWorkspace& workspace,
