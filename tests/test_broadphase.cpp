@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <set>
 #include <vector>
 
 #include "collision/broadphase_tracker.hpp"
@@ -17,7 +18,7 @@ using namespace stepwise;
 namespace {
 
 constexpr BroadphaseKind kFastBroadphases[] = {BroadphaseKind::SweepAndPrune, BroadphaseKind::AabbTree,
-                                               BroadphaseKind::Grid};
+                                               BroadphaseKind::Grid, BroadphaseKind::Octree};
 
 /// A scene's bodies in vectors the test can move, with the BodySet view the broadphases take.
 struct Bodies {
@@ -157,6 +158,7 @@ TEST_CASE("Every broadphase returns brute force's pairs, in its order, step afte
             CHECK(broadphases[2].grid().dense());  // bodies packed in a cube: one slot per cell
             const std::vector<Aabb> boxes = proxyBoxes(b);
             CHECK(broadphases[1].tree().isConsistent({boxes, static_cast<std::uint32_t>(b.dynamics.size())}));
+            CHECK(broadphases[3].octree().isConsistent({boxes, static_cast<std::uint32_t>(b.dynamics.size())}));
             shake(b, random, side);
         }
         // Bodies leave the scene: every structure must notice and start again.
@@ -487,7 +489,7 @@ TEST_CASE("The tracker finds no difference on random falling scenes and counts b
         CHECK(brute.steps == steps / 2);
         // n(n−1)/2 dynamic pairs, n·1 kinematic, n·1 plane, each checked step.
         CHECK(brute.pairTests == (n * (n - 1) / 2 + n + n) * brute.steps);
-        CHECK(tracker.results().size() == 4);
+        CHECK(tracker.results().size() == 5);
         for (const TrackedBroadphase& t : tracker.results()) {
             INFO(toString(t.kind));
             CHECK(t.contactPairs > 0);
@@ -632,4 +634,163 @@ TEST_CASE("The static tree is balanced and its query finds exactly the overlappi
             CHECK(counters.pairTests < 200 * 300 / 4);
         }
     }
+}
+
+TEST_CASE("The octree files each body at the depth its size fixes, in the cell of its centre", "[broadphase][octree]") {
+    // Sizes from 2 cm to 3 m: pebbles, the random scene's bodies and boulders, spread over
+    // seven powers of two, so the bodies sit on several levels.
+    Bodies b = randomBodies(21, 400);
+    const Real middle = Real(0.45) * std::cbrt(Real(400));
+    for (int i = 0; i < 4; ++i) {
+        b.dynamics.push_back(test::sphere("boulder" + std::to_string(i), Vec3(middle + 2 * i, middle, middle), Vec3(0), 1.5));
+    }
+    for (int i = 0; i < 20; ++i) {
+        b.dynamics.push_back(test::sphere("pebble" + std::to_string(i), Vec3(0.3 * i, middle, 1), Vec3(0), 0.001));
+    }
+    Broadphase broadphase;
+    std::vector<CandidatePair> pairs;
+    broadphase.findPairs(BroadphaseKind::Octree, b.view(), pairs);
+    const LooseOctree& octree = broadphase.octree();
+    const std::vector<Aabb> boxes = proxyBoxes(b);
+    REQUIRE(octree.isConsistent({boxes, static_cast<std::uint32_t>(boxes.size())}));
+
+    // The root cube is kOctreeRootPadding times the longest side of the box around all bodies.
+    Aabb around = boxes.front();
+    for (const Aabb& box : boxes) around = merged(around, box);
+    const Real width = octree.rootSide();
+    CHECK(width == Approx(kOctreeRootPadding * around.longestSide()).epsilon(1e-12));
+    // Ulrich's rule, d = ⌊log₂(W / s)⌋: the deepest level whose cells (side W/2^d) are as large as the body.
+    std::set<int> levels;
+    for (std::uint32_t p = 0; p < boxes.size(); ++p) {
+        const Real size = boxes[p].longestSide();
+        const int expected = std::min(kOctreeMaxDepth, static_cast<int>(std::floor(std::log2(width / size))));
+        INFO(b.dynamics[p].name << ", size " << size << " m");
+        CHECK(octree.levelOf(p) == expected);
+        levels.insert(octree.levelOf(p));
+    }
+    CHECK(levels.size() >= 5);
+    CHECK(octree.depth() == *levels.rbegin());
+}
+
+TEST_CASE("The octree moves a body only when it leaves its node's loose box", "[broadphase][octree]") {
+    Bodies b = randomBodies(22, 300);
+    Broadphase broadphase;
+    std::vector<CandidatePair> pairs;
+    broadphase.findPairs(BroadphaseKind::Octree, b.view(), pairs);
+    const std::size_t nodes = broadphase.octree().nodeCount();
+    // A body may move a quarter of its cell's side, at least s/2, past its cell before it leaves
+    // the loose box: 0.1 mm moves nobody.
+    for (int step = 0; step < 5; ++step) {
+        for (DynamicObject& body : b.dynamics) body.position += Vec3(1e-4);
+        broadphase.findPairs(BroadphaseKind::Octree, b.view(), pairs);
+        CHECK(broadphase.counters().reinsertions == 0);
+        CHECK(broadphase.octree().nodeCount() == nodes);
+    }
+    // Three times its cell's side away (a cell is shorter than twice the body), towards the
+    // middle of the scene (so inside the root cube), it must move.
+    const Real cell = broadphase.octree().rootSide() / Real(1 << broadphase.octree().levelOf(17));
+    const Real middle = Real(0.45) * std::cbrt(Real(300));
+    b.dynamics[17].position.x += b.dynamics[17].position.x < middle ? 3 * cell : -3 * cell;
+    broadphase.findPairs(BroadphaseKind::Octree, b.view(), pairs);
+    CHECK(broadphase.counters().reinsertions == 1);
+    const std::vector<Aabb> boxes = proxyBoxes(b);
+    CHECK(broadphase.octree().isConsistent({boxes, static_cast<std::uint32_t>(boxes.size())}));
+    CHECK(broadphase.octree().fits() == 1);
+}
+
+TEST_CASE("The octree keeps bodies that left its cube in the root, and fits a new cube when many did", "[broadphase][octree]") {
+    Bodies b = randomBodies(23, 200);
+    std::vector<Broadphase> broadphases(std::size(kFastBroadphases));
+    requireAllAgree(b, broadphases, "start");
+    const LooseOctree& octree = broadphases[3].octree();
+    REQUIRE(octree.fits() == 1);
+    // Two bodies flung a kilometre away, 5 cm apart (their boxes overlap): in the root, found by its queries.
+    b.dynamics[5].position = Vec3(1000, 0, 0);
+    b.dynamics[9].position = Vec3(1000.05, 0, 0);
+    requireAllAgree(b, broadphases, "two far away");
+    CHECK(octree.levelOf(5) == 0);
+    CHECK(octree.levelOf(9) == 0);
+    CHECK(octree.fits() == 1);
+    // More than one in kOctreeRefitShare outside: a new cube around everyone.
+    for (std::size_t i = 0; i < b.dynamics.size(); i += 4) b.dynamics[i].position += Vec3(0, 5000, 0);
+    requireAllAgree(b, broadphases, "a quarter far away");
+    CHECK(octree.fits() == 2);
+    CHECK(octree.rootSide() > 2 * 5000);
+    const std::vector<Aabb> boxes = proxyBoxes(b);
+    CHECK(octree.isConsistent({boxes, static_cast<std::uint32_t>(boxes.size())}));
+}
+
+TEST_CASE("Region queries through each broadphase find exactly the dynamic bodies a box overlaps", "[broadphase][regions]") {
+    // For every broadphase, on scenes of mixed sizes (packed, so the grid is dense, and with a few
+    // bodies a kilometre away, so it is hashed), after each of several steps: boxes of every size
+    // inside the scene, far outside every structure's bounds, huge ones holding everything, points,
+    // and boxes in gaps that hold nothing. The answer must be a loop over the boxes, filtered.
+    constexpr BroadphaseKind kinds[] = {BroadphaseKind::BruteForce, BroadphaseKind::SweepAndPrune,
+                                        BroadphaseKind::AabbTree, BroadphaseKind::Grid, BroadphaseKind::Octree};
+    int empty = 0, some = 0, all = 0;
+    for (std::uint32_t seed = 31; seed <= 32; ++seed) {
+        Bodies packed = randomBodies(seed, 300);
+        const Real side = Real(0.9) * std::cbrt(Real(300));
+        for (int i = 0; i < 4; ++i) {
+            packed.dynamics.push_back(test::sphere("boulder" + std::to_string(i), Vec3(side / 2 + i, side / 2 - i, side / 2), Vec3(0), 1.5));
+        }
+        Bodies spread = packed;
+        for (int i = 0; i < 3; ++i) spread.dynamics.push_back(test::sphere("far" + std::to_string(i), Vec3(1000 + i * 0.8, 500, -1000)));
+        for (Bodies* bodies : {&packed, &spread}) {
+            std::vector<Broadphase> broadphases(std::size(kinds));
+            std::mt19937 random(seed);
+            std::uniform_real_distribution<Real> unit(0, 1);
+            std::vector<std::uint32_t> found, expected;
+            for (int step = 0; step < 6; ++step) {
+                std::vector<CandidatePair> pairs;
+                for (std::size_t k = 0; k < std::size(kinds); ++k) broadphases[k].findPairs(kinds[k], bodies->view(), pairs);
+                if (bodies == &packed) CHECK(broadphases[3].grid().dense());
+                else CHECK_FALSE(broadphases[3].grid().dense());
+                const std::vector<Aabb> boxes = proxyBoxes(*bodies);
+                std::vector<Aabb> queries;
+                for (int q = 0; q < 40; ++q) {  // inside the scene, from 1 cm to the scene's size
+                    const Vec3 corner = Vec3(unit(random), unit(random), unit(random)) * side;
+                    const Real extent = Real(0.01) * std::pow(Real(100) * side, unit(random));
+                    queries.push_back({corner, corner + extent * Vec3(unit(random), unit(random), unit(random))});
+                }
+                queries.push_back({Vec3(-1e4), Vec3(-1e4 + 5)});                 // outside everything
+                queries.push_back({Vec3(1e6, -1e6, 1e6), Vec3(2e6, -5e5, 3e6)});  // beyond the far bodies
+                queries.push_back({Vec3(-1e9), Vec3(1e9)});                     // everything
+                queries.push_back({Vec3(side / 2), Vec3(side / 2)});             // a point
+                queries.push_back({boxes[7].max + Vec3(1e-3), boxes[7].max + Vec3(1e-3)});  // just off a corner
+                queries.push_back({Vec3(side / 2, -40, side / 2), Vec3(side / 2 + 1, -30, side / 2 + 1)});  // below the scene
+                for (const Aabb& query : queries) {
+                    expected.clear();
+                    for (std::uint32_t i = 0; i < boxes.size(); ++i) {
+                        if (boxes[i].overlaps(query)) expected.push_back(i);
+                    }
+                    if (expected.empty()) ++empty;
+                    else if (expected.size() == boxes.size()) ++all;
+                    else ++some;
+                    for (std::size_t k = 0; k < std::size(kinds); ++k) {
+                        found.assign(3, 12345);  // cleared first
+                        broadphases[k].dynamicBodiesOverlapping(query, found);
+                        INFO("seed " << seed << (bodies == &packed ? ", packed" : ", spread") << ", step " << step
+                                     << ", " << toString(kinds[k]) << ", query " << query.min.x << " " << query.min.y
+                                     << " " << query.min.z << " to " << query.max.x << " " << query.max.y << " "
+                                     << query.max.z);
+                        REQUIRE(broadphases[k].lastKind() == kinds[k]);
+                        CHECK(found == expected);
+                    }
+                }
+                shake(*bodies, random, side);
+                if (bodies == &spread) {  // the far bodies stay far, so the grid stays hashed
+                    for (int i = 0; i < 3; ++i) spread.dynamics[spread.dynamics.size() - 3 + i].position = Vec3(1000 + i * 0.8, 500, -1000);
+                }
+            }
+        }
+    }
+    CHECK(empty >= 50);
+    CHECK(some >= 500);
+    CHECK(all >= 20);
+    // Before any step nothing was filed: no body overlaps anything.
+    Broadphase fresh;
+    std::vector<std::uint32_t> found{1, 2};
+    fresh.dynamicBodiesOverlapping({Vec3(-1e9), Vec3(1e9)}, found);
+    CHECK(found.empty());
 }

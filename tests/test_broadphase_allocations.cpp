@@ -48,7 +48,7 @@ TEST_CASE("A broadphase allocates nothing once its arrays have grown", "[broadph
     const BodySet view{bodies, kinematics, planes};
 
     for (const BroadphaseKind kind : {BroadphaseKind::BruteForce, BroadphaseKind::SweepAndPrune,
-                                      BroadphaseKind::AabbTree, BroadphaseKind::Grid}) {
+                                      BroadphaseKind::AabbTree, BroadphaseKind::Grid, BroadphaseKind::Octree}) {
         INFO(toString(kind));
         Broadphase broadphase;
         std::vector<CandidatePair> pairs;
@@ -71,6 +71,17 @@ TEST_CASE("A broadphase allocates nothing once its arrays have grown", "[broadph
         }
         CHECK(gAllocations == 0);
         CHECK(!pairs.empty());
+
+        // Region queries through the structure, into an array that has grown to the answer's size.
+        std::vector<std::uint32_t> inside;
+        inside.reserve(bodies.size());
+        const Aabb regions[] = {{Vec3(2, 0, 2), Vec3(5, 1, 5)}, {Vec3(-1e9), Vec3(1e9)}, {Vec3(50), Vec3(60)}};
+        gAllocations = 0;
+        gCounting = true;
+        for (const Aabb& region : regions) broadphase.dynamicBodiesOverlapping(region, inside);
+        gCounting = false;
+        CHECK(gAllocations == 0);
+        CHECK(inside.empty());  // the last region is far from every body
     }
 }
 

@@ -372,6 +372,8 @@ TEST_CASE("The World's Broadphase is Auto by default and takes every broadphase'
     CHECK(broadphaseOf("DynamicTree") == BroadphaseKind::AabbTree);
     CHECK(broadphaseOf("Grid") == BroadphaseKind::Grid);
     CHECK(broadphaseOf("UniformGrid") == BroadphaseKind::Grid);
+    CHECK(broadphaseOf("Octree") == BroadphaseKind::Octree);
+    CHECK(broadphaseOf("LooseOctree") == BroadphaseKind::Octree);
 }
 
 // ------------------------------------------------------------------ the pieces

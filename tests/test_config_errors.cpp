@@ -295,9 +295,10 @@ TEST_CASE("An unknown Shape or Integrator lists the choices and suggests one", "
 }
 
 TEST_CASE("An unknown Broadphase lists the choices and suggests one", "[config][broadphase]") {
-    const ConfigDiagnostic problem = theProblemIn("World, Broadphase=Octree\n");
+    const ConfigDiagnostic problem = theProblemIn("World, Broadphase=KdTree\n");
     checkLocation(problem, 1, 19, "Broadphase");
-    CHECK_THAT(problem.expected, Contains("SweepAndPrune") && Contains("AabbTree") && Contains("Grid"));
+    CHECK_THAT(problem.expected,
+               Contains("SweepAndPrune") && Contains("AabbTree") && Contains("Grid") && Contains("Octree"));
     CHECK(theProblemIn("World, Broadphase=AabbTre\n").hint == "did you mean 'AabbTree'?");
 }
 

@@ -298,7 +298,8 @@ TEST_CASE("A body falling into a Kill region is removed at the step it enters", 
 
 TEST_CASE("A region finds through the broadphase exactly the bodies a test of every body finds", "[forces][regions][broadphase]") {
     const BroadphaseKind kind =
-        GENERATE(BroadphaseKind::BruteForce, BroadphaseKind::SweepAndPrune, BroadphaseKind::AabbTree, BroadphaseKind::Grid);
+        GENERATE(BroadphaseKind::BruteForce, BroadphaseKind::SweepAndPrune, BroadphaseKind::AabbTree, BroadphaseKind::Grid,
+                 BroadphaseKind::Octree);
     std::mt19937 rng(11);
     std::uniform_real_distribution<Real> u(-20, 20);
     Scene scene = emptyScene(IntegratorKind::SymplecticEuler, Real(1) / 60, Vec3(0));

@@ -419,8 +419,8 @@ SolverWorkspace contactsAtStep(const std::string& file, std::uint64_t step) {
 /// left as found.
 void toPassOrder(SolverWorkspace& solver) {
     if (!solver.colourOrder) return;
-    orderByColour(solver, solver.roundContacts);
-    orderByColour(solver, solver.otherContacts);
+    orderByColour(solver, solver.roundContacts, solver.colouring.roundColourEnds);
+    orderByColour(solver, solver.otherContacts, solver.colouring.otherColourEnds);
 }
 
 /// bench_sphere_rain_1k.scene at step @p step: the round contacts of the step, in the order its passes
@@ -481,16 +481,18 @@ void requireColouring(const SolverWorkspace& solver, const std::vector<std::uint
     }
 }
 
-/// The waves of @p list in its order: the engine's scheduleWaves() (contact_waves.hpp), as
-/// batchRoundContacts() and batchBoxContacts() call it. Checked to share no body within a wave.
+/// The waves of @p list in its order: the engine's scheduleWaves() (contact_colours.hpp), which
+/// batchRoundContacts() and batchBoxContacts() call for a list as found (for one in colour order
+/// they take the colours, which requireWavesAreColours() checks are these waves). Checked to share
+/// no body within a wave.
 std::vector<std::uint32_t> wavesOf(const SolverWorkspace& solver, const std::vector<std::uint32_t>& list,
                                    std::vector<std::size_t>& sizes) {
-    FastWorkspace fast;
-    scheduleWaves(solver, list, fast);
-    requireColouring(solver, list, fast.waveOf);
-    for (std::uint32_t wave = 0; wave < fast.waves; ++wave)
-        sizes.push_back(fast.waveStart[wave] - (wave == 0 ? 0 : fast.waveStart[wave - 1]));
-    return fast.waveOf;
+    ContactWaveSchedule schedule;
+    scheduleWaves(solver, list, schedule);
+    requireColouring(solver, list, schedule.waveOf);
+    for (std::uint32_t wave = 0; wave < schedule.waves; ++wave)
+        sizes.push_back(schedule.ends[wave] - (wave == 0 ? 0 : schedule.ends[wave - 1]));
+    return schedule.waveOf;
 }
 
 /// Fails unless the waves of a colour-ordered list are its colours, contact by contact: the k-th
@@ -556,7 +558,8 @@ int colours(std::uint64_t step) {
         found.push_back(bothLists(solver));
         // The same lists in colour order; the waves of each list must be its colours.
         for (std::vector<std::uint32_t>* list : {&solver.roundContacts, &solver.otherContacts}) {
-            const std::uint32_t colours = orderByColour(solver, *list);
+            std::vector<std::uint32_t> colourEnds;
+            const std::uint32_t colours = orderByColour(solver, *list, colourEnds);
             const std::vector<std::size_t> sizes = list->size() < 2 ? std::vector<std::size_t>(colours, 1)
                                                                     : colourSizes(solver, colours);
             std::vector<std::size_t> waveSizes;

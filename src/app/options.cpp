@@ -418,7 +418,7 @@ GenerateOptions parseGenerateOptions(const std::vector<std::string>& args) {
             const auto found = std::find_if(config::kBroadphaseChoices.begin(), config::kBroadphaseChoices.end(),
                                             [&](const auto& choice) { return config::equalsIgnoreCase(choice.word, value); });
             if (found == config::kBroadphaseChoices.end()) {
-                throw UsageError("--broadphase expects Auto, BruteForce, SweepAndPrune, AabbTree or Grid, found '" +
+                throw UsageError("--broadphase expects Auto, BruteForce, SweepAndPrune, AabbTree, Grid or Octree, found '" +
                                  value + "'");
             }
             options.generator.broadphase = found->value;

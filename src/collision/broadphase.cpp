@@ -5,7 +5,7 @@
 ///
 /// 1. the bounding boxes of all dynamic and kinematic bodies (the proxies),
 ///    computed once here, exactly as brute force computes them;
-/// 2. the structure (sweep and prune, tree or grid) finds the overlapping
+/// 2. the structure (sweep and prune, tree, grid or octree) finds the overlapping
 ///    pairs of proxies, in whatever order it meets them. Each structure only
 ///    *proposes* pairs; the final word is always the same exact test on the
 ///    same boxes as brute force (Aabb::overlaps), so the pair *set* is the same;
@@ -82,6 +82,7 @@ void Broadphase::findPairs(BroadphaseKind kind, const BodySet& bodies, std::vect
     counters_ = {};
 
     const auto dynamicCount = static_cast<std::uint32_t>(bodies.dynamics.size());
+    lastDynamicCount_ = dynamicCount;
     if (kind == BroadphaseKind::BruteForce) {
         findPairsBruteForce(bodies, boxes_, pairs);
         const std::uint64_t n = dynamicCount;
@@ -102,10 +103,32 @@ void Broadphase::findPairs(BroadphaseKind kind, const BodySet& bodies, std::vect
         case BroadphaseKind::SweepAndPrune: sweepAndPrune_.findOverlaps(proxies, rawPairs_, counters_); break;
         case BroadphaseKind::AabbTree: tree_.findOverlaps(proxies, rawPairs_, counters_); break;
         case BroadphaseKind::Grid: grid_.findOverlaps(proxies, rawPairs_, counters_); break;
+        case BroadphaseKind::Octree: octree_.findOverlaps(proxies, rawPairs_, counters_); break;
         case BroadphaseKind::Auto:
         case BroadphaseKind::BruteForce: break;  // handled above
     }
     sortIntoCanonicalOrder(bodies, pairs);
+}
+
+void Broadphase::dynamicBodiesOverlapping(const Aabb& box, std::vector<std::uint32_t>& out) const {
+    out.clear();
+    const std::uint32_t n = lastDynamicCount_;
+    if (n == 0) return;  // also before the first call: nothing was filed
+    const std::span<const Aabb> boxes(boxes_.data(), n);  // brute force keeps the kinematic boxes after them
+    BroadphaseCounters counters;  // a query's work is not the step's: counters_ stays the last findPairs()'
+    switch (lastKind_) {
+        case BroadphaseKind::Auto:  // never stored: findPairs() resolves it
+        case BroadphaseKind::BruteForce:
+            for (std::uint32_t i = 0; i < n; ++i) {
+                if (boxes[i].overlaps(box)) out.push_back(i);
+            }
+            return;  // found in index order
+        case BroadphaseKind::SweepAndPrune: sweepAndPrune_.query(box, out, counters); break;
+        case BroadphaseKind::AabbTree: tree_.query(box, boxes, out, counters); break;
+        case BroadphaseKind::Grid: grid_.query(box, boxes, out, counters); break;
+        case BroadphaseKind::Octree: octree_.query(box, boxes, out, counters); break;
+    }
+    std::sort(out.begin(), out.end());  // in place: no allocation
 }
 
 void Broadphase::sortIntoCanonicalOrder(const BodySet& bodies, std::vector<CandidatePair>& pairs) {
@@ -137,13 +160,6 @@ void Broadphase::sortIntoCanonicalOrder(const BodySet& bodies, std::vector<Candi
             ++counters_.pairTests;
             if (aabbTouchesPlane(boxes_[a], bodies.planes[p])) pairs.push_back({a, {BodyKind::Plane, p}});
         }
-    }
-}
-
-void Broadphase::dynamicBodiesOverlapping(const Aabb& box, std::vector<std::uint32_t>& out) const {
-    out.clear();
-    for (std::size_t i = 0; i < boxes_.size(); ++i) {
-        if (boxes_[i].overlaps(box)) out.push_back(static_cast<std::uint32_t>(i));
     }
 }
 

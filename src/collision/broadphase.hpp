@@ -1,5 +1,5 @@
 /// @file broadphase.hpp
-/// @brief Stage 4 of the step: find the pairs worth an exact test, with one of four broadphases.
+/// @brief Stage 4 of the step: find the pairs worth an exact test, with one of five broadphases.
 ///
 /// | broadphase      | file                               | per step                  | good for |
 /// |-----------------|------------------------------------|---------------------------|----------|
@@ -7,8 +7,9 @@
 /// | `SweepAndPrune` | broadphase_sweep_and_prune.cpp     | O(n + k) after a near-sorted insertion sort | bodies spread out along one axis |
 /// | `AabbTree`      | broadphase_aabb_tree.cpp           | O(n log n) queries, few reinsertions | any mix of sizes, resting bodies |
 /// | `Grid`          | broadphase_grid.cpp                | O(n) rebuild and queries  | many bodies of similar size |
+/// | `Octree`        | broadphase_octree.cpp              | O(n · depth) queries, a body moves only when it leaves its loose cell | sizes spread over a few powers of two |
 ///
-/// All four return exactly the same pairs, in the same order, so a scene's
+/// All five return exactly the same pairs, in the same order, so a scene's
 /// trajectory does not depend on which one runs: only the time does.
 #pragma once
 
@@ -18,6 +19,7 @@
 #include "collision/aabb.hpp"
 #include "collision/broadphase_aabb_tree.hpp"
 #include "collision/broadphase_grid.hpp"
+#include "collision/broadphase_octree.hpp"
 #include "collision/broadphase_proxies.hpp"
 #include "collision/broadphase_static.hpp"
 #include "collision/broadphase_sweep_and_prune.hpp"
@@ -80,9 +82,9 @@ BroadphaseChoice chooseBroadphase(const BodySet& bodies);
 
 /// @brief The World's broadphase: the structure it keeps between steps, and the dispatcher.
 ///
-/// Holds the sweep-and-prune order, the tree and the grid from one step to
+/// Holds the sweep-and-prune order, the tree, the grid and the octree from one step to
 /// the next (only the one in use is kept up to date), which hold the dynamic
-/// bodies; the static tree of the kinematic bodies (StaticTree), which all three
+/// bodies; the static tree of the kinematic bodies (StaticTree), which all four
 /// query and which is rebuilt only when a kinematic body moved; and the scratch arrays
 /// of the common part: the bounding boxes, the raw pairs, and the sort that
 /// puts them in the canonical order. A running scene allocates nothing.
@@ -97,6 +99,17 @@ public:
     void findPairs(BroadphaseKind kind, const BodySet& bodies, std::vector<CandidatePair>& pairs);
 
     /// @brief The dynamic bodies whose boxes of the last findPairs() meet @p box, ascending (out cleared first).
+    /// @brief The dynamic bodies (indices into BodySet::dynamics) whose box of the last findPairs()
+    /// overlaps @p box (Aabb::overlaps, with the boxes broadphaseBounds() gave), sorted ascending.
+    ///
+    /// Asks the structure lastKind() used, so a region costs what a body's own
+    /// search costs, not a loop over every body: brute force loops over the
+    /// boxes; sweep and prune walks its sorted axis from a binary search; the
+    /// tree and the octree descend from their roots; the grid reads the cells
+    /// the box covers. The answer is the same whichever ran (the tests check
+    /// it against a loop over the boxes). Bodies added or moved since the last
+    /// findPairs() are seen where they were then.
+    /// @param out output, cleared first; no allocation once it has grown to the answer's size
     void dynamicBodiesOverlapping(const Aabb& box, std::vector<std::uint32_t>& out) const;
 
     /// @brief The broadphase that ran last (Auto resolved), BruteForce before the first call.
@@ -112,6 +125,8 @@ public:
     const UniformGrid& grid() const { return grid_; }
     /// @brief The sweep and prune state (for tests and the tracker).
     const SweepAndPrune& sweepAndPrune() const { return sweepAndPrune_; }
+    /// @brief The octree (for tests and the tracker).
+    const LooseOctree& octree() const { return octree_; }
     /// @brief The kinematic bodies' tree, which every broadphase but brute force queries (for tests).
     const StaticTree& staticTree() const { return staticTree_; }
 
@@ -128,7 +143,9 @@ private:
     StaticTree staticTree_;
     AabbTree tree_;
     UniformGrid grid_;
+    LooseOctree octree_;
     BroadphaseKind lastKind_ = BroadphaseKind::BruteForce;
+    std::uint32_t lastDynamicCount_ = 0;     ///< Dynamic bodies in the last call: boxes_ holds theirs first.
     BroadphaseChoice autoChoice_;
     bool autoChosen_ = false;
     BroadphaseCounters counters_;

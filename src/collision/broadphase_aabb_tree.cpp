@@ -249,6 +249,28 @@ void AabbTree::findOverlappingLeaves(const ProxySet& proxies, std::vector<ProxyP
     }
 }
 
+void AabbTree::query(const Aabb& box, std::span<const Aabb> boxes, std::vector<std::uint32_t>& hits,
+                     BroadphaseCounters& counters) const {
+    if (root_ == kNull) return;
+    std::int32_t index = root_;
+    while (true) {
+        const Node& node = nodes_[index];
+        ++counters.structureTests;
+        if (node.box.overlaps(box)) {
+            if (!node.isLeaf()) {
+                index = node.child1;
+                continue;
+            }
+            ++counters.pairTests;
+            if (boxes[node.proxy].overlaps(box)) hits.push_back(node.proxy);
+        }
+        // Done below `index`: climb while coming up from a second child, then go on to the sibling.
+        while (index != root_ && nodes_[nodes_[index].parent].child2 == index) index = nodes_[index].parent;
+        if (index == root_) break;
+        index = nodes_[nodes_[index].parent].child2;
+    }
+}
+
 int AabbTree::height() const { return root_ == kNull ? -1 : nodes_[root_].height; }
 
 bool AabbTree::isConsistent(const ProxySet& proxies) const {

@@ -2,6 +2,7 @@
 /// @brief Broadphase with a dynamic bounding-volume tree of fattened boxes.
 #pragma once
 
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -54,6 +55,17 @@ public:
     /// @brief Updates the tree to this step's boxes, then appends every
     /// overlapping pair of proxies (not kinematic–kinematic) to @p pairs.
     void findOverlaps(const ProxySet& proxies, std::vector<ProxyPair>& pairs, BroadphaseCounters& counters);
+
+    /// @brief Appends to @p hits every proxy whose box in @p boxes overlaps @p box, in the tree's order.
+    ///
+    /// Descends from the root into every node whose box overlaps @p box (a
+    /// leaf's fat box holds its proxy's box, an inner node's both children),
+    /// and tests the proxies' own boxes at the leaves. Without a stack: from a
+    /// node it goes down to its first child, and when a subtree is done it
+    /// climbs the parent links to the first ancestor whose second child is
+    /// still to visit. @p boxes must be the boxes of the last findOverlaps().
+    void query(const Aabb& box, std::span<const Aabb> boxes, std::vector<std::uint32_t>& hits,
+               BroadphaseCounters& counters) const;
 
     /// @brief Height of the tree: 0 for a single leaf, −1 when empty.
     int height() const;

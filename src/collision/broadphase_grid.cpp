@@ -298,22 +298,24 @@ void UniformGrid::findOverlapsDense(const ProxySet& proxies, std::vector<ProxyPa
     }
 }
 
+bool UniformGrid::cellRange(Real low, Real high, int axis, std::int32_t& first, std::int32_t& last) const {
+    // The dense grid's cells along @p axis from the one of @p low to the one of @p high, clipped to the grid.
+    // In Real, clamped to one cell beyond the grid on either side, before the cast: no overflow.
+    const Real lowest = Real(-1);
+    const Real highest = Real(columns_[axis]);
+    first = static_cast<std::int32_t>(std::clamp(std::floor((low - origin_[axis]) / cellSize_), lowest, highest));
+    last = static_cast<std::int32_t>(std::clamp(std::floor((high - origin_[axis]) / cellSize_), lowest, highest));
+    first = std::max(first, 0);
+    last = std::min(last, columns_[axis] - 1);
+    return first <= last;
+}
+
 void UniformGrid::findOversizeOverlapsDense(const ProxySet& proxies, std::vector<ProxyPair>& pairs,
                                             BroadphaseCounters& counters) {
     // A listed body can touch an oversize box B only if its lowest corner lies between
     // B.min − cellSize and B.max: the cells of that range, column by column, hold all
     // its listed partners (a falling body's swept box, a boulder among pebbles: a few
     // dozen cells, not the n bodies of a test against everyone).
-    const auto cellRange = [&](Real low, Real high, int axis, std::int32_t& first, std::int32_t& last) {
-        // In Real, clamped to one cell beyond the grid on either side, before the cast: no overflow.
-        const Real lowest = Real(-1);
-        const Real highest = Real(columns_[axis]);
-        first = static_cast<std::int32_t>(std::clamp(std::floor((low - origin_[axis]) / cellSize_), lowest, highest));
-        last = static_cast<std::int32_t>(std::clamp(std::floor((high - origin_[axis]) / cellSize_), lowest, highest));
-        first = std::max(first, 0);
-        last = std::min(last, columns_[axis] - 1);
-        return first <= last;
-    };
     for (const std::uint32_t big : oversize_) {
         const Aabb& box = proxies.boxes[big];
         std::int32_t x0, x1, y0, y1, z0, z1;
@@ -375,6 +377,58 @@ void UniformGrid::findOverlapsHashed(const ProxySet& proxies, std::vector<ProxyP
                         ++counters.pairTests;
                         if (box.overlaps(entry.box)) pairs.push_back({a, entry.proxy});
                     }
+                }
+            }
+        }
+    }
+}
+
+void UniformGrid::query(const Aabb& box, std::span<const Aabb> boxes, std::vector<std::uint32_t>& hits,
+                        BroadphaseCounters& counters) const {
+    if (!keeping_) return;  // no proxies in the last call
+    const auto test = [&](const Entry& entry) {
+        ++counters.pairTests;
+        // The fat box first, read from the entry itself; the proxy's own box decides.
+        if (entry.box.overlaps(box) && boxes[entry.proxy].overlaps(box)) hits.push_back(entry.proxy);
+    };
+    for (const std::uint32_t big : oversize_) {
+        ++counters.pairTests;
+        if (boxes[big].overlaps(box)) hits.push_back(big);
+    }
+    // The lowest corner to look from, box.min − cellSize, lowered by a few units of rounding
+    // (the sizes the cell was fitted to were rounded when measured): an extra cell costs a
+    // few box tests, a cell too few a wrong answer.
+    const Vec3 slack = Real(4) * std::numeric_limits<Real>::epsilon() * (glm::abs(box.min) + Vec3(cellSize_));
+    const Vec3 from = box.min - Vec3(cellSize_) - slack;
+    if (dense_) {
+        std::int32_t x0, x1, y0, y1, z0, z1;
+        if (!cellRange(from.x, box.max.x, 0, x0, x1) || !cellRange(from.y, box.max.y, 1, y0, y1) ||
+            !cellRange(from.z, box.max.z, 2, z0, z1)) {
+            return;  // beyond the listed proxies on some axis
+        }
+        for (std::int32_t x = x0; x <= x1; ++x) {
+            for (std::int32_t y = y0; y <= y1; ++y) {
+                for (std::uint32_t e = bucketStart_[slotOf(x, y, z0)]; e < bucketStart_[slotOf(x, y, z1) + 1]; ++e) {
+                    test(entries_[e]);
+                }
+            }
+        }
+        return;
+    }
+    const Cell low = cellOf(from);
+    const Cell high = cellOf(box.max);
+    const double cells = (double(high.x) - low.x + 1) * (double(high.y) - low.y + 1) * (double(high.z) - low.z + 1);
+    if (cells > double(entries_.size())) {
+        for (const Entry& entry : entries_) test(entry);  // fewer entries than cells: read them all
+        return;
+    }
+    for (std::int32_t x = low.x; x <= high.x; ++x) {
+        for (std::int32_t y = low.y; y <= high.y; ++y) {
+            for (std::int32_t z = low.z; z <= high.z; ++z) {
+                const Cell cell{x, y, z};
+                const std::size_t bucket = bucketOf(cell);
+                for (std::uint32_t e = bucketStart_[bucket]; e < bucketStart_[bucket + 1]; ++e) {
+                    if (entries_[e].cell == cell) test(entries_[e]);
                 }
             }
         }

@@ -2,6 +2,7 @@
 /// @brief Broadphase with a uniform grid of cells, stored as a hash table, and the pairs it found kept from step to step.
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include "collision/broadphase_proxies.hpp"
@@ -80,6 +81,19 @@ public:
     /// @brief Whether the last call found every pair again (the first call, or too many moved).
     bool refoundAll() const { return refoundAll_; }
 
+    /// @brief Appends to @p hits every proxy whose box in @p boxes overlaps @p box, in the grid's order.
+    ///
+    /// A listed proxy's fat box F (which holds its box) can overlap @p box only
+    /// if its lowest corner lies between box.min − cellSize and box.max on every
+    /// axis (F is at most one cell wide), so only the cells of that range are
+    /// read: in the dense grid the (x, y) columns of the range, one run each; in
+    /// the hashed grid each cell's bucket, or every entry when the range has
+    /// more cells than there are entries (a box larger than the scene). The
+    /// oversize proxies are tested one by one. @p boxes must be the boxes of
+    /// the last findOverlaps().
+    void query(const Aabb& box, std::span<const Aabb> boxes, std::vector<std::uint32_t>& hits,
+               BroadphaseCounters& counters) const;
+
     /// @brief Side of a cell in the last call, m.
     Real cellSize() const { return cellSize_; }
     /// @brief Number of oversize bodies in the last call (tested against all others).
@@ -106,6 +120,7 @@ private:
     void chooseCellSize(const ProxySet& proxies);
     bool fitDenseGrid(const ProxySet& proxies);
     std::uint32_t slotOf(std::int32_t x, std::int32_t y, std::int32_t z) const;
+    bool cellRange(Real low, Real high, int axis, std::int32_t& first, std::int32_t& last) const;
     void findAllFatPairs(const ProxySet& fat, BroadphaseCounters& counters);
     void findFatPairsOfMoved(const ProxySet& fat, BroadphaseCounters& counters);
     void fileProxies(const ProxySet& proxies);

@@ -3,6 +3,8 @@
 #include "collision/broadphase_sweep_and_prune.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 #include "core/insertion_sort.hpp"
 
@@ -29,7 +31,10 @@ void SweepAndPrune::chooseAxis(const ProxySet& proxies) {
 
 void SweepAndPrune::findOverlaps(const ProxySet& proxies, std::vector<ProxyPair>& pairs, BroadphaseCounters& counters) {
     const std::uint32_t n = proxies.size();
-    if (n == 0) return;
+    if (n == 0) {
+        sorted_.clear();  // nothing for query() to find
+        return;
+    }
     const int previousAxis = axis_;
     chooseAxis(proxies);
     const int axis = axis_;
@@ -46,6 +51,9 @@ void SweepAndPrune::findOverlaps(const ProxySet& proxies, std::vector<ProxyPair>
         for (Entry& entry : sorted_) entry.box = proxies.boxes[entry.proxy];
         insertionSort(std::span<Entry>(sorted_), byMin);
     }
+
+    widest_ = 0;
+    for (const Entry& entry : sorted_) widest_ = std::max(widest_, entry.box.max[axis] - entry.box.min[axis]);
 
     // The sweep: i's partners are the entries after it that start before i ends.
     // Along the sweep axis such a partner overlaps i already (it starts after i
@@ -72,6 +80,22 @@ void SweepAndPrune::findOverlaps(const ProxySet& proxies, std::vector<ProxyPair>
         }
     }
     counters.pairTests += tests;
+}
+
+void SweepAndPrune::query(const Aabb& box, std::vector<std::uint32_t>& hits, BroadphaseCounters& counters) const {
+    if (sorted_.empty()) return;
+    const int axis = axis_;
+    // A min below box.min − widest_ leaves that box's max short of box.min. The widths were
+    // rounded when they were measured, so the bound is lowered by a few units of rounding:
+    // one more candidate costs a box test, a lost one a wrong answer.
+    const Real slack = 4 * std::numeric_limits<Real>::epsilon() * (std::abs(box.min[axis]) + widest_);
+    const Real lowest = box.min[axis] - widest_ - slack;
+    const auto first = std::partition_point(sorted_.begin(), sorted_.end(),
+                                            [&](const Entry& entry) { return entry.box.min[axis] < lowest; });
+    for (auto entry = first; entry != sorted_.end() && entry->box.min[axis] <= box.max[axis]; ++entry) {
+        ++counters.pairTests;
+        if (entry->box.overlaps(box)) hits.push_back(entry->proxy);
+    }
 }
 
 }  // namespace stepwise

@@ -36,6 +36,15 @@ public:
     /// @brief The axis sorted along in the last call: 0 = x, 1 = y, 2 = z (−1 before the first call).
     int axis() const { return axis_; }
 
+    /// @brief Appends to @p hits every proxy of the last call whose box overlaps @p box, in sort order.
+    ///
+    /// The sorted axis answers it: a proxy can overlap only if its min lies in
+    /// [box.min − w, box.max] along the axis, w the widest proxy along it (its
+    /// max is at most min + w), so a binary search finds the first candidate
+    /// and the walk stops at the first min beyond box.max: O(log n + m) for m
+    /// candidates, as many as a sweep interval of that length crosses.
+    void query(const Aabb& box, std::vector<std::uint32_t>& hits, BroadphaseCounters& counters) const;
+
 private:
     /// One box in sort order. The whole box is copied here so the sweep
     /// reads one contiguous array instead of jumping around the proxies.
@@ -48,6 +57,7 @@ private:
 
     std::vector<Entry> sorted_;  ///< Every proxy, sorted by box.min[axis_].
     int axis_ = -1;              ///< Sort axis, or −1 before the first call.
+    Real widest_ = 0;            ///< Widest box along the sort axis in the last call, m (for query()).
 };
 
 /// A new sort axis must spread the centres this many times more (in variance)

@@ -10,9 +10,10 @@
 
 namespace stepwise {
 
-/// @brief The four broadphases, brute force (the reference) first.
-inline constexpr std::array<BroadphaseKind, 4> kAllBroadphases = {
-    BroadphaseKind::BruteForce, BroadphaseKind::SweepAndPrune, BroadphaseKind::AabbTree, BroadphaseKind::Grid};
+/// @brief The five broadphases, brute force (the reference) first.
+inline constexpr std::array<BroadphaseKind, 5> kAllBroadphases = {
+    BroadphaseKind::BruteForce, BroadphaseKind::SweepAndPrune, BroadphaseKind::AabbTree, BroadphaseKind::Grid,
+    BroadphaseKind::Octree};
 
 /// @brief One broadphase's totals over the steps the tracker watched.
 struct TrackedBroadphase {

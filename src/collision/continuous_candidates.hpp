@@ -13,7 +13,7 @@
 /// or sweep order was last brought up to date at the poses of the step's
 /// start (or of the previous step), without the swept boxes, and with
 /// `Broadphase=BruteForce` there is no structure at all. Querying it would
-/// need every one of the four broadphases to prove it still bounds every
+/// need every one of the five broadphases to prove it still bounds every
 /// body: a stale box misses a body that moved in, and the stage must find a
 /// superset of the true touches to give the same result. So the stage keeps
 /// its own, rebuilt from the current boxes in each step that has a fast body.

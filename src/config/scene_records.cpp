@@ -396,7 +396,7 @@ const std::array<Choice<SolverKind>, 2> kSolverChoices = {{
     {"SequentialImpulse", SolverKind::SequentialImpulse},
 }};
 
-const std::array<Choice<BroadphaseKind>, 8> kBroadphaseChoices = {{
+const std::array<Choice<BroadphaseKind>, 10> kBroadphaseChoices = {{
     {"Auto", BroadphaseKind::Auto},
     {"BruteForce", BroadphaseKind::BruteForce},
     {"SweepAndPrune", BroadphaseKind::SweepAndPrune},
@@ -405,6 +405,8 @@ const std::array<Choice<BroadphaseKind>, 8> kBroadphaseChoices = {{
     {"DynamicTree", BroadphaseKind::AabbTree},
     {"Grid", BroadphaseKind::Grid},
     {"UniformGrid", BroadphaseKind::Grid},
+    {"Octree", BroadphaseKind::Octree},
+    {"LooseOctree", BroadphaseKind::Octree},
 }};
 
 const std::array<Choice<bool>, 6> kBooleanChoices = {{

@@ -108,7 +108,7 @@ extern const std::array<Choice<IntegratorKind>, 6> kIntegratorChoices;
 /// @brief Accepted spellings of SolverKind (any case).
 extern const std::array<Choice<SolverKind>, 2> kSolverChoices;
 /// @brief Accepted spellings of BroadphaseKind (any case), with synonyms.
-extern const std::array<Choice<BroadphaseKind>, 8> kBroadphaseChoices;
+extern const std::array<Choice<BroadphaseKind>, 10> kBroadphaseChoices;
 
 /// @brief Accepted spellings of a Boolean field (any case): true/false, yes/no, 1/0.
 extern const std::array<Choice<bool>, 6> kBooleanChoices;

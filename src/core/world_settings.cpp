@@ -56,6 +56,7 @@ const char* toString(BroadphaseKind kind) {
         case BroadphaseKind::SweepAndPrune: return "SweepAndPrune";
         case BroadphaseKind::AabbTree: return "AabbTree";
         case BroadphaseKind::Grid: return "Grid";
+        case BroadphaseKind::Octree: return "Octree";
     }
     return "?";
 }

@@ -41,9 +41,10 @@ enum class BroadphaseKind : std::uint8_t {
     SweepAndPrune,  ///< Sort the boxes along the axis of greatest spread and sweep.
     AabbTree,       ///< Dynamic tree of fattened boxes, inserted by the surface-area heuristic.
     Grid,           ///< Uniform grid, cells sized from the bodies.
+    Octree,         ///< Loose octree: each body at the depth of its size, in the cell of its centre.
 };
 
-/// @brief Scene-file spelling of a broadphase ("Auto", "BruteForce", "SweepAndPrune", "AabbTree", "Grid").
+/// @brief Scene-file spelling of a broadphase ("Auto", "BruteForce", "SweepAndPrune", "AabbTree", "Grid", "Octree").
 const char* toString(BroadphaseKind kind);
 
 /// @brief Which algorithm finds the contacts of two convex shapes (`World, Narrowphase=…`).

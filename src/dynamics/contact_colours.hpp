@@ -51,8 +51,30 @@ inline constexpr std::uint32_t kColourCount = 64;
 /// colour: greedy colouring in the list's order, each colour's contacts keeping that order.
 ///
 /// The contacts that fit no colour (a body already in kColourCount colours) come last, in their
-/// order. Works on the workspace's scratch arrays; allocates nothing once they have grown.
+/// order. @p colourEnds gets where each colour's contacts end in the new list (colour k runs from
+/// colourEnds[k − 1], or 0, to colourEnds[k]) and one more entry, the list's size: the fast path
+/// batches the colours from there (contact_waves.hpp). Works on the workspace's scratch arrays and
+/// @p colourEnds; allocates nothing once they have grown.
 /// @return how many colours the list uses (the last group counted as one)
-std::uint32_t orderByColour(SolverWorkspace& workspace, std::vector<std::uint32_t>& list);
+std::uint32_t orderByColour(SolverWorkspace& workspace, std::vector<std::uint32_t>& list,
+                            std::vector<std::uint32_t>& colourEnds);
+
+struct ContactWaveSchedule;
+
+/// @brief Puts the contacts @p list (indices into SolverWorkspace::contacts, in their pass order) in
+/// waves: each contact, in the list's order, takes the first wave after the latest wave of an earlier
+/// contact on either of its bodies (the static record 0 does not count: nothing moves it),
+/// \f[ w_c = \max\big(\text{next}(A_c),\ \text{next}(B_c)\big), \qquad
+///     \text{next}(A_c) = \text{next}(B_c) = w_c + 1 . \f]
+///
+/// Two contacts of one wave never share a dynamic body, and every body meets its contacts wave by
+/// wave in the list's order (list scheduling of the contacts' dependency graph; Tonge, "Iterative
+/// Rigid Body Solvers", GDC 2012). So a pass that takes the list wave by wave, and the contacts of a
+/// wave in any order or at once, computes the numbers of a pass in the list's order, to the last
+/// bit. Unlike the colours, the waves keep *any* order: the order found too. Fills @p schedule
+/// (its arrays keep their capacity). For a list in colour order the waves are its colours
+/// (fast/contact_waves.hpp).
+void scheduleWaves(const SolverWorkspace& workspace, const std::vector<std::uint32_t>& list,
+                   ContactWaveSchedule& schedule);
 
 }  // namespace stepwise

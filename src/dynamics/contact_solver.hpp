@@ -250,11 +250,32 @@ struct PreparedSideArrays {
 /// 200 ns to prepare, so 1024 are some 200 µs against a hand-over of a few.
 inline constexpr std::size_t kParallelPrepareContacts = 1024;
 
+/// @brief A list of contacts put in waves by scheduleWaves() (contact_colours.hpp), and its scratch.
+struct ContactWaveSchedule {
+    std::vector<std::uint32_t> nextWave;  ///< Per record: the first wave its next contact may take (scratch).
+    std::vector<std::uint32_t> waveOf;    ///< Per contact of the list, in the list's order: its wave.
+    std::vector<std::uint32_t> ends;      ///< Per wave: where its contacts end in `order`; then the list's size.
+    std::vector<std::uint32_t> order;     ///< The list wave by wave, each wave in the list's order.
+    std::uint32_t waves = 0;              ///< How many waves.
+};
+
+/// Contacts of the compression from which applyRestitution() splits its passes between threads:
+/// fewer cannot fill a wave of kParallelRestitutionWave twice over.
+inline constexpr std::size_t kParallelRestitution = 2048;
+
+/// A wave of the compression's contacts is split between threads from this many contacts on; smaller
+/// ones run on the calling thread. A contact costs some 10–30 ns a pass, so 1024 are some 10–30 µs,
+/// against a hand-over and a barrier of a few µs (more on a busy machine), every pass, every wave.
+inline constexpr std::size_t kParallelRestitutionWave = 1024;
+
 /// @brief Scratch arrays of orderByColour() (contact_colours.hpp), kept so that a settled scene allocates nothing.
 struct ContactColouring {
     std::vector<std::uint64_t> usedColours;  ///< Per record: bit k set when one of its contacts has colour k.
     std::vector<std::uint32_t> colourOf;     ///< Per contact of the list: its colour.
-    std::vector<std::uint32_t> colourStart;  ///< Per colour: where its contacts start in the new order.
+    /// Per colour of SolverWorkspace::roundContacts: where its contacts end there (orderByColour()),
+    /// then the list's size. Empty unless the list is in colour order.
+    std::vector<std::uint32_t> roundColourEnds;
+    std::vector<std::uint32_t> otherColourEnds;  ///< The same for SolverWorkspace::otherContacts.
     std::vector<std::uint32_t> ordered;      ///< The list in colour order, swapped in.
 };
 
@@ -275,6 +296,7 @@ struct SolverWorkspace {
     /// pushed, applyRestitution() has nothing to do (in a pile at rest there is none).
     std::vector<std::uint32_t> bouncing;
     std::vector<std::uint32_t> pressed;          ///< applyRestitution(): the contacts that pushed this step.
+    ContactWaveSchedule pressedWaves;            ///< applyRestitution() on threads: `pressed` in waves.
     std::vector<SolverBody> impactBodies;        ///< applyRestitution(): each record's velocity change in the compression.
     std::vector<SolverBody> bodies;              ///< Record 0 static, then one per dynamic body in a contact or a joint (solver_body.hpp).
     std::vector<SolverBodyInertia> inertias;     ///< The same records' inertia (read by prepare and a box's write-back).
@@ -490,7 +512,15 @@ inline constexpr Real kCompressionTolerance = Real(1e-6);
 /// contact to v_n = e·v_c one after the other does not: the last one driven undoes the others,
 /// and a gas of 1000 balls loses most of its energy in seconds.
 /// @return true if any contact bounced (only then did a solver body's velocity change).
-bool applyRestitution(SolverWorkspace& workspace);
+///
+/// **On threads.** Each contact's update reads and writes only its own two bodies' records and its
+/// own numbers. So with a @p pool of several threads and at least kParallelRestitution contacts in
+/// the compression, the passes take the contacts wave by wave (scheduleWaves(), contact_colours.hpp:
+/// no wave holds a body twice, and every body meets its contacts in the order of the one-thread
+/// pass), and cut each wide wave into ranges on the threads: every number is the one-thread pass's,
+/// to the bit, and so is each pass's largest change, a maximum, which no order changes.
+/// @param pool threads to share the passes (nullptr: the calling thread alone)
+bool applyRestitution(SolverWorkspace& workspace, ThreadPool* pool = nullptr);
 
 /// @brief Keeps this step's impulses for the next step's warm start, and fills @p reports (may be empty).
 void storeContactImpulses(std::span<const Contact> contacts, SolverWorkspace& workspace,

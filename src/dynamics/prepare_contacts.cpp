@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/parallel_ranges.hpp"
 #include "dynamics/contact_body.hpp"
 #include "dynamics/contact_colours.hpp"
 #include "dynamics/contact_rows.hpp"
@@ -236,19 +237,17 @@ void prepareContacts(const BodySet& bodies, std::span<const Contact> contacts, s
     w.starts.resize(contacts.size());
 
     // 1. Each contact on its own numbers: in ranges of contacts, on the pool's threads when there
-    //    are enough. A range keeps its stored rows and turning anchors in side arrays of its own.
+    //    are enough (core/parallel_ranges.hpp). A range keeps its stored rows and turning anchors
+    //    in side arrays of its own.
     const std::size_t count = contacts.size();
-    const std::size_t threads = pool == nullptr ? 1 : pool->threadCount();
-    const std::size_t ranges = threads > 1 && count >= kParallelPrepareContacts ? 2 * threads : 1;
-    const std::size_t perRange = (count + ranges - 1) / ranges;
-    w.preparedRanges.resize(std::max(ranges, w.preparedRanges.size()));
-    auto prepareRange = [&](std::size_t r) {
+    const RangeSplit split = splitRanges(pool, 0, count, kParallelPrepareContacts);
+    w.preparedRanges.resize(std::max(split.count, w.preparedRanges.size()));
+    runRanges(pool, split, [&](std::size_t r, std::size_t first, std::size_t last) {
         PreparedSideArrays& out = w.preparedRanges[r];
         out.rows.clear();
         out.turningAnchors.clear();
         std::size_t nextCached = 0;  // the contacts come in key order, mostly: each lookup starts where the last ended
-        const std::size_t end = std::min(count, (r + 1) * perRange);
-        for (std::size_t i = r * perRange; i < end; ++i) {
+        for (std::size_t i = first; i < last; ++i) {
             SolverContact& c = w.contacts[i];
             c = prepareOne(bodies, contacts[i], h, w, w.starts[i], out);
             if (!warmStart) continue;
@@ -258,28 +257,22 @@ void prepareContacts(const BodySet& bodies, std::span<const Contact> contacts, s
                 for (int k = 0; k < 2; ++k) c.tangentImpulse[k] = glm::dot(cached->frictionImpulse, c.tangent[k]);
             }
         }
-    };
-    if (ranges == 1) {
-        prepareRange(0);
-    } else {
-        pool->run(ranges, prepareRange);
-    }
+    });
 
     // 2. The side arrays joined in range order, so every index is the one a single range gives.
-    if (ranges == 1) {
+    if (split.count == 1) {
         std::swap(w.rows, w.preparedRanges[0].rows);
         std::swap(w.turningAnchors, w.preparedRanges[0].turningAnchors);
     } else {
         w.rows.clear();
         w.turningAnchors.clear();
-        for (std::size_t r = 0; r < ranges; ++r) {
+        for (std::size_t r = 0; r < split.count; ++r) {
             const auto rowsFrom = static_cast<std::uint32_t>(w.rows.size());
             const auto anchorsFrom = static_cast<std::uint32_t>(w.turningAnchors.size());
             const PreparedSideArrays& part = w.preparedRanges[r];
             w.rows.insert(w.rows.end(), part.rows.begin(), part.rows.end());
             w.turningAnchors.insert(w.turningAnchors.end(), part.turningAnchors.begin(), part.turningAnchors.end());
-            const std::size_t end = std::min(count, (r + 1) * perRange);
-            for (std::size_t i = r * perRange; i < end; ++i) {
+            for (std::size_t i = split.first(r); i < split.last(r); ++i) {
                 SolverContact& c = w.contacts[i];
                 if (c.rows != kRoundContact) c.rows += rowsFrom;
                 if (c.turningAnchors != kNoTurningAnchors) c.turningAnchors += anchorsFrom;
@@ -298,8 +291,11 @@ void prepareContacts(const BodySet& bodies, std::span<const Contact> contacts, s
 
     // 4. The order of the passes (contact_colours.hpp)
     if (w.colourOrder) {
-        orderByColour(w, w.roundContacts);
-        orderByColour(w, w.otherContacts);
+        orderByColour(w, w.roundContacts, w.colouring.roundColourEnds);
+        orderByColour(w, w.otherContacts, w.colouring.otherColourEnds);
+    } else {
+        w.colouring.roundColourEnds.clear();
+        w.colouring.otherColourEnds.clear();
     }
 }
 

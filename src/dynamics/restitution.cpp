@@ -3,14 +3,52 @@
 #include "dynamics/contact_solver.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <span>
 #include <vector>
 
+#include "core/parallel_ranges.hpp"
+#include "dynamics/contact_colours.hpp"
 #include "dynamics/contact_rows.hpp"
 
 namespace stepwise {
 
-bool applyRestitution(SolverWorkspace& workspace) {
+namespace {
+
+/// One pass of @p visit over the contacts of the compression, returning the largest change any of
+/// them made. Without @p waves: `visit(pressed)`, in order, on the calling thread. With them: wave
+/// by wave, each wave of at least kParallelRestitutionWave contacts cut into ranges on @p pool's
+/// threads, the runs of smaller waves between on the calling thread. A contact reads and writes only
+/// its two bodies, every body meets its contacts in the same order either way, and a maximum does
+/// not depend on the order it is taken in: the same bits (contact_solver.hpp, applyRestitution()).
+template <class Visit>
+Real passOver(const std::vector<std::uint32_t>& pressed, const ContactWaveSchedule* waves, ThreadPool* pool,
+              Visit&& visit) {
+    if (waves == nullptr) return visit(std::span<const std::uint32_t>(pressed));
+    const std::span<const std::uint32_t> order(waves->order);
+    Real largest = 0;
+    std::size_t serialFrom = 0;  // the first contact not yet visited
+    for (std::uint32_t wave = 0; wave < waves->waves; ++wave) {
+        const std::size_t first = wave == 0 ? 0 : waves->ends[wave - 1];
+        const std::size_t end = waves->ends[wave];
+        if (end - first < kParallelRestitutionWave) continue;
+        if (serialFrom < first) largest = std::max(largest, visit(order.subspan(serialFrom, first - serialFrom)));
+        const RangeSplit split = splitRanges(pool, first, end, 0);
+        std::array<Real, kMaxRanges> largestOf{};
+        runRanges(pool, split, [&](std::size_t i, std::size_t from, std::size_t to) {
+            largestOf[i] = visit(order.subspan(from, to - from));
+        });
+        for (std::size_t i = 0; i < split.count; ++i) largest = std::max(largest, largestOf[i]);
+        serialFrom = end;
+    }
+    if (serialFrom < order.size()) largest = std::max(largest, visit(order.subspan(serialFrom)));
+    return largest;
+}
+
+}  // namespace
+
+bool applyRestitution(SolverWorkspace& workspace, ThreadPool* pool) {
     // 1. The impacts: contacts that approached faster than resting and pushed. None: no bounce.
     Real fastest = 0;
     for (const std::uint32_t i : workspace.bouncing) {
@@ -38,16 +76,24 @@ bool applyRestitution(SolverWorkspace& workspace) {
     change = workspace.bodies;
     for (SolverBody& record : change) record.velocity = record.angularVelocity = Vec3(0);
     const Real tolerance = kCompressionTolerance * fastest;
-    for (int pass = 0; pass < kMaxCompressionPasses; ++pass) {
+    // Enough contacts for threads: the same contacts in waves (passOver())
+    const bool onThreads = pool != nullptr && pool->threadCount() > 1 && pressed.size() >= kParallelRestitution;
+    if (onThreads) scheduleWaves(workspace, pressed, workspace.pressedWaves);
+    const ContactWaveSchedule* waves = onThreads ? &workspace.pressedWaves : nullptr;
+    // The static record: nothing moves it (its inverse masses are zero, so an impulse adds +0 to its
+    // zero velocities). Each visit reads, and writes to no effect, a copy of its own, so that two
+    // threads never write one record.
+    auto compress = [&](std::span<const std::uint32_t> contacts) {
+        SolverBody fixed = change[kStaticSolverBody];
         Real largest = 0;  // the largest change of a normal velocity in this pass, m/s
-        for (const std::uint32_t i : pressed) {
+        for (const std::uint32_t i : contacts) {
             const SolverContact& c = workspace.contacts[i];
             ContactStart& start = workspace.starts[i];
             withRows(c, workspace, [&](const auto& rows) {
                 SolverBody& a = change[c.bodyA];
-                SolverBody& b = change[c.bodyB];
+                SolverBody& b = c.bodyB == kStaticSolverBody ? fixed : change[c.bodyB];
                 // w + J·Δu; a kinematic surface's speed is in w already, so it comes out of J·Δu.
-                const Real vn = start.touchVelocity + rows.normalVelocity(a, b) - rows.normalVelocity(change[0], change[0]);
+                const Real vn = start.touchVelocity + rows.normalVelocity(a, b) - rows.normalVelocity(fixed, fixed);
                 const Real total = std::max(start.compression - c.normalMass * vn, Real(0));
                 const Real impulse = total - start.compression;
                 rows.applyNormal(a, b, impulse);
@@ -55,7 +101,10 @@ bool applyRestitution(SolverWorkspace& workspace) {
                 largest = std::max(largest, std::abs(impulse) / c.normalMass);
             });
         }
-        if (largest <= tolerance) break;
+        return largest;
+    };
+    for (int pass = 0; pass < kMaxCompressionPasses; ++pass) {
+        if (passOver(pressed, waves, pool, compress) <= tolerance) break;
     }
 
     // 3. The restitution. Poisson's law says where the impact ends: every contact that pushed in
@@ -63,6 +112,7 @@ bool applyRestitution(SolverWorkspace& workspace) {
     //    the compression on the real velocities, softly: a soft contact springs back a little of
     //    its overlap, gravity and joints act too. So the bounce is not e·P added blindly, but the
     //    impulse that brings each such contact to its Poisson velocity, by the same passes.
+    bool bounced = false;  // does any contact push back at all?
     for (const std::uint32_t i : pressed) {
         const SolverContact& c = workspace.contacts[i];
         ContactStart& start = workspace.starts[i];
@@ -70,17 +120,18 @@ bool applyRestitution(SolverWorkspace& workspace) {
             return start.elasticity * (rows.normalVelocity(change[c.bodyA], change[c.bodyB]) -
                                        rows.normalVelocity(change[0], change[0]));
         });
+        bounced = bounced || (start.compression != Real(0) && start.elasticity != Real(0));
     }
-    bool bounced = false;
-    for (int pass = 0; pass < kMaxCompressionPasses; ++pass) {
+    auto bounce = [&](std::span<const std::uint32_t> contacts) {
+        SolverBody fixed = workspace.bodies[kStaticSolverBody];  // a copy of its own, as in the compression
         Real largest = 0;
-        for (const std::uint32_t i : pressed) {
+        for (const std::uint32_t i : contacts) {
             SolverContact& c = workspace.contacts[i];
             ContactStart& start = workspace.starts[i];
             if (start.compression == Real(0) || start.elasticity == Real(0)) continue;
             withRows(c, workspace, [&](const auto& rows) {
                 SolverBody& a = workspace.bodies[c.bodyA];
-                SolverBody& b = workspace.bodies[c.bodyB];
+                SolverBody& b = c.bodyB == kStaticSolverBody ? fixed : workspace.bodies[c.bodyB];
                 const Real impulse = c.normalMass * (start.bounceVelocity - rows.normalVelocity(a, b));
                 // It may take back what the soft solve sprang back beyond the compression, never
                 // more than the step pushed: the impact's impulses together never pull.
@@ -90,11 +141,14 @@ bool applyRestitution(SolverWorkspace& workspace) {
                 c.normalImpulse += total - start.bounceImpulse;
                 start.bounceImpulse = total;
             });
-            bounced = true;
         }
-        if (largest <= tolerance) break;
+        return largest;
+    };
+    if (!bounced) return false;
+    for (int pass = 0; pass < kMaxCompressionPasses; ++pass) {
+        if (passOver(pressed, waves, pool, bounce) <= tolerance) break;
     }
-    return bounced;
+    return true;
 }
 
 }  // namespace stepwise

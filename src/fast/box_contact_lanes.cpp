@@ -141,12 +141,12 @@ void batchBoxContacts(const SolverWorkspace& solver, FastWorkspace& fast) {
     fast.boxAnchors.clear();
     fast.boxWaveBatches.clear();
     if (solver.otherContacts.empty()) return;
-    scheduleWaves(solver, solver.otherContacts, fast);
+    const ContactWaves waves = contactWaves(solver, solver.otherContacts, solver.colouring.otherColourEnds, fast);
     if (double(solver.otherContacts.size()) < kMinBoxContactsPerWave * double(fast.waves)) return;  // thin: one at a time
     std::uint32_t first = 0;
     for (std::uint32_t wave = 0; wave < fast.waves; ++wave) {
         fast.boxWaveBatches.push_back(static_cast<std::uint32_t>(fast.boxBatches.size()));
-        const std::uint32_t end = fast.waveStart[wave];
+        const std::uint32_t end = waves.ends[wave];
         for (std::uint32_t k = first; k < end; ++k) {
             const int lane = static_cast<int>((k - first) % kLanes);
             if (lane == 0) {
@@ -154,7 +154,7 @@ void batchBoxContacts(const SolverWorkspace& solver, FastWorkspace& fast) {
                 fast.boxBatches.back().wave = wave;
                 fast.boxAnchors.push_back(emptyAnchors());
             }
-            const std::uint32_t index = fast.waveOrder[k];
+            const std::uint32_t index = waves.order[k];
             const SolverContact& c = solver.contacts[index];
             setLane(fast.boxBatches.back(), lane, index, c, solver.rows[c.rows]);
             setAnchors(fast.boxAnchors.back(), lane, c, solver);

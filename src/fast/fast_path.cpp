@@ -294,9 +294,9 @@ SolverFootprint fastFootprint(const SolverWorkspace& w, const FastWorkspace& fas
     if (fast.packedStep) {
         f.substepBytes += (fast.sharedFlight ? sizeof(FreeFlight) : bytesOf(fast.freeFlight)) + bytesOf(w.ballInertia);
     }
-    f.allBytes = solverFootprint(w).allBytes + bytesOf(fast.roundBatches) + bytesOf(fast.boxBatches) + bytesOf(fast.nextWave) +
-                 bytesOf(fast.waveBatches) +
-                 bytesOf(fast.waveOf) + bytesOf(fast.waveStart) + bytesOf(fast.waveOrder) + bytesOf(fast.centres) +
+    f.allBytes = solverFootprint(w).allBytes + bytesOf(fast.roundBatches) + bytesOf(fast.boxBatches) + bytesOf(fast.schedule.nextWave) +
+                 bytesOf(fast.waveBatches) + bytesOf(fast.schedule.waveOf) + bytesOf(fast.schedule.ends) +
+                 bytesOf(fast.schedule.order) + bytesOf(fast.centres) +
                  bytesOf(fast.orientations) + bytesOf(fast.freeFlight) + bytesOf(fast.startMomentum);
     return f;
 }

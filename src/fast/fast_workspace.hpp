@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/types.hpp"
+#include "dynamics/contact_solver.hpp"
 #include "fast/box_contact_lanes.hpp"
 #include "fast/fast_path_counts.hpp"
 #include "fast/round_contact_lanes.hpp"
@@ -48,11 +49,9 @@ struct FastWorkspace {
     /// Per wave of the box batches, the index of its first batch, and one more entry: the batch
     /// count (empty when the box contacts are solved one at a time).
     std::vector<std::uint32_t> boxWaveBatches;
-    std::vector<std::uint32_t> nextWave;   ///< Per record: the first wave its next contact may take (scratch, contact_waves.hpp).
-    std::vector<std::uint32_t> waveOf;     ///< Per contact scheduled (in the list's order): its wave (scratch).
-    std::vector<std::uint32_t> waveStart;  ///< Per wave: where its contacts end in waveOrder (scratch).
-    std::vector<std::uint32_t> waveOrder;  ///< The contacts scheduled, wave by wave (scratch).
-    std::uint32_t waves = 0;               ///< How many waves the batching opened (scratch).
+    /// A list in the order found put in waves (contactWaves(), contact_waves.hpp; scratch).
+    ContactWaveSchedule schedule;
+    std::uint32_t waves = 0;               ///< How many waves the batching opened: colours or scheduled (scratch).
     /// Per wave, the index of its first batch in roundBatches, and one more entry: the batch count.
     /// The threads split a wave's batches between them (parallel_waves.hpp).
     std::vector<std::uint32_t> waveBatches;

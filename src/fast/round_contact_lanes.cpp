@@ -111,24 +111,23 @@ void recordCentres(const SolverWorkspace& solver, FastWorkspace& fast) {
 
 void batchRoundContacts(const SolverWorkspace& solver, FastWorkspace& fast) {
     // Each round contact's wave (contact_waves.hpp), then each wave's contacts, four to a batch.
-    scheduleWaves(solver, solver.roundContacts, fast);
-    const std::uint32_t waves = fast.waves;
+    const ContactWaves waves = contactWaves(solver, solver.roundContacts, solver.colouring.roundColourEnds, fast);
     std::size_t batches = 0;
-    for (std::uint32_t wave = 0; wave < waves; ++wave) {
-        const std::uint32_t first = wave == 0 ? 0 : fast.waveStart[wave - 1];
-        batches += (fast.waveStart[wave] - first + kLanes - 1) / kLanes;
+    for (std::size_t wave = 0; wave < waves.ends.size(); ++wave) {
+        const std::uint32_t first = wave == 0 ? 0 : waves.ends[wave - 1];
+        batches += (waves.ends[wave] - first + kLanes - 1) / kLanes;
     }
     // The batches walk the waves in turn.
     fast.roundBatches.clear();
     fast.roundBatches.reserve(batches);
     fast.waveBatches.clear();
     std::uint32_t first = 0;
-    for (std::uint32_t wave = 0; wave < waves; ++wave) {
+    for (std::uint32_t wave = 0; wave < waves.ends.size(); ++wave) {
         fast.waveBatches.push_back(static_cast<std::uint32_t>(fast.roundBatches.size()));
-        const std::uint32_t end = fast.waveStart[wave];
+        const std::uint32_t end = waves.ends[wave];
         for (std::uint32_t k = first; k < end; ++k) {
-            if (k + kBatchingLookAhead < fast.waveOrder.size()) {
-                const SolverContact& ahead = solver.contacts[fast.waveOrder[k + kBatchingLookAhead]];
+            if (k + kBatchingLookAhead < waves.order.size()) {
+                const SolverContact& ahead = solver.contacts[waves.order[k + kBatchingLookAhead]];
                 for (std::size_t byte = 0; byte < sizeof(SolverContact); byte += kCacheLine) {
                     __builtin_prefetch(reinterpret_cast<const char*>(&ahead) + byte);
                 }
@@ -138,7 +137,7 @@ void batchRoundContacts(const SolverWorkspace& solver, FastWorkspace& fast) {
                 fast.roundBatches.push_back(emptyBatch());
                 fast.roundBatches.back().wave = wave;
             }
-            setLane(fast.roundBatches.back(), lane, fast.waveOrder[k], solver.contacts[fast.waveOrder[k]]);
+            setLane(fast.roundBatches.back(), lane, waves.order[k], solver.contacts[waves.order[k]]);
         }
         first = end;
     }

@@ -413,7 +413,7 @@ void World::stepWithSequentialImpulses() {
     runStage(Stage::Restitution, [&] {
         // The last relax left the solver bodies' velocities and the objects' the same (the continuous
         // stage moves positions only): only a bounce changes them, and then they go out.
-        if (applyRestitution(solverWorkspace_)) copyVelocitiesOut(solverWorkspace_);
+        if (applyRestitution(solverWorkspace_, threadPool_.get())) copyVelocitiesOut(solverWorkspace_);
         impulses_.resize(contacts_.size());
         storeContactImpulses(contacts_, solverWorkspace_, impulses_);
         if (plan_.jointSolver.runs) finishJoints(jointWorkspace_, joints_, hs, stepCount_ + 1, time_ + h, links_);
