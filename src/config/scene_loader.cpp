@@ -927,10 +927,10 @@ private:
             values.choice<bool>("ContinuousCollision", kBooleanChoices, defaults.continuousCollision);
         settings.threads = count("Threads", defaults.threads);
         settings.narrowphase = values.choice<NarrowphaseKind>("Narrowphase", kNarrowphaseChoices, defaults.narrowphase);
-        return settings;
         settings.frictionCombine = values.choice<CombineRule>("FrictionCombine", kCombineChoices, defaults.frictionCombine);
         settings.elasticityCombine =
             values.choice<CombineRule>("ElasticityCombine", kCombineChoices, defaults.elasticityCombine);
+        return settings;
     }
 
     /// An Expect record (src/world/expectations.hpp): exactly one quantity,

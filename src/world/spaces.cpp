@@ -49,6 +49,8 @@ std::vector<std::pair<SpaceDef, Scene>> splitIntoSpaces(Scene scene) {
         part.planes = ofSpace(scene.planes, scene.planeSpace, space);
         part.attractors = ofSpace(scene.attractors, scene.attractorSpace, space);
         part.regions = ofSpace(scene.regions, scene.regionSpace, space);
+        part.materials = scene.materials;  // objects name materials by their index in the file's list
+        part.materialPairs = scene.materialPairs;
         const bool anything = !part.dynamics.empty() || !part.kinematics.empty() || !part.planes.empty();
         if (space == kDefaultSpace && !anything) continue;  // every object named its space
         // Springs: body indices into the whole scene's dynamics → into this space's
