@@ -229,6 +229,8 @@ TEST_CASE("The Valid column of docs/config-format.md gives every field's range a
         for (const FieldSpec& field : record.fields) {
             const bool numeric = field.kind == FieldKind::Number || field.kind == FieldKind::Vector || field.kind == FieldKind::Color;
             if (field.range == Range::Any || !numeric) continue;
+            // A Space takes every World field: those rows are the World section's
+            if (record.kind == RecordKind::Space && findField(*findRecord("World"), field.name)) continue;
             INFO(record.name << "." << field.name << ": expected '" << documentedRange(field.range) << "'");
             // Find the field's row: the table's header names the Valid column.
             int validColumn = -1;

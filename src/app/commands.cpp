@@ -19,6 +19,7 @@
 #include "io/trajectory_csv.hpp"
 #include "world/measurements.hpp"
 #include "world/run_watch.hpp"
+#include "world/spaces.hpp"
 #include "world/world.hpp"
 
 namespace stepwise::cli {
@@ -330,10 +331,117 @@ void reportWarnings(const RunWatch& watch, const std::vector<std::string>& warni
     }
 }
 
+/// `stepwise run` of a scene with spaces (src/world/spaces.hpp): every space on one clock, one CSV
+/// with a space column, and a summary of each space in turn.
+int runSpaces(const RunOptions& options, Scene scene) {
+    if (options.threads) {
+        scene.settings.threads = *options.threads;
+        for (SpaceDef& space : scene.spaces) space.settings.threads = *options.threads;
+    }
+    const double duration = options.duration.value_or(double(scene.settings.duration));
+    Spaces spaces(std::move(scene));
+    const Real tick = spaces.finestTick();
+    std::printf("\nSpaces (%zu, on one clock ticking every %.6g s)\n", spaces.all().size(), double(tick));
+    for (const Space& space : spaces.all()) {
+        const WorldSettings& s = space.world.settings();
+        std::printf("  %-12s %s, %s, h %.6g s, TimeScale %.6g%s: %zu dynamic, %zu kinematic, %zu plane(s)\n",
+                    space.name.c_str(), toString(s.integrator), toString(s.solver), double(s.timeStep),
+                    double(space.timeScale), space.paused ? ", paused" : "", space.world.dynamics().size(),
+                    space.world.kinematics().size(), space.world.planes().size());
+    }
+    if (options.explain) {
+        for (const Space& space : spaces.all()) {
+            std::printf("\nSpace %s: %s", space.name.c_str(), describeStepPlan(space.world.plan()).c_str());
+        }
+        if (options.steps == std::uint64_t(0)) return kExitOk;
+    }
+    std::vector<ExpectationMonitor> monitors;
+    std::vector<std::vector<Expectation>> expectations;
+    for (const Space& space : spaces.all()) expectations.push_back(space.expectations);
+    for (std::size_t k = 0; k < spaces.all().size(); ++k) {
+        monitors.emplace_back(spaces.all()[k].world, expectations[k]);
+        monitors.back().observe(spaces.all()[k].world);
+    }
+    // --steps counts ticks of the shared clock; otherwise the clock runs for the Duration
+    const std::uint64_t ticks = options.steps.value_or(static_cast<std::uint64_t>(std::llround(duration / double(tick))));
+
+    std::optional<OutputFile> csvFile;
+    std::FILE* csv = nullptr;
+    if (options.csvPath) {
+        csvFile.emplace(*options.csvPath);
+        if (!csvFile->ok()) {
+            std::fprintf(stderr, "stepwise: error: %s\n", csvFile->error().c_str());
+            return kExitUsageError;
+        }
+        csv = csvFile->file();
+        writeTrajectoryHeader(csv, true);
+        for (const Space& space : spaces.all()) writeTrajectoryRows(csv, space.world, space.name);
+    }
+    std::vector<Energy> energyBefore;
+    for (const Space& space : spaces.all()) energyBefore.push_back(energyOf(space.world));
+    int exitCode = kExitOk;
+    {
+        const InterruptGuard interrupts;
+        const Deadline deadline(options.maxSeconds);
+        const auto afterStep = [&](std::size_t k) {
+            const Space& space = spaces.all()[k];
+            monitors[k].observe(space.world);
+            if (csv && space.world.stepCount() % options.every == 0) writeTrajectoryRows(csv, space.world, space.name);
+        };
+        try {
+            for (std::uint64_t i = 0; i < ticks; ++i) {
+                spaces.advance(tick, afterStep);
+                if (csvFile && csvFile->failed()) break;
+                if (InterruptGuard::signalReceived() != 0) break;
+                if (i + 1 < ticks && deadline.passed()) {
+                    std::fprintf(stderr, "stepwise: stopped after --max-seconds %g of wall-clock time: %.6g of %.6g s\n",
+                                 deadline.seconds(), double(spaces.clock()), duration);
+                    exitCode = kExitSimulationError;
+                    break;
+                }
+            }
+        } catch (const SimulationError& error) {
+            std::fprintf(stderr, "stepwise: simulation failed: %s\n", error.what());
+            exitCode = kExitSimulationError;
+        }
+        if (const int signal = InterruptGuard::signalReceived(); signal != 0) {
+            std::fprintf(stderr, "stepwise: stopped by signal %d at %.6g of %.6g s on the clock\n", signal,
+                         double(spaces.clock()), duration);
+            exitCode = exitCodeForSignal(signal);
+        }
+    }
+    std::string csvError;
+    if (csvFile) csvError = csvFile->close();
+    std::printf("Ran the clock for %.6g s\n", double(spaces.clock()));
+    for (std::size_t k = 0; k < spaces.all().size(); ++k) {
+        const Space& space = spaces.all()[k];
+        std::printf("\n=== Space %s: simulated %.6g s in %llu steps\n", space.name.c_str(), double(space.world.time()),
+                    static_cast<unsigned long long>(space.world.stepCount()));
+        printFinalState(space.world);
+        printJoints(space.world);
+        printRegions(space.world);
+        const Energy after = energyOf(space.world);
+        std::printf("\nEnergy (kinetic = translational + rotational, plus potential), J\n");
+        printEnergyLine("start", energyBefore[k]);
+        printEnergyLine("end  ", after);
+        if (!expectations[k].empty() && !printExpectationTable(expectations[k], monitors[k].results(space.world)) &&
+            exitCode == kExitOk) {
+            exitCode = kExitExpectationFailed;
+        }
+    }
+    if (csvFile && csvError.empty()) std::printf("\nTrajectory written to %s\n", options.csvPath->c_str());
+    if (!csvError.empty()) {
+        std::fprintf(stderr, "stepwise: error: %s; the trajectory is incomplete\n", csvError.c_str());
+        if (exitCode == kExitOk || exitCode == kExitExpectationFailed) exitCode = kExitSimulationError;
+    }
+    return exitCode;
+}
+
 int runCommand(const RunOptions& options) {
     std::unique_ptr<Scene> scene = loadOrReport(options.scenePath);
     if (!scene) return kExitUsageError;
     printSceneHeader(options.scenePath, *scene);
+    if (!scene->spaces.empty()) return runSpaces(options, std::move(*scene));
     const std::vector<Expectation> expectations = scene->expectations;
 
     if (options.threads) scene->settings.threads = *options.threads;

@@ -184,6 +184,19 @@ std::string joinMessages(const std::vector<ConfigDiagnostic>& diagnostics) {
 // ------------------------------------------------------------------ SceneAssembler
 
 /// Turns tokenized lines into a Scene, one record at a time, collecting every problem.
+/// A Space record, its World fields read once the World record is known.
+struct PendingSpace {
+    SpaceDef space;
+    RecordValues values;
+};
+
+/// An object's `Space=` as written: the name, and where (an empty name: the default space).
+struct SpaceRef {
+    std::string name;
+    int line = 0;
+    int column = 0;
+};
+
 /// Where a Buoyancy region was written, to point at it if a body's shape cannot float.
 struct BuoyancyLine {
     int line = 0;
@@ -231,6 +244,7 @@ public:
                 addPart(values, line, index);
                 break;
             case RecordKind::Region: addRegion(values, line, index); break;
+            case RecordKind::Space: addSpace(values, line, index); break;
             case RecordKind::Material: addMaterial(values, line, index); break;
             case RecordKind::MaterialPair: addMaterialPair(values, line, index); break;
         }
@@ -251,6 +265,7 @@ public:
         resolveSprings();
         resolveJoints();
         checkBuoyantShapes();
+        resolveSpaces();
         if (sink_.diagnostics().empty()) {
             warnAboutUnstableSprings();
             warnAboutMassRatios();
@@ -345,6 +360,7 @@ private:
         }
         moveTo(body, frame);
         dynamicFrames_.push_back(frame);
+        noteSpace(values, line.number, dynamicSpaceRefs_);
         scene_.dynamics.push_back(std::move(body));
     }
 
@@ -381,6 +397,7 @@ private:
                                              std::nullopt, 0});
             }
         }
+        noteSpace(values, line.number, kinematicSpaceRefs_);
         scene_.kinematics.push_back(std::move(mover));
     }
 
@@ -849,6 +866,7 @@ private:
         } else {
             plane.normal = normal / glm::length(normal);  // the collision code relies on a unit normal
         }
+        noteSpace(values, line.number, planeSpaceRefs_);
         scene_.planes.push_back(std::move(plane));
     }
 
@@ -862,14 +880,23 @@ private:
             return;
         }
         worldLine_ = line.number;
-        WorldSettings& settings = scene_.settings;
-        settings.gravity = values.triple("Gravity", kDefaultGravity);
-        settings.timeStep = values.number("TimeStep", kDefaultTimeStep);
-        settings.integrator = values.choice<IntegratorKind>("Integrator", kIntegratorChoices, kDefaultIntegrator);
-        settings.duration = values.number("Duration", kDefaultDuration);
-        settings.broadphase = values.choice<BroadphaseKind>("Broadphase", kBroadphaseChoices, kDefaultBroadphase);
+        WorldSettings defaults;
+        defaults.gravity = kDefaultGravity;
+        defaults.timeStep = kDefaultTimeStep;
+        defaults.integrator = kDefaultIntegrator;
+        defaults.duration = kDefaultDuration;
+        defaults.broadphase = kDefaultBroadphase;
+        scene_.settings = readSettings(values, defaults);
+    }
 
-        const WorldSettings defaults;
+    /// The World fields of a World or Space record: each one given, or @p defaults' value.
+    static WorldSettings readSettings(const RecordValues& values, const WorldSettings& defaults) {
+        WorldSettings settings = defaults;
+        settings.gravity = values.triple("Gravity", defaults.gravity);
+        settings.timeStep = values.number("TimeStep", defaults.timeStep);
+        settings.integrator = values.choice<IntegratorKind>("Integrator", kIntegratorChoices, defaults.integrator);
+        settings.duration = values.number("Duration", defaults.duration);
+        settings.broadphase = values.choice<BroadphaseKind>("Broadphase", kBroadphaseChoices, defaults.broadphase);
         auto count = [&](std::string_view field, int fallback) {
             return static_cast<int>(values.number(field, static_cast<Real>(fallback)));
         };
@@ -903,6 +930,7 @@ private:
         settings.frictionCombine = values.choice<CombineRule>("FrictionCombine", kCombineChoices, defaults.frictionCombine);
         settings.elasticityCombine =
             values.choice<CombineRule>("ElasticityCombine", kCombineChoices, defaults.elasticityCombine);
+        return settings;
     }
 
     /// An Expect record (src/world/expectations.hpp): exactly one quantity,
@@ -1214,7 +1242,115 @@ private:
                          std::string(recordName.text),
                          "give its gravitational parameter G*M in m^3/s^2, e.g. Mu=3.986e14 for the Earth");
         }
+        noteSpace(values, line.number, attractorSpaceRefs_);
         scene_.attractors.push_back(std::move(attractor));
+    }
+
+    /// A Space: a simulation of its own (src/world/spaces.hpp). Its World fields are read in
+    /// resolveSpaces(), over the World record's, which may come later in the file.
+    void addSpace(const RecordValues& values, const SceneLine& line, int index) {
+        const Token& recordName = line.tokens.front();
+        if (!values.isSet("Name")) {
+            sink_.report(line.number, recordName.column, "Space", "a Name field (every space needs one)",
+                         std::string(recordName.text), "objects join it with Space=NAME, e.g. Space, Name=verlet");
+        }
+        if (values.isSet("Duration")) {
+            sink_.report(line.number, values.valueColumn("Duration"), "Duration", "no Duration on a Space",
+                         "Duration=" + values.asWritten("Duration"),
+                         "every space runs for the World record's Duration, on one shared clock (TimeScale sets its pace)");
+        }
+        PendingSpace pending{SpaceDef{}, values};
+        pending.space.name = claimName(values, line, index);
+        pending.space.timeScale = values.number("TimeScale", 1);
+        pending.space.paused = values.choice<bool>("Paused", kBooleanChoices, false);
+        pending.space.line = line.number;
+        pendingSpaces_.push_back(std::move(pending));
+    }
+
+    /// Remembers the `Space=` of the object just read (parallel to its list in the Scene).
+    void noteSpace(const RecordValues& values, int lineNumber, std::vector<SpaceRef>& refs) {
+        SpaceRef ref;
+        if (const std::optional<std::string> name = values.text("Space")) {
+            ref.name = *name;
+            ref.column = values.valueColumn("Space");
+            ref.line = lineNumber;
+        }
+        refs.push_back(std::move(ref));
+    }
+
+    /// Each space's settings (the World record's, with its own fields over them), each object's
+    /// space, and the rule that spaces never touch: a spring or joint joins bodies of one space.
+    void resolveSpaces() {
+        std::vector<std::string> names;
+        for (PendingSpace& pending : pendingSpaces_) {
+            pending.space.settings = readSettings(pending.values, scene_.settings);
+            names.push_back(pending.space.name);
+            scene_.spaces.push_back(pending.space);
+        }
+        const auto resolve = [&](const std::vector<SpaceRef>& refs, std::vector<std::uint32_t>& out) {
+            out.clear();
+            for (const SpaceRef& ref : refs) {
+                if (ref.name.empty()) {
+                    out.push_back(kDefaultSpace);
+                    continue;
+                }
+                const auto found = std::find_if(names.begin(), names.end(),
+                                                 [&](const std::string& n) { return equalsIgnoreCase(n, ref.name); });
+                if (found == names.end()) {
+                    std::string hint = "declare it first, e.g. Space, Name=" + ref.name;
+                    if (const std::optional<std::string> close = closestMatch(ref.name, names)) {
+                        hint = "did you mean '" + *close + "'?";
+                    }
+                    sink_.report(ref.line, ref.column, "Space", "the Name of a Space record", ref.name, hint);
+                    out.push_back(kDefaultSpace);
+                } else {
+                    out.push_back(static_cast<std::uint32_t>(found - names.begin()) + 1);
+                }
+            }
+        };
+        resolve(dynamicSpaceRefs_, scene_.dynamicSpace);
+        resolve(kinematicSpaceRefs_, scene_.kinematicSpace);
+        resolve(planeSpaceRefs_, scene_.planeSpace);
+        resolve(attractorSpaceRefs_, scene_.attractorSpace);
+        resolve(regionSpaceRefs_, scene_.regionSpace);
+        if (scene_.spaces.empty()) {  // a scene of one simulation, as before spaces
+            scene_.dynamicSpace.clear();
+            scene_.kinematicSpace.clear();
+            scene_.planeSpace.clear();
+            scene_.attractorSpace.clear();
+            scene_.regionSpace.clear();
+            return;
+        }
+        const auto spaceOfBody = [&](const std::string& name) -> std::optional<std::uint32_t> {
+            for (std::size_t i = 0; i < scene_.dynamics.size(); ++i) {
+                if (equalsIgnoreCase(scene_.dynamics[i].name, name)) return scene_.dynamicSpace[i];
+            }
+            return std::nullopt;
+        };
+        const auto spaceName = [&](std::uint32_t space) {
+            return space == kDefaultSpace ? std::string("the default space") : "space '" + scene_.spaces[space - 1].name + "'";
+        };
+        for (std::size_t k = 0; k < scene_.springs.size(); ++k) {
+            const Spring& spring = scene_.springs[k];
+            if (spring.bodyB == kFixedInWorld) continue;
+            const std::uint32_t a = scene_.dynamicSpace[spring.bodyA];
+            const std::uint32_t b = scene_.dynamicSpace[spring.bodyB];
+            if (a == b) continue;
+            sink_.report(springLines_.at(k), 1, "Spring", "two bodies of one space",
+                         "'" + scene_.dynamics[spring.bodyA].name + "' in " + spaceName(a) + " and '" +
+                             scene_.dynamics[spring.bodyB].name + "' in " + spaceName(b),
+                         "spaces never touch: each has its own bodies, broadphase and solver");
+        }
+        for (std::size_t k = 0; k < scene_.joints.size(); ++k) {
+            const JointDef& joint = scene_.joints[k];
+            if (joint.bodyB.empty()) continue;
+            const std::optional<std::uint32_t> a = spaceOfBody(joint.bodyA);
+            const std::optional<std::uint32_t> b = spaceOfBody(joint.bodyB);
+            if (!a || !b || *a == *b) continue;
+            sink_.report(pendingJoints_.at(k).line, 1, toString(joint.kind), "two bodies of one space",
+                         "'" + joint.bodyA + "' in " + spaceName(*a) + " and '" + joint.bodyB + "' in " + spaceName(*b),
+                         "spaces never touch: each has its own bodies, broadphase and solver");
+        }
     }
 
     /// A Region: its volume, its effect, and the fields that effect takes (src/forces/region.hpp).
@@ -1299,6 +1435,7 @@ private:
         }
         region.seed = static_cast<std::uint64_t>(seed);
         if (region.effect == RegionEffect::Buoyancy) buoyancyLines_.push_back({line.number, recordName.column, region.name});
+        noteSpace(values, line.number, regionSpaceRefs_);
         scene_.regions.push_back(std::move(region));
     }
 
@@ -1757,6 +1894,9 @@ private:
     std::vector<PendingSpring> pendingSprings_;   ///< Springs in file order, resolved by finish().
     std::vector<int> springLines_;                ///< Line of each resolved spring in scene_.springs.
     std::vector<BuoyancyLine> buoyancyLines_;     ///< Where each Buoyancy region was written.
+    std::vector<PendingSpace> pendingSpaces_;     ///< Space records, resolved by finish().
+    std::vector<SpaceRef> dynamicSpaceRefs_, kinematicSpaceRefs_, planeSpaceRefs_, attractorSpaceRefs_,
+        regionSpaceRefs_;                         ///< Each object's Space=, parallel to its list in scene_.
     std::vector<PendingJoint> pendingJoints_;    ///< Parallel to scene_.joints.
     int worldLine_ = 0;                     ///< Line of the World record; 0 before one is seen.
     SceneReadOptions options_;              ///< What the loader may read besides the text.

@@ -52,6 +52,8 @@ constexpr std::string_view kDragHint =
 constexpr std::string_view kFluidDensityHint = "a fluid's density in kg/m^3, e.g. 1000 for water, 1.2 for air";
 constexpr std::string_view kStrengthHint = "the largest random force, in newtons";
 constexpr std::string_view kSeedHint = "a whole number from 0 to 2^53; the same seed gives the same run";
+constexpr std::string_view kTimeScaleHint =
+    "simulated seconds per second of the shared clock: 0.5 runs at half speed, 2 at double; it must be positive";
 constexpr std::string_view kDensityHint =
     "density is in kg/m^3 (water 1000, wood about 600, steel 7850); the mass is density x the shape's volume";
 constexpr std::string_view kHeightHint =
@@ -77,6 +79,7 @@ constexpr FieldSpec kDynamicFields[] = {
     {"Height",          FieldKind::Number,     kNamedOnly, Range::Length, kHeightHint}, // m, Capsule and Cylinder
     {"Vertices",        FieldKind::Points,     kNamedOnly, Range::Any},              // m, Hull: the points it wraps
     {"File",            FieldKind::File,       kNamedOnly, Range::Any},              // an OBJ file: Hull points
+    {"Space",           FieldKind::Name,       kNamedOnly, Range::Any},              // a Space record's Name
     {"Material",        FieldKind::Name,       kNamedOnly, Range::Any},              // a Material's Name
     {"Density",         FieldKind::Number,     kNamedOnly, Range::Positive, kDensityHint}, // kg/m³, instead of Mass
 };
@@ -97,6 +100,7 @@ constexpr FieldSpec kKinematicFields[] = {
     {"Height",          FieldKind::Number,     kNamedOnly, Range::Length, kHeightHint}, // m, Capsule and Cylinder
     {"Vertices",        FieldKind::Points,     kNamedOnly, Range::Any},              // m, Hull
     {"File",            FieldKind::File,       kNamedOnly, Range::Any},              // an OBJ file: Hull points, Mesh triangles
+    {"Space",           FieldKind::Name,       kNamedOnly, Range::Any},              // a Space record's Name
     {"Material",        FieldKind::Name,       kNamedOnly, Range::Any},              // a Material's Name
 };
 
@@ -126,6 +130,7 @@ constexpr FieldSpec kPlaneFields[] = {
     {"Color",           FieldKind::Color,      kNamedOnly, Range::UnitInterval},
     {"Elasticity",      FieldKind::Number,     kNamedOnly, Range::UnitInterval, kElasticityHint},
     {"Friction",        FieldKind::Number,     kNamedOnly, Range::NonNegative, kFrictionHint},
+    {"Space",           FieldKind::Name,       kNamedOnly, Range::Any},              // a Space record's Name
     {"Material",        FieldKind::Name,       kNamedOnly, Range::Any},              // a Material's Name
 };
 
@@ -167,6 +172,25 @@ constexpr FieldSpec kWorldFields[] = {
     {"ElasticityCombine",   FieldKind::Combine, kNamedOnly, Range::Any},              // objects/materials.hpp
 };
 
+/// Space: a simulation of its own (src/world/spaces.hpp): its name, how fast it runs against the
+/// shared clock, whether it starts paused, then every World field but Duration (the loader refuses
+/// that one: the run's length is the World record's), over the World record's values.
+constexpr FieldSpec kSpaceOwnFields[] = {
+    {"Name",            FieldKind::Name,       kNamedOnly, Range::Any},              // required
+    {"TimeScale",       FieldKind::Number,     kNamedOnly, Range::Positive, kTimeScaleHint},
+    {"Paused",          FieldKind::Boolean,    kNamedOnly, Range::Any},
+};
+
+/// The rows of two tables, one after the other, as one table.
+template <std::size_t A, std::size_t B>
+constexpr std::array<FieldSpec, A + B> joined(const FieldSpec (&a)[A], const FieldSpec (&b)[B]) {
+    std::array<FieldSpec, A + B> rows{};
+    for (std::size_t i = 0; i < A; ++i) rows[i] = a[i];
+    for (std::size_t i = 0; i < B; ++i) rows[A + i] = b[i];
+    return rows;
+}
+constexpr auto kSpaceFields = joined(kSpaceOwnFields, kWorldFields);
+
 /// Expect: one checked outcome (src/world/expectations.hpp), named fields only.
 /// Exactly one quantity field (Position … NotThroughPlane) per record; at most
 /// one of Time, Apex, or a From/Until window; the loader checks these rules.
@@ -206,6 +230,7 @@ constexpr FieldSpec kAttractorFields[] = {
     {"Name",            FieldKind::Name,       kNamedOnly, Range::Any},
     {"Position",        FieldKind::Vector,     kNamedOnly, Range::Any},              // m
     {"Mu",              FieldKind::Number,     kNamedOnly, Range::Positive, kMuHint},  // m³/s², required
+    {"Space",           FieldKind::Name,       kNamedOnly, Range::Any},              // a Space record's Name
 };
 
 /// Region: a volume with an effect (src/forces/region.hpp), named fields only. Which fields an
@@ -226,6 +251,7 @@ constexpr FieldSpec kRegionFields[] = {
     {"Density",            FieldKind::Number,      kNamedOnly, Range::Positive, kFluidDensityHint},  // kg/m³: the fluid's
     {"Strength",           FieldKind::Number,      kNamedOnly, Range::Positive, kStrengthHint}, // N: RandomForce's largest
     {"Seed",               FieldKind::Number,      kNamedOnly, Range::NonNegative, kSeedHint},  // a whole number
+    {"Space",           FieldKind::Name,       kNamedOnly, Range::Any},              // a Space record's Name
 };
 
 // Joints (docs/config-format.md#joints): named fields only. Bodies are
@@ -325,6 +351,7 @@ constexpr RecordSpec kRecords[] = {
     {RecordKind::Region,           "Region",           kRegionFields},
     {RecordKind::Material,         "Material",         kMaterialFields},
     {RecordKind::MaterialPair,     "MaterialPair",     kMaterialPairFields},
+    {RecordKind::Space,            "Space",            kSpaceFields},
 };
 // clang-format on
 static_assert(std::size(kRecords) == kRecordKindCount, "one record table per RecordKind");

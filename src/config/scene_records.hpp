@@ -77,10 +77,11 @@ enum class RecordKind : std::uint8_t {
     Region,            ///< A volume with an effect on the bodies inside (src/forces/region.hpp).
     Material,          ///< Density, friction and elasticity that objects share (src/objects/materials.hpp).
     MaterialPair,      ///< The friction and elasticity of contacts between two materials.
+    Space,             ///< A simulation of its own, beside the others (src/world/spaces.hpp).
 };
 
 /// @brief Number of RecordKind values.
-inline constexpr std::size_t kRecordKindCount = 17;
+inline constexpr std::size_t kRecordKindCount = 18;
 
 /// @brief One record type: its name and its field table.
 struct RecordSpec {

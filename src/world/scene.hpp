@@ -2,6 +2,7 @@
 /// @brief A scene as loaded from a file: settings plus the objects of each kind.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,18 @@ struct MayChange {
     std::string field;   ///< The field's canonical name, or one component of it: "Elasticity", "ScaleY".
 };
 
+/// @brief One `Space` record: a simulation of its own beside the others (src/world/spaces.hpp).
+struct SpaceDef {
+    std::string name;        ///< Unique among the spaces; objects name it with `Space=`.
+    WorldSettings settings;  ///< The World record's settings, with the Space record's own fields over them.
+    Real timeScale = 1;      ///< Simulated seconds of this space per second of the shared clock.
+    bool paused = false;     ///< Starts paused: it does not step until resumed.
+    int line = 0;            ///< Line of the record in its file.
+};
+
+/// @brief Index of the default space in the `...Space` lists of a Scene: objects that name no space.
+inline constexpr std::uint32_t kDefaultSpace = 0;
+
 /// @brief Everything a scene file describes, before it becomes a World.
 ///
 /// The scene loader fills a Scene completely or throws: there is never a
@@ -45,6 +58,12 @@ struct Scene {
     std::vector<std::string> warnings;       ///< Things that load but may surprise (e.g. features not yet simulated).
     std::vector<Expectation> expectations;   ///< `Expect` records: what `stepwise run` checks (World ignores them).
     std::vector<MayChange> mayChange;        ///< `MayChange` records: what `stepwise grade` lets a student edit.
+
+    /// `Space` records, in file order; empty for a scene of one simulation (every scene before spaces).
+    std::vector<SpaceDef> spaces;
+    /// With spaces: the space of each object, kDefaultSpace or 1 + its index in `spaces`, parallel to
+    /// `dynamics`, `kinematics`, `planes`, `attractors` and `regions`. Empty without spaces.
+    std::vector<std::uint32_t> dynamicSpace, kinematicSpace, planeSpace, attractorSpace, regionSpace;
     std::vector<Material> materials;         ///< `Material` records, in file order (objects' `material` indexes them).
     std::vector<MaterialPair> materialPairs; ///< `MaterialPair` records: pairs with their own μ or e.
 };

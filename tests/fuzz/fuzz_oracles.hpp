@@ -17,6 +17,7 @@
 #include "config/scene_loader.hpp"
 #include "core/errors.hpp"
 #include "core/limits.hpp"
+#include "world/spaces.hpp"
 #include "world/world.hpp"
 
 namespace stepwise::fuzz {
@@ -31,8 +32,13 @@ public:
 /// libFuzzer spends its time on inputs, not on simulating a thousand bodies.
 inline bool cheapEnoughToStep(const Scene& scene) {
     const std::size_t bodies = scene.dynamics.size() + scene.kinematics.size();
-    const auto& s = scene.settings;
-    return bodies <= 64 && s.substeps * (s.velocityIterations + s.relaxIterations) <= 256 && s.impulseIterations <= 64;
+    const auto cheap = [](const WorldSettings& s) {
+        return s.substeps * (s.velocityIterations + s.relaxIterations) <= 256 && s.impulseIterations <= 64;
+    };
+    for (const SpaceDef& space : scene.spaces) {
+        if (!cheap(space.settings)) return false;
+    }
+    return bodies <= 64 && cheap(scene.settings);
 }
 
 /// A scene file's text must either be refused with a ConfigError (a diagnostic), or load into a
@@ -53,11 +59,15 @@ inline bool checkSceneText(std::string_view text) {
     // A pool of threads per input costs more than the input: one thread computes the same bits
     // (tests "[threads]"). The loader has checked the count against kMaxThreads.
     scene.settings.threads = 1;
+    for (SpaceDef& space : scene.spaces) space.settings.threads = 1;
     try {
-        World world(std::move(scene));
+        // A scene with spaces is several Worlds on one clock (src/world/spaces.hpp)
+        Spaces spaces(std::move(scene));
         if (!step) return false;
         try {
-            for (int i = 0; i < 3; ++i) world.step();
+            for (Space& space : spaces.all()) {
+                for (int i = 0; i < 3; ++i) space.world.step();
+            }
         } catch (const SimulationError&) {
             // a non-finite state, named: a clean report
         }
