@@ -349,14 +349,7 @@ TEST_CASE("Region records load, and a wrong one is refused with its line and col
     CHECK(scene.regions[0].density == 1000);
     CHECK(scene.regions[1].halfExtents == Vec3(1));
     CHECK(scene.regions[2].seed == 7);
-    const auto refused = [](const char* text, const char* words) {
-        try {
-            (void)parseScene(text, "bad.scene");
-            FAIL("loaded: " << text);
-        } catch (const ConfigError& error) {
-            CHECK_THAT(error.what(), Catch::Contains(words));
-        }
-    };
+    const auto refused = test::checkRefused;
     refused("Region, Name=r, Shape=Box\n", "an Effect field");
     refused("Region, Name=r, Effect=Drag, Coefficient=1, Density=1000\n", "no Density on an Effect=Drag region");
     refused("Region, Name=r, Effect=Wind, Coefficient=1\n", "a Velocity field");

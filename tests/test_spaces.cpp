@@ -90,14 +90,7 @@ TEST_CASE("A scene without Space records is one simulation, as before", "[spaces
 }
 
 TEST_CASE("Space records are checked: names, Duration, and no spring or joint across spaces", "[spaces][config]") {
-    const auto refused = [](const char* text, const char* words) {
-        try {
-            (void)parseScene(text, "bad.scene");
-            FAIL("loaded: " << text);
-        } catch (const ConfigError& error) {
-            CHECK_THAT(error.what(), Catch::Contains(words));
-        }
-    };
+    const auto refused = test::checkRefused;
     refused("Space, Name=verlet\nDynamicObject, Name=a, Space=verlt\n", "did you mean 'verlet'?");
     refused("DynamicObject, Name=a, Space=nowhere\n", "the Name of a Space record");
     refused("Space, Name=s, Duration=3\n", "no Duration on a Space");

@@ -8,6 +8,7 @@
 
 #include "collision/broadphase.hpp"
 #include "collision/narrowphase.hpp"
+#include "config/scene_loader.hpp"
 #include "world/scene.hpp"
 #include "world/world.hpp"
 
@@ -38,6 +39,16 @@ inline std::vector<Contact> contactsOf(const BodySet& bodies) {
     std::vector<Contact> contacts;
     findContacts(bodies, pairs, contacts, false, kSpeculativeDistance, pool, workspace);
     return contacts;
+}
+
+/// Checks that the scene @p text is refused, with a diagnostic that contains @p words.
+inline void checkRefused(const char* text, const char* words) {
+    try {
+        (void)parseScene(text, "bad.scene");
+        FAIL_CHECK("loaded: " << text);
+    } catch (const ConfigError& error) {
+        CHECK_THAT(error.what(), Catch::Contains(words));
+    }
 }
 
 /// The plane y = 0 facing up.

@@ -331,6 +331,15 @@ void reportWarnings(const RunWatch& watch, const std::vector<std::string>& warni
     }
 }
 
+/// Opens --csv's file when one is asked for; false (and the reason on stderr) when it cannot be.
+static bool openTrajectory(const RunOptions& options, std::optional<OutputFile>& csvFile) {
+    if (!options.csvPath) return true;
+    csvFile.emplace(*options.csvPath);
+    if (csvFile->ok()) return true;
+    std::fprintf(stderr, "stepwise: error: %s\n", csvFile->error().c_str());
+    return false;
+}
+
 /// `stepwise run` of a scene with spaces (src/world/spaces.hpp): every space on one clock, one CSV
 /// with a space column, and a summary of each space in turn.
 int runSpaces(const RunOptions& options, Scene scene) {
@@ -366,14 +375,9 @@ int runSpaces(const RunOptions& options, Scene scene) {
     const std::uint64_t ticks = options.steps.value_or(static_cast<std::uint64_t>(std::llround(duration / double(tick))));
 
     std::optional<OutputFile> csvFile;
-    std::FILE* csv = nullptr;
-    if (options.csvPath) {
-        csvFile.emplace(*options.csvPath);
-        if (!csvFile->ok()) {
-            std::fprintf(stderr, "stepwise: error: %s\n", csvFile->error().c_str());
-            return kExitUsageError;
-        }
-        csv = csvFile->file();
+    if (!openTrajectory(options, csvFile)) return kExitUsageError;
+    std::FILE* csv = csvFile ? csvFile->file() : nullptr;
+    if (csv) {
         writeTrajectoryHeader(csv, true);
         for (const Space& space : spaces.all()) writeTrajectoryRows(csv, space.world, space.name);
     }
@@ -472,14 +476,9 @@ int runCommand(const RunOptions& options) {
     const std::uint64_t steps = options.steps.value_or(static_cast<std::uint64_t>(std::llround(duration / h)));
 
     std::optional<OutputFile> csvFile;
-    std::FILE* csv = nullptr;
-    if (options.csvPath) {
-        csvFile.emplace(*options.csvPath);
-        if (!csvFile->ok()) {
-            std::fprintf(stderr, "stepwise: error: %s\n", csvFile->error().c_str());
-            return kExitUsageError;
-        }
-        csv = csvFile->file();
+    if (!openTrajectory(options, csvFile)) return kExitUsageError;
+    std::FILE* csv = csvFile ? csvFile->file() : nullptr;
+    if (csv) {
         writeTrajectoryHeader(csv);
         writeTrajectoryRows(csv, world);
     }

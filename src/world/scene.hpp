@@ -61,9 +61,13 @@ struct Scene {
 
     /// `Space` records, in file order; empty for a scene of one simulation (every scene before spaces).
     std::vector<SpaceDef> spaces;
-    /// With spaces: the space of each object, kDefaultSpace or 1 + its index in `spaces`, parallel to
-    /// `dynamics`, `kinematics`, `planes`, `attractors` and `regions`. Empty without spaces.
-    std::vector<std::uint32_t> dynamicSpace, kinematicSpace, planeSpace, attractorSpace, regionSpace;
+    // With spaces: the space of each object, kDefaultSpace or 1 + its index in `spaces`, parallel to
+    // its list. Empty without spaces.
+    std::vector<std::uint32_t> dynamicSpace;    ///< The space of each of `dynamics`.
+    std::vector<std::uint32_t> kinematicSpace;  ///< The space of each of `kinematics`.
+    std::vector<std::uint32_t> planeSpace;      ///< The space of each of `planes`.
+    std::vector<std::uint32_t> attractorSpace;  ///< The space of each of `attractors`.
+    std::vector<std::uint32_t> regionSpace;     ///< The space of each of `regions`.
     std::vector<Material> materials;         ///< `Material` records, in file order (objects' `material` indexes them).
     std::vector<MaterialPair> materialPairs; ///< `MaterialPair` records: pairs with their own μ or e.
 };
