@@ -66,6 +66,21 @@ TEST_CASE("World::step allocates nothing in steady state", "[allocations]") {
     }
 }
 
+TEST_CASE("Regions allocate nothing per step", "[allocations][regions]") {
+    // Drag, wind, buoyancy, a gravity region, random forces and Kill regions: their members are
+    // found each step (World::findRegionMembers()) into lists that keep their capacity, and the
+    // Kill test (World::removeKilledBodies()) allocates only when it removes a body. The wind
+    // scene's ball reaches its Kill region after the counted steps; the pond's ball falls into
+    // its abyss during the warm-up.
+    for (const char* file : {"regions_pond.scene", "lesson13_boat.scene", "lesson13_capsize.scene",
+                             "lesson13_terminal_speed.scene", "lesson13_wind.scene"}) {
+        for (const bool stepPlan : {true, false}) {
+            INFO(file << (stepPlan ? " with the plan" : " with StepPlan=Off"));
+            CHECK(allocationsPerRun(configScene(file), stepPlan) == 0);
+        }
+    }
+}
+
 TEST_CASE("A box pyramid allocates nothing per step once it has settled", "[allocations]") {
     // The 210-box pyramid of lecture 8 (sequential impulse, the AABB tree chosen by Auto).
     CHECK(allocationsPerRun(configScene("lesson08_pyramid.scene"), true) == 0);

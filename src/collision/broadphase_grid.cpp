@@ -310,6 +310,39 @@ bool UniformGrid::cellRange(Real low, Real high, int axis, std::int32_t& first, 
     return first <= last;
 }
 
+template <class Visit>
+bool UniformGrid::visitDenseCells(const Vec3& low, const Vec3& high, Visit&& visit) const {
+    std::int32_t x0, x1, y0, y1, z0, z1;
+    if (!cellRange(low.x, high.x, 0, x0, x1) || !cellRange(low.y, high.y, 1, y0, y1) ||
+        !cellRange(low.z, high.z, 2, z0, z1)) {
+        return false;  // beyond the listed proxies on some axis
+    }
+    // A column's cells (x, y, z0 … z1) are side by side in the dense layout: one run of entries.
+    for (std::int32_t x = x0; x <= x1; ++x) {
+        for (std::int32_t y = y0; y <= y1; ++y) {
+            for (std::uint32_t e = bucketStart_[slotOf(x, y, z0)]; e < bucketStart_[slotOf(x, y, z1) + 1]; ++e) {
+                visit(entries_[e]);
+            }
+        }
+    }
+    return true;
+}
+
+template <class Visit>
+void UniformGrid::visitHashedCells(const Cell& low, const Cell& high, Visit&& visit) const {
+    for (std::int32_t x = low.x; x <= high.x; ++x) {
+        for (std::int32_t y = low.y; y <= high.y; ++y) {
+            for (std::int32_t z = low.z; z <= high.z; ++z) {
+                const Cell cell{x, y, z};
+                const std::size_t bucket = bucketOf(cell);
+                for (std::uint32_t e = bucketStart_[bucket]; e < bucketStart_[bucket + 1]; ++e) {
+                    if (entries_[e].cell == cell) visit(entries_[e]);  // a bucket holds several cells
+                }
+            }
+        }
+    }
+}
+
 void UniformGrid::findOversizeOverlapsDense(const ProxySet& proxies, std::vector<ProxyPair>& pairs,
                                             BroadphaseCounters& counters) {
     // A listed body can touch an oversize box B only if its lowest corner lies between
@@ -318,19 +351,8 @@ void UniformGrid::findOversizeOverlapsDense(const ProxySet& proxies, std::vector
     // dozen cells, not the n bodies of a test against everyone).
     for (const std::uint32_t big : oversize_) {
         const Aabb& box = proxies.boxes[big];
-        std::int32_t x0, x1, y0, y1, z0, z1;
-        if (!cellRange(box.min.x - cellSize_, box.max.x, 0, x0, x1) ||
-            !cellRange(box.min.y - cellSize_, box.max.y, 1, y0, y1) ||
-            !cellRange(box.min.z - cellSize_, box.max.z, 2, z0, z1)) {
-            continue;  // beyond the grid's bodies on some axis: no listed body can reach it
-        }
-        for (std::int32_t x = x0; x <= x1; ++x) {
-            for (std::int32_t y = y0; y <= y1; ++y) {
-                for (std::uint32_t e = bucketStart_[slotOf(x, y, z0)]; e < bucketStart_[slotOf(x, y, z1) + 1]; ++e) {
-                    testPair(proxies, big, entries_[e].proxy, pairs, counters);
-                }
-            }
-        }
+        visitDenseCells(box.min - Vec3(cellSize_), box.max,
+                        [&](const Entry& entry) { testPair(proxies, big, entry.proxy, pairs, counters); });
     }
 }
 
@@ -364,22 +386,11 @@ void UniformGrid::findOverlapsHashed(const ProxySet& proxies, std::vector<ProxyP
     for (std::uint32_t a = 0; a < proxies.dynamicCount; ++a) {
         if (isOversize_[a]) continue;
         const Aabb& box = proxies.boxes[a];
-        const Cell low = cellOf(box.min - Vec3(cellSize_));
-        const Cell high = cellOf(box.max);
-        for (std::int32_t x = low.x; x <= high.x; ++x) {
-            for (std::int32_t y = low.y; y <= high.y; ++y) {
-                for (std::int32_t z = low.z; z <= high.z; ++z) {
-                    const Cell cell{x, y, z};
-                    const std::size_t bucket = bucketOf(cell);
-                    for (std::uint32_t e = bucketStart_[bucket]; e < bucketStart_[bucket + 1]; ++e) {
-                        const Entry& entry = entries_[e];
-                        if (entry.proxy <= a || !(entry.cell == cell)) continue;
-                        ++counters.pairTests;
-                        if (box.overlaps(entry.box)) pairs.push_back({a, entry.proxy});
-                    }
-                }
-            }
-        }
+        visitHashedCells(cellOf(box.min - Vec3(cellSize_)), cellOf(box.max), [&](const Entry& entry) {
+            if (entry.proxy <= a) return;
+            ++counters.pairTests;
+            if (box.overlaps(entry.box)) pairs.push_back({a, entry.proxy});
+        });
     }
 }
 
@@ -401,18 +412,7 @@ void UniformGrid::query(const Aabb& box, std::span<const Aabb> boxes, std::vecto
     const Vec3 slack = Real(4) * std::numeric_limits<Real>::epsilon() * (glm::abs(box.min) + Vec3(cellSize_));
     const Vec3 from = box.min - Vec3(cellSize_) - slack;
     if (dense_) {
-        std::int32_t x0, x1, y0, y1, z0, z1;
-        if (!cellRange(from.x, box.max.x, 0, x0, x1) || !cellRange(from.y, box.max.y, 1, y0, y1) ||
-            !cellRange(from.z, box.max.z, 2, z0, z1)) {
-            return;  // beyond the listed proxies on some axis
-        }
-        for (std::int32_t x = x0; x <= x1; ++x) {
-            for (std::int32_t y = y0; y <= y1; ++y) {
-                for (std::uint32_t e = bucketStart_[slotOf(x, y, z0)]; e < bucketStart_[slotOf(x, y, z1) + 1]; ++e) {
-                    test(entries_[e]);
-                }
-            }
-        }
+        visitDenseCells(from, box.max, test);
         return;
     }
     const Cell low = cellOf(from);
@@ -422,17 +422,7 @@ void UniformGrid::query(const Aabb& box, std::span<const Aabb> boxes, std::vecto
         for (const Entry& entry : entries_) test(entry);  // fewer entries than cells: read them all
         return;
     }
-    for (std::int32_t x = low.x; x <= high.x; ++x) {
-        for (std::int32_t y = low.y; y <= high.y; ++y) {
-            for (std::int32_t z = low.z; z <= high.z; ++z) {
-                const Cell cell{x, y, z};
-                const std::size_t bucket = bucketOf(cell);
-                for (std::uint32_t e = bucketStart_[bucket]; e < bucketStart_[bucket + 1]; ++e) {
-                    if (entries_[e].cell == cell) test(entries_[e]);
-                }
-            }
-        }
-    }
+    visitHashedCells(low, high, test);
 }
 
 }  // namespace stepwise

@@ -121,6 +121,14 @@ private:
     bool fitDenseGrid(const ProxySet& proxies);
     std::uint32_t slotOf(std::int32_t x, std::int32_t y, std::int32_t z) const;
     bool cellRange(Real low, Real high, int axis, std::int32_t& first, std::int32_t& last) const;
+    /// Calls `visit(entry)` for each entry of the dense grid in the cells from the one of @p low to
+    /// the one of @p high (clipped to the grid), column by column; false when they miss the grid.
+    template <class Visit>
+    bool visitDenseCells(const Vec3& low, const Vec3& high, Visit&& visit) const;
+    /// Calls `visit(entry)` for each entry of the hashed grid in the cells from @p low to @p high,
+    /// skipping the entries of other cells that share a bucket.
+    template <class Visit>
+    void visitHashedCells(const Cell& low, const Cell& high, Visit&& visit) const;
     void findAllFatPairs(const ProxySet& fat, BroadphaseCounters& counters);
     void findFatPairsOfMoved(const ProxySet& fat, BroadphaseCounters& counters);
     void fileProxies(const ProxySet& proxies);

@@ -53,23 +53,29 @@ void World::findRegionMembers(bool throughBroadphase) {
 ///
 /// The test runs over every dynamic body: the bodies have moved since the broadphase, so no
 /// structure holds where they are now, and testing a centre against a plane or a box costs
-/// about what one query would. A removal is rare (once per body, ever), so it may cost: the
-/// body's springs and joints go with it, the indices of those that stay are shifted down, and
-/// the caches that name bodies by index (contacts, warm starts, the broadphase's structures,
-/// the sleep islands) start afresh, as in a new World. The bodies that stay lose one step of
-/// warm starting.
+/// about what one query would. A step that removes nobody allocates nothing. A removal is
+/// rare (once per body, ever), so it may cost: the body's springs and joints go with it, the
+/// indices of those that stay are shifted down, and the caches that name bodies by index
+/// (contacts, warm starts, the broadphase's structures, the sleep islands) start afresh, as in
+/// a new World. The bodies that stay lose one step of warm starting.
 void World::removeKilledBodies() {
     constexpr std::uint32_t kGone = std::numeric_limits<std::uint32_t>::max();
+    // The Kill region that holds body i's centre, or none
+    auto killerOf = [&](std::size_t i) -> const Region* {
+        for (const Region& region : regions_) {
+            if (region.effect == RegionEffect::Kill && regionContains(region, dynamics_[i].position)) return &region;
+        }
+        return nullptr;
+    };
+    std::size_t firstKilled = 0;
+    while (firstKilled < dynamics_.size() && killerOf(firstKilled) == nullptr) ++firstKilled;
+    if (firstKilled == dynamics_.size()) return;  // the common step: nobody removed, nothing allocated
+
+    // A removal: each body's new index, or kGone
     std::vector<std::uint32_t> newIndex(dynamics_.size());
     std::size_t kept = 0;
     for (std::size_t i = 0; i < dynamics_.size(); ++i) {
-        const Region* killer = nullptr;
-        for (const Region& region : regions_) {
-            if (region.effect == RegionEffect::Kill && regionContains(region, dynamics_[i].position)) {
-                killer = &region;
-                break;
-            }
-        }
+        const Region* killer = i < firstKilled ? nullptr : killerOf(i);
         if (killer == nullptr) {
             newIndex[i] = static_cast<std::uint32_t>(kept++);
         } else {
@@ -77,7 +83,6 @@ void World::removeKilledBodies() {
             removedBodies_.push_back({dynamics_[i].name, killer->name, time_ + settings_.timeStep, dynamics_[i].position});
         }
     }
-    if (kept == dynamics_.size()) return;
 
     // The bodies, springs and joints that stay, in their order, with their indices renumbered
     std::size_t next = 0;
