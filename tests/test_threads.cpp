@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cstring>
 #include <random>
@@ -83,6 +84,36 @@ TEST_CASE("The thread pool hands over jobs in quick succession and after its wor
         if (job % 1000 == 999) std::this_thread::sleep_for(kSpinBeforeSleep * 5);  // let the workers sleep
     }
     for (std::size_t i = 0; i < kChunks; ++i) REQUIRE(written[i] == expected);
+}
+
+TEST_CASE("The thread pool never lets a late worker run a chunk of the next, larger job", "[threads]") {
+    // A worker that finished the last chunk of a job may still be in its claim loop when run()
+    // returns and the next job is published. Were it to read the new job's chunk count against
+    // the old job's ticket, it could claim chunk c of the new job under the old ticket (c = the
+    // old job's chunk count, within the new one's): that chunk would run twice, or run() would
+    // return before it ended. So the jobs here grow and shrink (2 to 9 chunks), back to back,
+    // twenty thousand of them, and after each run() every chunk must have run exactly once.
+    const unsigned threads = GENERATE(2u, 4u);
+    ThreadPool pool(threads);
+    constexpr std::size_t kMostChunks = 9;
+    std::array<std::atomic<int>, kMostChunks> runs{};
+    constexpr int kJobs = 20000;
+    int wellRun = 0;  // jobs whose chunks each ran once
+    for (int job = 0; job < kJobs; ++job) {
+        const std::size_t chunks = 2 + static_cast<std::size_t>(job % 8);
+        for (std::atomic<int>& r : runs) r.store(0, std::memory_order_relaxed);
+        auto chunk = [&](std::size_t i) { runs[i].fetch_add(1, std::memory_order_relaxed); };
+        pool.run(chunks, chunk);
+        for (std::size_t i = 0; i < kMostChunks; ++i) {
+            const int expected = i < chunks ? 1 : 0;
+            if (runs[i].load() != expected) {
+                INFO("job " << job << " of " << chunks << " chunks, " << threads << " threads: chunk " << i);
+                REQUIRE(runs[i].load() == expected);
+            }
+        }
+        ++wellRun;
+    }
+    REQUIRE(wellRun == kJobs);
 }
 
 TEST_CASE("Threads=0 means one thread per hardware thread", "[threads]") {

@@ -58,11 +58,11 @@ ThreadPool::~ThreadPool() {
 
 void ThreadPool::dispatch(std::size_t chunks, void* context, Trampoline call) {
     // The last job is over (run() returned), so no thread can be inside it: its fields are free.
+    const std::uint64_t job = generation_.load(std::memory_order_relaxed) + 1;
     context_.store(context, std::memory_order_relaxed);
     call_.store(call, std::memory_order_relaxed);
-    chunkCount_.store(chunks, std::memory_order_relaxed);
+    jobChunks_.store((job << 32) | chunks, std::memory_order_relaxed);
     doneChunks_.store(0, std::memory_order_relaxed);
-    const std::uint64_t job = generation_.load(std::memory_order_relaxed) + 1;
     ticket_.store(job << 32, std::memory_order_release);
     {
         std::lock_guard<std::mutex> lock(mutex_);
@@ -82,17 +82,22 @@ void ThreadPool::dispatch(std::size_t chunks, void* context, Trampoline call) {
 }
 
 void ThreadPool::takeChunks(std::uint64_t job) {
+    const std::uint64_t tag = job & 0xffffffffu;  // the job's number as the ticket and the count hold it
     std::uint64_t ticket = ticket_.load(std::memory_order_acquire);
     for (;;) {
-        if ((ticket >> 32) != job) return;  // a newer job: this one is over
+        if ((ticket >> 32) != tag) return;  // a newer job: this one is over
         const std::size_t chunk = static_cast<std::size_t>(ticket & 0xffffffffu);
-        const std::size_t chunks = chunkCount_.load(std::memory_order_relaxed);
+        // The count of the ticket's job, or none: a count of the next job means this one is over.
+        const std::uint64_t jobChunks = jobChunks_.load(std::memory_order_relaxed);
+        if ((jobChunks >> 32) != tag) return;
+        const std::size_t chunks = static_cast<std::size_t>(jobChunks & 0xffffffffu);
         void* const context = context_.load(std::memory_order_relaxed);
         const Trampoline call = call_.load(std::memory_order_relaxed);
         if (chunk >= chunks) return;
-        // Claim the chunk only if the ticket has not moved since these fields were read; on
-        // failure `ticket` is reloaded and the loop looks again.
-        if (ticket_.compare_exchange_weak(ticket, ticket + 1, std::memory_order_acquire, std::memory_order_acquire)) {
+        // Claim the chunk only if the ticket has not moved since these fields were read (acq_rel:
+        // the reads above stay before the claim); on failure `ticket` is reloaded and the loop
+        // looks again.
+        if (ticket_.compare_exchange_weak(ticket, ticket + 1, std::memory_order_acq_rel, std::memory_order_acquire)) {
             call(context, chunk);
             doneChunks_.fetch_add(1, std::memory_order_release);
             ticket = ticket_.load(std::memory_order_acquire);

@@ -94,10 +94,15 @@ private:
     std::condition_variable wake_;      ///< Workers that spun long enough sleep here.
     // The current job. Its fields are written before its ticket is published (a release) and read
     // after a worker loads that ticket (an acquire); atomics, because a worker that comes late may
-    // read them while the next job writes them (it then finds the ticket changed and claims nothing).
+    // read them while the next job writes them. Such a worker holds the old job's ticket, whose
+    // chunks are all claimed; so the chunk count carries its job's number, and a count that names
+    // another job than the ticket's is never compared with the ticket's chunk (the next job's
+    // count, larger than the old one, would let the late worker claim, under the old ticket, a
+    // chunk of the next job that another thread claims too).
     std::atomic<void*> context_{nullptr};
     std::atomic<Trampoline> call_{nullptr};
-    std::atomic<std::size_t> chunkCount_{0};
+    /// The job's number in the high 32 bits and its chunk count in the low 32.
+    std::atomic<std::uint64_t> jobChunks_{0};
     /// The job's number in the high 32 bits and its next unclaimed chunk in the low 32: a chunk is
     /// claimed by a compare-and-swap of the whole word, so a late worker can never claim a chunk of
     /// a job it has not read.
