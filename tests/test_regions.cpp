@@ -214,30 +214,27 @@ TEST_CASE("Archimedes' torque rights a box with GM > 0 and capsizes one with GM 
         const Real d = height * density / 1000;
         return width * width / (12 * d) - (height - d) / 2;
     };
-    const auto tilted = [](Real degrees) { return glm::angleAxis(degrees * std::numbers::pi_v<Real> / 180, Vec3(0, 0, 1)); };
+    // A box of density 500 kg/m³ and @p size dropped at the surface tilted @p degrees about z,
+    // settled for 20 s in a pond of @p linearDrag and @p angularDrag: its tilt at the end, degrees.
+    const auto tiltAfterSettling = [](Vec3 size, Real degrees, Real linearDrag, Real angularDrag) {
+        Scene scene = emptyScene();
+        DynamicObject box = boxOfDensity("box", Vec3(0, 0, 0), size, 500);
+        box.orientation = glm::angleAxis(degrees * std::numbers::pi_v<Real> / 180, Vec3(0, 0, 1));
+        scene.dynamics.push_back(box);
+        scene.regions.push_back(pond(linearDrag, angularDrag));
+        World world(std::move(scene));
+        for (int n = 0; n < 60 * 20; ++n) world.step();
+        return tiltDegrees(world.dynamics()[0]);
+    };
     SECTION("a flat raft, tilted 15 degrees, rights itself") {
         const Vec3 size(2, 0.5, 2);
         REQUIRE(metacentricHeight(size.x, size.y, 500) > 0);
-        Scene scene = emptyScene();
-        DynamicObject raft = boxOfDensity("raft", Vec3(0, 0, 0), size, 500);
-        raft.orientation = tilted(15);
-        scene.dynamics.push_back(raft);
-        scene.regions.push_back(pond(2000, 500));
-        World world(std::move(scene));
-        for (int n = 0; n < 60 * 20; ++n) world.step();
-        CHECK(tiltDegrees(world.dynamics()[0]) < 1);
+        CHECK(tiltAfterSettling(size, 15, 2000, 500) < 1);
     }
     SECTION("a tall post with its centre of mass high, tilted 5 degrees, capsizes") {
         const Vec3 size(0.5, 2, 0.5);
         REQUIRE(metacentricHeight(size.x, size.y, 500) < 0);
-        Scene scene = emptyScene();
-        DynamicObject post = boxOfDensity("post", Vec3(0, 0, 0), size, 500);
-        post.orientation = tilted(5);
-        scene.dynamics.push_back(post);
-        scene.regions.push_back(pond(500, 50));
-        World world(std::move(scene));
-        for (int n = 0; n < 60 * 20; ++n) world.step();
-        CHECK(tiltDegrees(world.dynamics()[0]) > 60);  // it ends lying down, its long axis near the surface
+        CHECK(tiltAfterSettling(size, 5, 500, 50) > 60);  // it ends lying down, its long axis near the surface
     }
 }
 
