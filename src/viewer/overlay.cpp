@@ -144,7 +144,9 @@ std::string togglesLine(const OverlayState& state) {
 /// Height above a space's swept box at which its name is drawn, m.
 constexpr Real kNameHeight = Real(0.3);
 
-/// The spaces' names: side by side, each above its space; overlaid, a legend at the right, from @p top down.
+/// The spaces' names, from @p top down (below the heads-up display): side by side, each above its
+/// space (or at @p top, in its space's column, when above would be under the display); overlaid, a
+/// legend at the right.
 void spaceNames(const Simulation& simulation, const OrbitCamera& camera, int width, int height, int top) {
     const SpaceLayout& layout = simulation.layout();
     const std::vector<Space>& spaces = simulation.spaces()->all();
@@ -167,7 +169,7 @@ void spaceNames(const Simulation& simulation, const OrbitCamera& camera, int wid
         const std::vector<std::string> name{spaces[k].name + (spaces[k].paused ? " (paused)" : "")};
         const std::vector<Color> colour{spaceColor(k)};
         const int x = static_cast<int>(pixel.x) - panelWidth(name) / 2;
-        const int y = static_cast<int>(pixel.y) - kLineHeight - kMargin;
+        const int y = std::max(top, static_cast<int>(pixel.y) - kLineHeight - kMargin);
         panel(x, y, name, 0.0f, 0.0f, 0.0f, 0.45f, &colour);
     }
 }
@@ -266,11 +268,12 @@ void drawOverlay(const Simulation& simulation, const OrbitCamera& camera, int wi
     int y = kMargin;
     if (state.hud) {
         const std::vector<std::string> lines = wrap(hudLines(simulation, state), maxChars);
+        const int below = y + static_cast<int>(lines.size()) * kLineHeight + 2 * kMargin;
         panel(kMargin, y, lines, 0.0f, 0.0f, 0.0f, 0.55f);
-        y += static_cast<int>(lines.size()) * kLineHeight + 2 * kMargin;
+        if (simulation.hasSpaces()) spaceNames(simulation, camera, width, height, below);
+        y = below;
     }
 
-    if (state.hud && simulation.hasSpaces()) spaceNames(simulation, camera, width, height, y);
     if (state.help) panel(kMargin, y, wrap(helpLines(), maxChars), 0.0f, 0.0f, 0.0f, 0.7f);
 
     // From the bottom up: the stage walk-through, then notices and errors above it.
