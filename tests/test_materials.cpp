@@ -350,6 +350,21 @@ TEST_CASE("A compound's part takes its Material's density, and its contacts its 
     CHECK_THAT(double(scene.dynamics[0].mass), WithinRel(double(expectedMass), 1e-12));
 }
 
+TEST_CASE("A compound's part bounces with its Material's elasticity: e^2 of the drop", "[materials][shapes]") {
+    // A compound of one ball part (radius 0.5 m, so firstBounceHeight()'s radius) dropped 1 m onto a
+    // floor of e = 1 (products). The body's Elasticity is 0.2; the part's material gives 0.8, and the
+    // bounce keeps e² = 0.64 of the drop (0.04 with the body's). Tolerance 5 mm, as above.
+    for (const auto& [material, e] : {std::pair<std::string, Real>{", Material=rubber", Real(0.8)}, {"", Real(0.2)}}) {
+        const std::string text = "World, TimeStep=1/240\nMaterial, Name=rubber, Elasticity=0.8\n"
+                                 "CollisionPlane, Elasticity=1\n"
+                                 "DynamicObject, Name=ball, Shape=Compound, Position=(0, 1.5, 0), Elasticity=0.2\n"
+                                 "Part, Body=ball, Shape=Sphere, Radius=0.5" + material + "\n";
+        const Real height = firstBounceHeight(text);
+        INFO("part '" << material << "': e = " << e << ", rebounds to " << height << " m");
+        CHECK(std::abs(height - e * e) <= Real(0.005));
+    }
+}
+
 TEST_CASE("An unknown material on a part is an error naming it", "[materials][shapes]") {
     CHECK_THAT(loadError("Material, Name=ice, Friction=0.05\nDynamicObject, Name=sled, Shape=Compound\n"
                          "Part, Body=sled, Shape=Box, Material=icy\n"),
