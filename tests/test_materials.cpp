@@ -314,3 +314,60 @@ TEST_CASE("A scene's trajectory is the same, bit for bit, when materials are dec
         CHECK(plain.dynamics()[k].velocity == mixed.dynamics()[k].velocity);
     }
 }
+
+TEST_CASE("A compound's part takes its Material's density, and its contacts its friction", "[materials][shapes]") {
+    // A sled: a wide runner under a smaller box, sliding at v on a floor of μ = 1 (products).
+    // The body's Friction is 0.8; a runner of Material=ice (μ 0.05) touches the floor with the
+    // ice's μ: it slides v²/(2·0.05·g) = 9.17 m, where the body's own μ would stop it after
+    // v²/(2·0.8·g) = 0.57 m. Tolerance as in the FrictionCombine test above: one step's v·h and 1 %.
+    const Real v = 3, h = Real(1) / 240;
+    const auto sled = [](const std::string& runner, const std::string& solver) {
+        return "World, TimeStep=1/240, Solver=" + solver + "\n"
+               "Material, Name=ice, Friction=0.05\n"
+               "CollisionPlane, Name=floor, Friction=1\n"
+               "DynamicObject, Name=sled, Shape=Compound, Position=(0, 0.3, 0), Velocity=(3, 0, 0), Mass=1, "
+               "Friction=0.8\n"
+               "Part, Body=sled, Shape=Box, Position=(0, -0.2, 0), Scale=(1, 0.2, 1)" + runner + "\n"
+               "Part, Body=sled, Shape=Box, Position=(0, 0.1, 0), Scale=(0.6, 0.4, 0.6)\n";
+    };
+    for (const char* solver : {"SequentialImpulse", "Impulse"}) {
+        INFO(solver);
+        for (const auto& [runner, mu] : {std::pair<std::string, Real>{", Material=ice", Real(0.05)}, {"", Real(0.8)}}) {
+            const Real expected = v * v / (2 * mu * kStandardGravity);
+            const Real distance = slideDistance(sled(runner, solver), v);
+            INFO("runner '" << runner << "': mu = " << mu << ", slid " << distance << " m, expected " << expected);
+            CHECK(std::abs(distance - expected) <= v * h + Real(0.01) * expected);
+        }
+    }
+
+    // Density: every part with a Material of its own is ρ·V (a part's material density counts as its Mass).
+    const Scene scene = parseScene("Material, Name=ice, Density=900\nMaterial, Name=oak, Density=700\n"
+                                   "DynamicObject, Name=sled, Shape=Compound\n"
+                                   "Part, Body=sled, Shape=Box, Scale=(1, 0.2, 1), Material=ice\n"
+                                   "Part, Body=sled, Shape=Sphere, Radius=0.5, Position=(0, 1, 0), Material=oak\n",
+                                   kSource);
+    const Real expectedMass = 900 * Real(0.2) + 700 * Real(4) / 3 * kPi * Real(0.125);
+    CHECK_THAT(double(scene.dynamics[0].mass), WithinRel(double(expectedMass), 1e-12));
+}
+
+TEST_CASE("A compound's part bounces with its Material's elasticity: e^2 of the drop", "[materials][shapes]") {
+    // A compound of one ball part (radius 0.5 m, so firstBounceHeight()'s radius) dropped 1 m onto a
+    // floor of e = 1 (products). The body's Elasticity is 0.2; the part's material gives 0.8, and the
+    // bounce keeps e² = 0.64 of the drop (0.04 with the body's). Tolerance 5 mm, as above.
+    for (const auto& [material, e] : {std::pair<std::string, Real>{", Material=rubber", Real(0.8)}, {"", Real(0.2)}}) {
+        const std::string text = "World, TimeStep=1/240\nMaterial, Name=rubber, Elasticity=0.8\n"
+                                 "CollisionPlane, Elasticity=1\n"
+                                 "DynamicObject, Name=ball, Shape=Compound, Position=(0, 1.5, 0), Elasticity=0.2\n"
+                                 "Part, Body=ball, Shape=Sphere, Radius=0.5" + material + "\n";
+        const Real height = firstBounceHeight(text);
+        INFO("part '" << material << "': e = " << e << ", rebounds to " << height << " m");
+        CHECK(std::abs(height - e * e) <= Real(0.005));
+    }
+}
+
+TEST_CASE("An unknown material on a part is an error naming it", "[materials][shapes]") {
+    CHECK_THAT(loadError("Material, Name=ice, Friction=0.05\nDynamicObject, Name=sled, Shape=Compound\n"
+                         "Part, Body=sled, Shape=Box, Material=icy\n"),
+               Contains("materials.scene:3:38: error: Material: expected the Name of a Material in this file, "
+                        "found 'icy'; did you mean 'ice'?"));
+}

@@ -21,6 +21,9 @@
 #include <array>
 #include <fstream>
 #include <iterator>
+#include <limits>
+#include <optional>
+#include <utility>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -35,7 +38,9 @@
 #include "viewer/mouse_controls.hpp"
 #include "viewer/mouse_force.hpp"
 #include "viewer/picking.hpp"
+#include "viewer/renderer.hpp"
 #include "viewer/simulation.hpp"
+#include "viewer/space_layout.hpp"
 #include "viewer/stage_walkthrough.hpp"
 
 using Catch::Matchers::Contains;
@@ -1170,4 +1175,228 @@ TEST_CASE("I shows sleeping bodies in the sleeping colour instead of their own",
     const auto sleeping = shoot("OI");
     CHECK(own[0] > own[2]);            // red: the scene's colour (0.8, 0.3, 0.2)
     CHECK(sleeping[2] > sleeping[0]);  // kSleepingColor (0.55, 0.6, 0.7)
+}
+
+// ---- Spaces: side by side or overlaid, paused one by one -------------------------------------
+
+namespace {
+
+const std::string kSpacesScenes[] = {kSourceDir + "/config/spaces_integrators.scene",
+                                     kSourceDir + "/config/spaces_timesteps.scene",
+                                     kSourceDir + "/config/spaces_solvers.scene"};
+
+/// The x range that space @p k's bodies cover now, as drawn (moved by the layout's offset),
+/// computed from the bodies' own boxes, not from the layout's swept boxes.
+std::pair<Real, Real> drawnExtent(const Simulation& sim, std::size_t k) {
+    Real low = std::numeric_limits<Real>::infinity();
+    Real high = -low;
+    const World& world = sim.worldAt(k);
+    for (const DynamicObject& b : world.dynamics()) {
+        const Aabb box = shapeAabb(b);
+        low = std::min(low, box.min.x);
+        high = std::max(high, box.max.x);
+    }
+    for (const KinematicsObject& b : world.kinematics()) {
+        const Aabb box = shapeAabb(b);
+        low = std::min(low, box.min.x);
+        high = std::max(high, box.max.x);
+    }
+    const Real offset = sim.layout().offset(k).x;
+    return {low + offset, high + offset};
+}
+
+}  // namespace
+
+TEST_CASE("Side by side, the spaces of each shipped scene never overlap, and the layout stays put for the run",
+          "[viewer][spaces]") {
+    for (const std::string& path : kSpacesScenes) {
+        INFO(path);
+        Simulation sim(path);
+        REQUIRE(sim.hasSpaces());
+        REQUIRE(sim.worldCount() >= 2);
+        REQUIRE(sim.layout().arrangement() == SpaceArrangement::SideBySide);
+        std::vector<Real> offsetsAtStart;
+        for (std::size_t k = 0; k < sim.worldCount(); ++k) offsetsAtStart.push_back(sim.layout().offset(k).x);
+        const double duration = double(sim.world().settings().duration);
+        auto disjoint = [&](double t) {
+            INFO("t = " << t << " s");
+            for (std::size_t i = 0; i < sim.worldCount(); ++i) {
+                const auto a = drawnExtent(sim, i);
+                for (std::size_t j = i + 1; j < sim.worldCount(); ++j) {
+                    const auto b = drawnExtent(sim, j);
+                    INFO("spaces " << i << " [" << a.first << ", " << a.second << "] and " << j << " [" << b.first
+                                   << ", " << b.second << "]");
+                    // Left to right in file order, with room between.
+                    CHECK(a.second < b.first);
+                }
+            }
+        };
+        disjoint(0);
+        for (int tenth = 1; tenth <= static_cast<int>(std::lround(duration * 10)); ++tenth) {
+            sim.stepTo(tenth / 10.0);
+            disjoint(tenth / 10.0);
+        }
+        // The copy run ahead at load swept every box of the run: no space had to move since.
+        for (std::size_t k = 0; k < sim.worldCount(); ++k) CHECK(sim.layout().offset(k).x == offsetsAtStart[k]);
+
+        sim.layout().arrange(SpaceArrangement::Overlaid);  // L: every space at its own coordinates
+        for (std::size_t k = 0; k < sim.worldCount(); ++k) CHECK(sim.layout().offset(k) == Vec3(0));
+    }
+}
+
+TEST_CASE("Keys 1-9 pause one space while the others step on the shared clock", "[viewer][spaces]") {
+    CHECK(spaceForKey('1') == std::optional<std::size_t>(0));
+    CHECK(spaceForKey('9') == std::optional<std::size_t>(8));
+    CHECK_FALSE(spaceForKey('0'));
+    CHECK_FALSE(spaceForKey('a'));
+    CHECK_FALSE(spaceForKey(' '));
+
+    // Space 1 steps at h = 1/30 s, space 2 at 1/240 s; the clock ticks every 1/240 s.
+    Simulation sim(kSourceDir + "/config/spaces_timesteps.scene");
+    REQUIRE(sim.worldCount() == 2);
+    const World& coarse = sim.worldAt(0);
+    const World& fine = sim.worldAt(1);
+    CHECK(sim.clock().timeStep() == Approx(1.0 / 240).epsilon(1e-12));
+    CHECK_FALSE(sim.toggleSpacePause(2));  // key 3: no such space
+    REQUIRE(sim.toggleSpacePause(0));      // key 1
+    const Vec3 held = coarse.dynamics()[0].position;
+    for (int frame = 0; frame < 4; ++frame) sim.advanceFrame(0.25);  // 1 s of the clock
+    CHECK(coarse.stepCount() == 0);
+    CHECK(coarse.dynamics()[0].position == held);
+    CHECK(fine.stepCount() == 240);  // 1 s / (1/240 s)
+    REQUIRE(sim.toggleSpacePause(0));  // resumed: it goes on from where it stopped
+    for (int frame = 0; frame < 4; ++frame) sim.advanceFrame(0.25);
+    CHECK(coarse.stepCount() == 30);  // 1 s of running / (1/30 s)
+    CHECK(fine.stepCount() == 480);
+
+    // N: ticks until a running space steps; with every space paused nothing can, and it says so.
+    CHECK(sim.stepOnce());
+    CHECK(fine.stepCount() == 481);
+    REQUIRE(sim.toggleSpacePause(0));
+    REQUIRE(sim.toggleSpacePause(1));
+    CHECK_FALSE(sim.stepOnce());
+    CHECK(fine.stepCount() == 481);
+
+    // The walk-through follows one World: with spaces it runs nothing.
+    sim.stepStage();
+    CHECK_FALSE(sim.shownStage());
+    CHECK_FALSE(sim.showStageRun(0));
+}
+
+TEST_CASE("With spaces, picking finds the body or floor of the space drawn under the cursor, and pushes it there",
+          "[viewer][spaces]") {
+    SECTION("three balls thrown from one point, drawn side by side") {
+        Simulation sim(kSourceDir + "/config/spaces_integrators.scene");
+        for (std::size_t k = 0; k < sim.worldCount(); ++k) {
+            const DynamicObject& ball = sim.worldAt(k).dynamics()[0];
+            const Vec3 drawn = ball.position + sim.layout().offset(k);
+            const std::optional<SpaceHit> hit = pickInSimulation(sim, Ray{drawn + Vec3(0, 5, 0), Vec3(0, -1, 0)});
+            REQUIRE(hit);
+            CHECK(hit->space == k);
+            CHECK(hit->hit.body.kind == BodyKind::Dynamic);
+            CHECK(hit->hit.point.y == Approx(double(ball.position.y + ball.radius)).margin(1e-9));  // own coordinates
+        }
+    }
+    SECTION("two floors at the same place: the one of the band under the cursor") {
+        Simulation sim(kSourceDir + "/config/spaces_timesteps.scene");
+        for (std::size_t k = 0; k < sim.worldCount(); ++k) {
+            const auto [low, high] = sim.layout().band(k);
+            const Vec3 above((low + high) / 2 + sim.layout().offset(k).x, 5, 3);  // z = 3 m: beside the ball
+            const std::optional<SpaceHit> hit = pickInSimulation(sim, Ray{above, Vec3(0, -1, 0)});
+            REQUIRE(hit);
+            CHECK(hit->space == k);
+            CHECK(hit->hit.body.kind == BodyKind::Plane);
+        }
+    }
+    SECTION("a push acts on the held body's space only, one step's impulse F h before its step") {
+        Simulation sim(kSourceDir + "/config/spaces_timesteps.scene");
+        const DynamicObject& fineBall = sim.worldAt(1).dynamics()[0];
+        const DynamicObject& coarseBall = sim.worldAt(0).dynamics()[0];
+        sim.grab(0, fineBall.position, Vec3(1, 0, 0), false, 1);
+        REQUIRE(sim.grabbedSpace() == 1);
+        REQUIRE(sim.stepOnce());  // one tick: the fine space's first step, the coarse one waits
+        CHECK(sim.worldAt(1).stepCount() == 1);
+        CHECK(sim.worldAt(0).stepCount() == 0);
+        // F = 2 m |g| along x, for h = 1/240 s: Δv = 2 |g| h.
+        CHECK(double(fineBall.velocity.x) == Approx(2 * 9.81 / 240).epsilon(1e-12));
+        CHECK(coarseBall.velocity.x == 0);
+        sim.release();
+    }
+}
+
+TEST_CASE("A screenshot of spaces shows them in separate bands side by side, and together overlaid",
+          "[viewer][xvfb][spaces]") {
+    // Three balls thrown from the origin under three integrators. Side by side, each space has a
+    // band of x of its own: the columns of the picture that hold anything drawn form three groups
+    // with background between, each ball in its own, left to right. Overlaid (L), the three balls
+    // are at x = 10 m (every integrator moves x exactly at constant velocity): one group.
+    if (const std::string why = screenshotsUnavailable(); !why.empty()) STEPWISE_SKIP(why);
+    const std::string scene = kSourceDir + "/config/spaces_integrators.scene";
+    const int width = 640, height = 400;
+    const double t = 2;  // the scene's Duration, when its Expect record is checked
+    const TempFile side("spaces-side.png"), over("spaces-over.png"), state("spaces-state.csv"),
+        csv("spaces-run.csv");
+
+    // The groups of columns that hold a pixel other than the background, as [first, last] column.
+    const auto groups = [&](const Image& image) {
+        std::vector<std::pair<int, int>> found;
+        for (int x = 0; x < image.width; ++x) {
+            bool drawn = false;
+            for (int y = 0; y < image.height && !drawn; ++y) {
+                const std::uint8_t* p = image.at(x, y);
+                for (int c = 0; c < 3; ++c) {
+                    if (std::abs(int(p[c]) - int(std::lround(255 * kBackground[c]))) > 12) drawn = true;
+                }
+            }
+            if (!drawn) continue;
+            if (!found.empty() && x - found.back().second <= 3) found.back().second = x;  // a gap of a pixel or two: one group
+            else found.emplace_back(x, x);
+        }
+        return found;
+    };
+
+    {  // Side by side, with O: no text, only the balls.
+        const Result shot = viewUnderXvfb("'" + scene + "' --screenshot " + side.quoted() + " --at 2 --size 640x400" +
+                                          " --keys O --dump-state " + state.quoted());
+        INFO(shot.output);
+        REQUIRE(shot.exitCode == 0);
+        CHECK_THAT(shot.output, Contains("t = 2 s on the spaces' clock (3 spaces)"));
+        const Image image = decodePng(readBytes(side.path));
+        REQUIRE(image.width == width);
+        const std::vector<std::pair<int, int>> bands = groups(image);
+        INFO(bands.size() << " groups of drawn columns");
+        REQUIRE(bands.size() == 3);
+        // Where each ball must be drawn: the viewer frames the layout as loaded, then steps to t.
+        const OrbitCamera camera = cameraForSpaces(Simulation(scene).layout(), Real(width) / Real(height));
+        Simulation sim(scene);
+        sim.stepTo(t);
+        for (std::size_t k = 0; k < 3; ++k) {
+            const Vec3 pixel = camera.project(sim.worldAt(k).dynamics()[0].position + sim.layout().offset(k), width, height);
+            INFO("space " << k << " ball drawn at (" << pixel.x << ", " << pixel.y << ")");
+            CHECK(pixel.x >= bands[k].first - 2);
+            CHECK(pixel.x <= bands[k].second + 3);
+        }
+    }
+    {  // The state drawn is what `stepwise run` reaches on the same clock, every space's row.
+        const Result run = shell(cli() + " run '" + scene + "' --duration 2 --csv " + csv.quoted());
+        REQUIRE(run.exitCode == 0);
+        const std::vector<std::string> drawn = lines(state.path);
+        const std::vector<std::string> ran = lines(csv.path);
+        REQUIRE(drawn.size() == 4);  // header and three balls, one per space
+        REQUIRE(ran.size() > 4);
+        CHECK(drawn[0] == ran[0]);
+        for (std::size_t i = 1; i < drawn.size(); ++i) CHECK(drawn[i] == ran[ran.size() - 4 + i]);
+    }
+    {  // Overlaid: one group.
+        const Result shot =
+            viewUnderXvfb("'" + scene + "' --screenshot " + over.quoted() + " --at 2 --size 640x400 --keys OL");
+        INFO(shot.output);
+        REQUIRE(shot.exitCode == 0);
+        CHECK(groups(decodePng(readBytes(over.path))).size() == 1);
+    }
+    {  // The walk-through follows one World: --stage is refused, saying why.
+        const Result shot = viewUnderXvfb("'" + scene + "' --screenshot " + over.quoted() + " --stage 1");
+        CHECK(shot.exitCode == 2);
+        CHECK_THAT(shot.output, Contains("this scene has spaces"));
+    }
 }

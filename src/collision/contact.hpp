@@ -62,6 +62,9 @@ struct CandidatePair {
     BodyRef b;            ///< The other body.
 };
 
+/// @brief Contact::partA or partB of a body that is no compound (or of a part past the 65535th).
+inline constexpr std::uint16_t kNoPart = 0xFFFF;
+
 /// @brief One point of contact between dynamic body A and body B.
 ///
 /// Convention (as in Box2D): the normal points from A towards B. A moves
@@ -74,6 +77,8 @@ struct Contact {
     Vec3 point{0, 0, 0};  ///< World-space point midway through the overlap, m.
     Real depth = 0;       ///< Penetration depth along the normal, m (≥ 0 when touching).
     std::uint32_t featureId = 0; ///< Which features of A and B meet (from the pair test; stable while they stay in touch).
+    std::uint16_t partA = kNoPart; ///< The part of compound A that touches (its material may differ from the body's).
+    std::uint16_t partB = kNoPart; ///< The part of compound B that touches.
 };
 
 }  // namespace stepwise

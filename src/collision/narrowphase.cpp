@@ -209,7 +209,9 @@ struct PartPair {
 void appendContacts(const CandidatePair& pair, const Vec3& normal, const ContactPoint& p, const PartPair& parts,
                     std::vector<Contact>& contacts) {
     const std::uint32_t id = parts.compound ? withParts(p.featureId, parts.a, parts.b) : p.featureId;
-    contacts.push_back({pair.a, pair.b, normal, p.position, p.depth, id});
+    // The parts' numbers, for a part's own material (contactCoefficients()); kNoPart past the 16 bits.
+    const auto part = [&](std::uint32_t k) { return parts.compound && k < kNoPart ? std::uint16_t(k) : kNoPart; };
+    contacts.push_back({pair.a, pair.b, normal, p.position, p.depth, id, part(parts.a), part(parts.b)});
 }
 
 /// The exact test of a sphere or box pair (isClassicPair()), with the reach it has always had.

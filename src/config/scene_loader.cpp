@@ -297,6 +297,7 @@ private:
         int column = 0;                     ///< Column of the record's name.
         int bodyColumn = 0;                 ///< Column of Body's value.
         int massColumn = 0;                 ///< Column of Mass's value; 0 when not given.
+        bool massFromMaterial = false;      ///< Its mass is its Material's density × its volume.
         bool usable = true;                 ///< False when its shape or hull was refused (reported).
     };
 
@@ -691,7 +692,9 @@ private:
         part.height = values.number("Height", part.scale.y);
         pending.massColumn = values.isSet("Mass") ? values.valueColumn("Mass") : 0;
         part.mass = values.number("Mass", 0);
-        const std::optional<Real> density = densityOf(values, line, nullptr);
+        // A part's Material gives its density here, and its friction and elasticity in resolveCompounds().
+        const Material* material = materialOf(values, line, part.material);
+        const std::optional<Real> density = densityOf(values, line, material);
         if (part.shape == Shape::Compound || part.shape == Shape::Mesh) {
             sink_.report(line.number, values.valueColumn("Shape"), "Shape",
                          "a convex part (Sphere, Box, Capsule, Cylinder or Hull)", values.text("Shape").value_or(""),
@@ -712,9 +715,11 @@ private:
             }
         }
         if (density && pending.usable) {
-            // A part's Density stands for its Mass: the every-part-or-none rule counts it as given.
+            // A part's Density (its own or its material's) stands for its Mass: the every-part-or-none
+            // rule counts it as given.
             part.mass = *density * partVolume(part);
-            pending.massColumn = values.valueColumn("Density");
+            pending.massColumn = values.valueColumn(values.isSet("Density") ? "Density" : "Material");
+            pending.massFromMaterial = !values.isSet("Density");
         }
         pendingParts_.push_back(std::move(pending));
     }
@@ -744,6 +749,18 @@ private:
             if (!usable) continue;
             auto shape = std::make_shared<CompoundShape>();
             for (const PendingPart* part : partsOf[c]) shape->parts.push_back(part->part);
+            // A part with a Material touches with its material's Friction and Elasticity, and with the
+            // body's where the material gives none (contactCoefficients()).
+            const Real friction = compound.dynamic ? scene_.dynamics[compound.index].friction
+                                                   : scene_.kinematics[compound.index].friction;
+            const Real elasticity = compound.dynamic ? scene_.dynamics[compound.index].elasticity
+                                                     : scene_.kinematics[compound.index].elasticity;
+            for (CompoundPart& part : shape->parts) {
+                if (part.material == kNoMaterial) continue;
+                const Material& material = scene_.materials[part.material];
+                part.friction = material.friction.value_or(friction);
+                part.elasticity = material.elasticity.value_or(elasticity);
+            }
             if (!shareMass(compound, partsOf[c], *shape)) continue;
             const BodyFrame frame = moveToPrincipalFrame(*shape);
             if (compound.dynamic) {
@@ -787,18 +804,21 @@ private:
     /// none), or no part does (the body's Mass is shared by volume: uniform density). A
     /// kinematic compound has no mass: its parts give none. False after reporting.
     bool shareMass(const PendingCompound& compound, const std::vector<const PendingPart*>& parts, CompoundShape& shape) {
-        std::size_t given = 0;
-        for (const PendingPart* part : parts) given += part->massColumn != 0 ? 1 : 0;
+        // A kinematic body has no mass: its parts' materials' densities do not count, their own Mass does.
+        const auto givesMass = [&](const PendingPart* p) {
+            return p->massColumn != 0 && (compound.dynamic || !p->massFromMaterial);
+        };
+        const std::size_t given = static_cast<std::size_t>(std::count_if(parts.begin(), parts.end(), givesMass));
         const std::string& name = compound.dynamic ? scene_.dynamics[compound.index].name
                                                    : scene_.kinematics[compound.index].name;
         if (!compound.dynamic && given > 0) {
-            const PendingPart& first = **std::find_if(parts.begin(), parts.end(), [](const PendingPart* p) { return p->massColumn != 0; });
+            const PendingPart& first = **std::find_if(parts.begin(), parts.end(), givesMass);
             sink_.report(first.line, first.massColumn, "Mass", "no Mass for a part of a KinematicsObject",
                          formatNumber(first.part.mass), quoted(name) + " moves as prescribed and has no mass");
             return false;
         }
         if (given > 0 && given < parts.size()) {
-            const PendingPart& missing = **std::find_if(parts.begin(), parts.end(), [](const PendingPart* p) { return p->massColumn == 0; });
+            const PendingPart& missing = **std::find_if(parts.begin(), parts.end(), [&](const PendingPart* p) { return !givesMass(p); });
             sink_.report(missing.line, missing.column, "Mass", "a Mass on every Part of " + quoted(name) + " or on none",
                          lineText(missing.line),
                          "give each part of a compound its Mass, or give none and the body's Mass is shared by "

@@ -120,6 +120,7 @@ constexpr FieldSpec kPartFields[] = {
     {"File",            FieldKind::File,       kNamedOnly, Range::Any},              // an OBJ file: Hull points
     {"Mass",            FieldKind::Number,     kNamedOnly, Range::Mass, kMassHint},  // kg; see the Part section
     {"Density",         FieldKind::Number,     kNamedOnly, Range::Positive, kDensityHint}, // kg/m³, instead of Mass
+    {"Material",        FieldKind::Name,       kNamedOnly, Range::Any},              // a Material's Name: density, μ, e
 };
 
 /// CollisionPlane: a point and a normal, 6 positional values.

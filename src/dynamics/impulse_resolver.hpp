@@ -23,17 +23,43 @@ inline Real combineElasticity(Real a, Real b) { return a * b; }
 /// @brief Friction of a pair of materials by the default rule: the product μ = μ_A · μ_B (same reasoning).
 inline Real combineFriction(Real a, Real b) { return a * b; }
 
-/// @brief μ and e of a contact between body @p a and the other side @p other, decided once per
+/// @brief The part of @p shape that Contact::partA or partB names when it has a `Material` of its
+/// own; nullptr for a body that is no compound, or a part that takes the body's.
+inline const CompoundPart* partWithMaterial(const CompoundShape* shape, std::uint16_t part) {
+    if (shape == nullptr || part >= shape->parts.size()) return nullptr;
+    const CompoundPart& p = shape->parts[part];
+    return p.material != kNoMaterial ? &p : nullptr;
+}
+
+/// @brief μ and e of @p contact between body @p a and the other side @p other, decided once per
 /// contact when it is prepared (by both solvers, so the fast path reads the same μ and e).
 ///
-/// A scene without materials, or whose rules are both Product, takes the products above and
-/// looks up nothing; otherwise the World's rules or a MaterialPair decide
-/// (ContactMaterials::mix()).
-inline ContactCoefficients contactCoefficients(const BodySet& bodies, const DynamicObject& a, const ContactBody& other) {
-    if (bodies.materials == nullptr || bodies.materials->plain()) {
-        return {combineFriction(a.friction, other.friction), combineElasticity(a.elasticity, other.elasticity)};
+/// Each side is the surface that touches: the body's, or, where a compound's part with a
+/// `Material` of its own touches, that part's (a rubber tyre on a steel wheel). A scene without
+/// materials, or whose rules are both Product, takes the products above and looks up nothing;
+/// otherwise the World's rules or a MaterialPair decide (ContactMaterials::mix()).
+inline ContactCoefficients contactCoefficients(const BodySet& bodies, const Contact& contact, const DynamicObject& a,
+                                               ContactBody other) {
+    std::uint32_t materialA = a.material;
+    Real frictionA = a.friction;
+    Real elasticityA = a.elasticity;
+    if (const CompoundPart* part = partWithMaterial(a.compound.get(), contact.partA)) {
+        materialA = part->material;
+        frictionA = part->friction;
+        elasticityA = part->elasticity;
     }
-    return bodies.materials->mix(a.material, a.friction, a.elasticity, other.material, other.friction, other.elasticity);
+    const CompoundShape* shapeB = contact.b.kind == BodyKind::Dynamic     ? bodies.dynamics[contact.b.index].compound.get()
+                                  : contact.b.kind == BodyKind::Kinematic ? bodies.kinematics[contact.b.index].compound.get()
+                                                                          : nullptr;
+    if (const CompoundPart* part = partWithMaterial(shapeB, contact.partB)) {
+        other.material = part->material;
+        other.friction = part->friction;
+        other.elasticity = part->elasticity;
+    }
+    if (bodies.materials == nullptr || bodies.materials->plain()) {
+        return {combineFriction(frictionA, other.friction), combineElasticity(elasticityA, other.elasticity)};
+    }
+    return bodies.materials->mix(materialA, frictionA, elasticityA, other.material, other.friction, other.elasticity);
 }
 
 /// Passes of the position correction over all contacts. Like the impulse

@@ -187,7 +187,7 @@ SolverContact prepareOne(const BodySet& bodies, const Contact& contact, Real h, 
     }
     // μ and e of the pair, once per contact: the World's combine rules (products by default), or a
     // MaterialPair's. The fast path reads them from here too.
-    const ContactCoefficients material = contactCoefficients(bodies, a, other);
+    const ContactCoefficients material = contactCoefficients(bodies, contact, a, other);
     c.friction = material.friction;
 
     // The bounce, decided before any impulse (contact_solver.hpp): the

@@ -72,6 +72,11 @@ struct CompoundPart {
     Real height = 1;                    ///< Capsule segment or Cylinder length, m.
     Real mass = 0;                      ///< The part's share of the body's mass, kg.
     std::shared_ptr<const ConvexHull> hull;  ///< Shape=Hull: the part's hull, in the part's frame.
+    /// The part's `Material` (index in the scene's list), or 0xFFFFFFFF (kNoMaterial): none, its
+    /// contacts use the body's friction and elasticity. With one, they use the two below.
+    std::uint32_t material = 0xFFFFFFFFu;
+    Real friction = 0;                  ///< With a material: its Friction (the body's when it gives none).
+    Real elasticity = 0;                ///< With a material: its Elasticity (the body's when it gives none).
 };
 
 /// @brief The parts of a compound body and the sphere that holds them all.

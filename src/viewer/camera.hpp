@@ -105,13 +105,24 @@ struct OrbitCamera {
     }
 };
 
+/// @brief A camera that frames @p box: its centre is the target, and the distance fits the
+/// box's bounding sphere (at least 1 m of radius) into the vertical field of view with a margin.
+inline OrbitCamera cameraForBox(const Aabb& box) {
+    OrbitCamera camera;
+    const Real radius = std::max(Real(1), glm::length(box.max - box.min) / 2);
+    camera.target = (box.min + box.max) / Real(2);
+    camera.distance = Real(1.05) * radius / std::sin(camera.fovY / 2);
+    return camera;
+}
+
 /// @brief The camera `stepwise view` starts with: it frames every dynamic and
 /// kinematic body of @p world as it is now (planes are infinite and left out).
 ///
 /// The target is the centre of the bodies' joint bounding box; the distance
 /// fits that box's bounding sphere into the vertical field of view with a
-/// margin. An empty scene gets
-/// a view of the origin from 10 m.
+/// margin (cameraForBox()). An empty scene gets
+/// a view of the origin from 10 m. (A scene with spaces is framed by
+/// cameraForSpaces(), src/viewer/space_layout.hpp: every space, as drawn.)
 inline OrbitCamera cameraForScene(const World& world) {
     OrbitCamera camera;
     bool any = false;
@@ -125,10 +136,7 @@ inline OrbitCamera cameraForScene(const World& world) {
     for (const DynamicObject& b : world.dynamics()) add(shapeAabb(b));
     for (const KinematicsObject& b : world.kinematics()) add(shapeAabb(b));
     if (!any) return camera;
-    const Real radius = std::max(Real(1), glm::length(all.max - all.min) / 2);
-    camera.target = (all.min + all.max) / Real(2);
-    camera.distance = Real(1.05) * radius / std::sin(camera.fovY / 2);
-    return camera;
+    return cameraForBox(all);
 }
 
 }  // namespace stepwise::viewer

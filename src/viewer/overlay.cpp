@@ -61,13 +61,22 @@ std::vector<std::string> wrap(const std::vector<std::string>& lines, int maxChar
     return wrapped;
 }
 
-/// A translucent panel with lines of text; (x, y) is its top-left corner in
-/// pixels from the window's top-left.
-void panel(int x, int y, const std::vector<std::string>& lines, float r, float g, float b, float alpha = 0.6f) {
-    if (lines.empty()) return;
+/// Width in pixels of the panel that holds @p lines.
+int panelWidth(const std::vector<std::string>& lines) {
     std::size_t widest = 0;
     for (const std::string& line : lines) widest = std::max(widest, line.size());
-    const int w = static_cast<int>(widest) * kCharWidth + 2 * kMargin;
+    return static_cast<int>(widest) * kCharWidth + 2 * kMargin;
+}
+
+/// The text's colour: near-white (the screenshot test looks for it).
+constexpr Color kTextColor{0.95f, 0.95f, 0.95f};
+
+/// A translucent panel with lines of text; (x, y) is its top-left corner in
+/// pixels from the window's top-left. @p colours, when given, has one text colour per line.
+void panel(int x, int y, const std::vector<std::string>& lines, float r, float g, float b, float alpha = 0.6f,
+           const std::vector<Color>* colours = nullptr) {
+    if (lines.empty()) return;
+    const int w = panelWidth(lines);
     const int h = static_cast<int>(lines.size()) * kLineHeight + kMargin;
     glEnable(GL_BLEND);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
@@ -79,8 +88,9 @@ void panel(int x, int y, const std::vector<std::string>& lines, float r, float g
     glVertex2i(x, y + h);
     glEnd();
     glDisable(GL_BLEND);
-    glColor3f(0.95f, 0.95f, 0.95f);
     for (std::size_t i = 0; i < lines.size(); ++i) {
+        const Color& c = colours && i < colours->size() ? (*colours)[i] : kTextColor;
+        glColor3f(c.r, c.g, c.b);  // before glRasterPos: the position takes the current colour
         glRasterPos2i(x + kMargin, y + kMargin / 2 + static_cast<int>(i + 1) * kLineHeight - 4);
         glutBitmapString(kFont, reinterpret_cast<const unsigned char*>(lines[i].c_str()));
     }
@@ -121,14 +131,88 @@ std::vector<std::string> walkthroughLines(const Simulation& simulation) {
     return lines;
 }
 
+/// The heads-up display's last line: the drawings switched on, and what the mouse points at.
+std::string togglesLine(const OverlayState& state) {
+    std::string toggles = "H help";
+    if (state.draw.contacts) toggles += "   C contacts";
+    if (state.draw.velocities) toggles += "   V velocities";
+    if (state.draw.boundingBoxes) toggles += "   B bounding boxes";
+    if (!state.pointed.empty()) toggles += "   " + state.pointed;
+    return toggles;
+}
+
+/// Height above a space's swept box at which its name is drawn, m.
+constexpr Real kNameHeight = Real(0.3);
+
+/// The spaces' names, from @p top down (below the heads-up display): side by side, each above its
+/// space (or at @p top, in its space's column, when above would be under the display); overlaid, a
+/// legend at the right.
+void spaceNames(const Simulation& simulation, const OrbitCamera& camera, int width, int height, int top) {
+    const SpaceLayout& layout = simulation.layout();
+    const std::vector<Space>& spaces = simulation.spaces()->all();
+    if (layout.arrangement() == SpaceArrangement::Overlaid) {
+        std::vector<std::string> lines;
+        std::vector<Color> colours;
+        for (std::size_t k = 0; k < spaces.size(); ++k) {
+            lines.push_back(std::to_string(k + 1) + " " + spaces[k].name + (spaces[k].paused ? " (paused)" : ""));
+            colours.push_back(spaceColor(k));
+        }
+        panel(width - panelWidth(lines) - kMargin, top, lines, 0.0f, 0.0f, 0.0f, 0.6f, &colours);
+        return;
+    }
+    for (std::size_t k = 0; k < spaces.size(); ++k) {
+        const Aabb box = layout.bounds(k);
+        const Vec3 above = Vec3((box.min.x + box.max.x) / 2, box.max.y + kNameHeight, (box.min.z + box.max.z) / 2) +
+                         layout.offset(k);
+        const Vec3 pixel = camera.project(above, width, height);
+        if (!(pixel.z > 0 && pixel.z < 1)) continue;  // behind the eye
+        const std::vector<std::string> name{spaces[k].name + (spaces[k].paused ? " (paused)" : "")};
+        const std::vector<Color> colour{spaceColor(k)};
+        const int x = static_cast<int>(pixel.x) - panelWidth(name) / 2;
+        const int y = std::max(top, static_cast<int>(pixel.y) - kLineHeight - kMargin);
+        panel(x, y, name, 0.0f, 0.0f, 0.0f, 0.45f, &colour);
+    }
+}
+
 }  // namespace
 
 std::vector<std::string> helpLines() { return {std::begin(kViewerControls), std::end(kViewerControls)}; }
+
+std::string spaceLine(const Simulation& simulation, std::size_t k) {
+    const Space& space = simulation.spaces()->all()[k];
+    const World& world = space.world;
+    const WorldSettings& s = world.settings();
+    std::string line = std::to_string(k + 1) + " " + space.name +
+                       format(": t = %.3f s  step %.0f  h = %.4g s  ", double(world.time()),
+                              double(world.stepCount()), double(s.timeStep)) +
+                       toString(s.integrator) + ", " + toString(s.solver);
+    if (space.timeScale != 1) line += format("  x%.3g", double(space.timeScale));
+    line += "  bodies " + std::to_string(world.dynamics().size()) + "  contacts " +
+            std::to_string(world.contacts().size()) + format("  energy %.6g J", double(energyOf(world).total()));
+    if (space.paused) line += "  PAUSED";
+    return line;
+}
 
 std::vector<std::string> hudLines(const Simulation& simulation, const OverlayState& state) {
     const World& world = simulation.world();
     const FixedStepClock& clock = simulation.clock();
     std::vector<std::string> lines;
+
+    if (const Spaces* spaces = simulation.spaces()) {
+        // One shared clock; each space's own time, step and pace on its line (src/world/spaces.hpp).
+        std::string first = std::filesystem::path(simulation.scenePath()).filename().string() +
+                            format("  clock t = %.3f s (ticks of %.4g s)", double(spaces->clock()),
+                                   double(spaces->finestTick()));
+        first += clock.paused() ? "  PAUSED" : format("  running x%.3g", clock.scale());
+        if (state.framesPerSecond > 0) first += format("  %.0f fps", state.framesPerSecond);
+        lines.push_back(first);
+        lines.push_back(simulation.layout().arrangement() == SpaceArrangement::SideBySide
+                                ? "spaces side by side (L: overlaid)   1-9: pause / resume a space"
+                                : "spaces overlaid, each in its colour (L: side by side)   1-9: pause / resume a space");
+        for (std::size_t k = 0; k < spaces->all().size(); ++k) lines.push_back(spaceLine(simulation, k));
+        lines.push_back(togglesLine(state));
+        return lines;
+    }
 
     // "step N" is the last step taken: steps count from 1, so after N steps stepCount() is N and
     // t = N·h, and the S panel's "step N" (StageEvent::step) is the same step (architecture.md, "Step numbers").
@@ -165,16 +249,12 @@ std::vector<std::string> hudLines(const Simulation& simulation, const OverlaySta
     lines.push_back(timing);
     lines.push_back(skippedStagesLine(world.plan(), world.stageRecords(), world.stepCount() > 0));
 
-    std::string toggles = "H help";
-    if (state.draw.contacts) toggles += "   C contacts";
-    if (state.draw.velocities) toggles += "   V velocities";
-    if (state.draw.boundingBoxes) toggles += "   B bounding boxes";
-    if (!state.pointed.empty()) toggles += "   " + state.pointed;
-    lines.push_back(toggles);
+    lines.push_back(togglesLine(state));
     return lines;
 }
 
-void drawOverlay(const Simulation& simulation, int width, int height, const OverlayState& state) {
+void drawOverlay(const Simulation& simulation, const OrbitCamera& camera, int width, int height,
+                 const OverlayState& state) {
     glMatrixMode(GL_PROJECTION);
     glLoadIdentity();
     glOrtho(0, width, height, 0, -1, 1);  // y grows downwards, like window coordinates
@@ -188,8 +268,10 @@ void drawOverlay(const Simulation& simulation, int width, int height, const Over
     int y = kMargin;
     if (state.hud) {
         const std::vector<std::string> lines = wrap(hudLines(simulation, state), maxChars);
+        const int below = y + static_cast<int>(lines.size()) * kLineHeight + 2 * kMargin;
         panel(kMargin, y, lines, 0.0f, 0.0f, 0.0f, 0.55f);
-        y += static_cast<int>(lines.size()) * kLineHeight + 2 * kMargin;
+        if (simulation.hasSpaces()) spaceNames(simulation, camera, width, height, below);
+        y = below;
     }
 
     if (state.help) panel(kMargin, y, wrap(helpLines(), maxChars), 0.0f, 0.0f, 0.0f, 0.7f);

@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
+#include <utility>
 
 namespace stepwise::viewer {
 
@@ -462,40 +464,77 @@ void setUpLight() {
     glEnable(GL_NORMALIZE);  // boxes are drawn as scaled unit cubes: rescale their normals
 }
 
-}  // namespace
+/// How one World is drawn: where, in what colours, and whether the mouse is on it.
+struct WorldLook {
+    Vec3 offset{0, 0, 0};        ///< Where its origin is drawn (SpaceLayout::offset), m.
+    std::optional<Color> tint;   ///< Overlaid spaces: every body mixed with its space's colour.
+    /// Side by side: its planes are drawn across this range of x only (its own coordinates), m.
+    std::pair<Real, Real> band{-std::numeric_limits<Real>::infinity(), std::numeric_limits<Real>::infinity()};
+    bool hovered = false;        ///< DrawOptions::hovered is one of its bodies.
+    bool grabbed = false;        ///< The held body is one of its bodies.
+    bool walkthrough = false;    ///< It is the World of the stage walk-through (no spaces).
+};
 
-void drawScene(const Simulation& simulation, const OrbitCamera& camera, int width, int height,
-               const DrawOptions& options) {
-    const World& world = simulation.world();
-    const SceneView view = simulation.view();  // the live World, or the walk-through's snapshot
-    glViewport(0, 0, width, height);
-    glClearColor(kBackground[0], kBackground[1], kBackground[2], 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glShadeModel(GL_SMOOTH);
+/// Share of an overlaid body's colour that is its space's: enough to tell the spaces apart, with
+/// a trace of the body's own colour left.
+constexpr float kOverlaidTint = 0.65f;
 
-    glMatrixMode(GL_PROJECTION);
-    const Mat4 projection = camera.projectionMatrix(Real(width) / Real(height));
-    const glm::dmat4 p(projection);
-    glLoadMatrixd(&p[0][0]);
-    glMatrixMode(GL_MODELVIEW);
-    const glm::dmat4 viewMatrix(camera.viewMatrix());
-    glLoadMatrixd(&viewMatrix[0][0]);
-    setUpLight();
+Color tinted(const Color& own, const std::optional<Color>& tint) {
+    if (!tint) return own;
+    const float keep = 1.0f - kOverlaidTint;
+    return {keep * own.r + kOverlaidTint * tint->r, keep * own.g + kOverlaidTint * tint->g,
+            keep * own.b + kOverlaidTint * tint->b};
+}
 
-    for (const CollisionPlane& plane : world.planes()) drawPlane(plane, camera);
+/// Overlaid, the spaces' planes lie on one another (one floor each): a plane that an earlier
+/// space already has, at the same point with the same normal, is drawn once.
+bool drawnBefore(const Simulation& simulation, std::size_t space, const CollisionPlane& plane) {
+    for (std::size_t j = 0; j < space; ++j) {
+        for (const CollisionPlane& other : simulation.worldAt(j).planes()) {
+            if (other.position == plane.position && other.normal == plane.normal) return true;
+        }
+    }
+    return false;
+}
+
+/// Everything of World @p space, in the current model-view (already moved by look.offset).
+void drawWorld(const Simulation& simulation, std::size_t space, const OrbitCamera& camera, const DrawOptions& options,
+               const WorldLook& look) {
+    const World& world = simulation.worldAt(space);
+    const SceneView view = simulation.viewOf(space);  // the live World, or the walk-through's snapshot
+
+    // The planes' squares are centred under the camera's target, in this World's own coordinates.
+    OrbitCamera local = camera;
+    local.target -= look.offset;
+    const bool clip = std::isfinite(look.band.first) && std::isfinite(look.band.second);
+    if (clip) {  // keep x ≥ low and x ≤ high: a·x + d ≥ 0 for (a, 0, 0, d)
+        const GLdouble low[4] = {1.0, 0.0, 0.0, -double(look.band.first)};
+        const GLdouble high[4] = {-1.0, 0.0, 0.0, double(look.band.second)};
+        glClipPlane(GL_CLIP_PLANE0, low);
+        glClipPlane(GL_CLIP_PLANE1, high);
+        glEnable(GL_CLIP_PLANE0);
+        glEnable(GL_CLIP_PLANE1);
+    }
+    for (const CollisionPlane& plane : world.planes()) {
+        if (look.tint && drawnBefore(simulation, space, plane)) continue;
+        drawPlane(plane, local);
+    }
+    if (clip) {
+        glDisable(GL_CLIP_PLANE0);
+        glDisable(GL_CLIP_PLANE1);
+    }
     for (std::uint32_t i = 0; i < view.dynamics.size(); ++i) {
         const DynamicObject& b = view.dynamics[i];
-        drawBody(lookOf(b), b.position, b.orientation, options.islands ? islandColor(world, b, i) : b.color, false);
+        const Color own = options.islands ? islandColor(world, b, i) : b.color;
+        drawBody(lookOf(b), b.position, b.orientation, tinted(own, look.tint), false);
     }
     for (const KinematicsObject& b : view.kinematics) {
-        drawBody(lookOf(b), b.position, b.orientation, b.color, true);
+        drawBody(lookOf(b), b.position, b.orientation, tinted(b.color, look.tint), true);
     }
 
     glDisable(GL_LIGHTING);
     drawJoints(world, view.dynamics);
-    if (options.hovered && options.hovered->kind != BodyKind::Plane) {
+    if (look.hovered && options.hovered && options.hovered->kind != BodyKind::Plane) {
         glColor3f(1.0f, 0.95f, 0.2f);
         glLineWidth(3.0f);
         if (options.hovered->kind == BodyKind::Dynamic) {
@@ -512,7 +551,7 @@ void drawScene(const Simulation& simulation, const OrbitCamera& camera, int widt
     }
 
     // The stage walk-through: ghosts where the bodies were at the start of the step, and the shown stage's overlay.
-    const std::optional<std::size_t> shownIndex = simulation.shownStage();
+    const std::optional<std::size_t> shownIndex = look.walkthrough ? simulation.shownStage() : std::nullopt;
     const Stage stage = shownIndex ? simulation.walkthrough().snapshot(*shownIndex).event.stage : Stage::Count;  // Count: none
     if (shownIndex) {
         glColor3f(0.95f, 0.95f, 0.95f);
@@ -537,7 +576,7 @@ void drawScene(const Simulation& simulation, const OrbitCamera& camera, int widt
         shown(Stage::SolveConstraints) || shown(Stage::RelaxConstraints) || shown(Stage::Restitution)) {
         drawVelocities(view);
     }
-    if (const std::optional<Grab>& grab = simulation.grabbed()) {
+    if (const std::optional<Grab>& grab = simulation.grabbed(); grab && look.grabbed) {
         const Vec3 point = simulation.grabPoint();
         glColor3f(1.0f, 0.25f, 0.2f);
         glLineWidth(3.0f);
@@ -552,6 +591,50 @@ void drawScene(const Simulation& simulation, const OrbitCamera& camera, int widt
         glLineWidth(1.0f);
     }
     glEnable(GL_DEPTH_TEST);
+}
+
+}  // namespace
+
+void drawScene(const Simulation& simulation, const OrbitCamera& camera, int width, int height,
+               const DrawOptions& options) {
+    glViewport(0, 0, width, height);
+    glClearColor(kBackground[0], kBackground[1], kBackground[2], 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glShadeModel(GL_SMOOTH);
+
+    glMatrixMode(GL_PROJECTION);
+    const Mat4 projection = camera.projectionMatrix(Real(width) / Real(height));
+    const glm::dmat4 p(projection);
+    glLoadMatrixd(&p[0][0]);
+    glMatrixMode(GL_MODELVIEW);
+    const glm::dmat4 viewMatrix(camera.viewMatrix());
+    glLoadMatrixd(&viewMatrix[0][0]);
+    setUpLight();
+
+    if (!simulation.hasSpaces()) {
+        WorldLook look;
+        look.hovered = true;
+        look.grabbed = true;
+        look.walkthrough = true;
+        drawWorld(simulation, 0, camera, options, look);
+        return;
+    }
+    const SpaceLayout& layout = simulation.layout();
+    const bool overlaid = layout.arrangement() == SpaceArrangement::Overlaid;
+    for (std::size_t k = 0; k < simulation.worldCount(); ++k) {
+        WorldLook look;
+        look.offset = layout.offset(k);
+        if (overlaid) look.tint = spaceColor(k);
+        look.band = layout.band(k);
+        look.hovered = options.hoveredSpace == k;
+        look.grabbed = simulation.grabbedSpace() == k;
+        glPushMatrix();
+        glTranslated(double(look.offset.x), double(look.offset.y), double(look.offset.z));
+        drawWorld(simulation, k, camera, options, look);
+        glPopMatrix();
+    }
 }
 
 }  // namespace stepwise::viewer

@@ -5,6 +5,7 @@
 /// can never change what is simulated.
 #pragma once
 
+#include <cstddef>
 #include <optional>
 
 #include "viewer/camera.hpp"
@@ -19,6 +20,7 @@ struct DrawOptions {
     bool boundingBoxes = false;  ///< B: bounding boxes; those in a candidate pair in yellow.
     bool islands = false;        ///< I: awake bodies coloured by island, sleeping ones in kSleepingColor.
     std::optional<BodyRef> hovered;  ///< Body under the mouse or held: drawn with a yellow outline.
+    std::size_t hoveredSpace = 0;    ///< The space of `hovered` (0 without spaces).
 };
 
 /// @brief Colour of a sleeping body when islands are shown (I): a pale blue-grey, "switched off".
@@ -43,6 +45,13 @@ inline constexpr float kBackground[3] = {0.16f, 0.18f, 0.22f};
 /// impulse at resolve-impulses and restitution; velocity vectors after the
 /// stages that change velocities), and the bodies' poses at the start of the
 /// step are drawn as white ghosts.
+///
+/// A scene with spaces draws every space, each moved by its
+/// SpaceLayout::offset(): side by side, each space's planes only across its
+/// own band of x (two OpenGL clip planes), so the floors do not cover one
+/// another; overlaid, every body tinted with spaceColor() of its space, and
+/// a plane that an earlier space has at the same place drawn once. The names
+/// above the spaces and the legend are text: drawOverlay() draws them.
 void drawScene(const Simulation& simulation, const OrbitCamera& camera, int width, int height,
                const DrawOptions& options);
 

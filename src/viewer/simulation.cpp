@@ -1,10 +1,11 @@
 /// @file simulation.cpp
-/// @brief The viewer's World: loading and reloading, fixed steps, the S key's recorded steps, picking forces.
+/// @brief The viewer's World or Spaces: loading and reloading, fixed steps, the S key's recorded steps, picking forces.
 #include "viewer/simulation.hpp"
 
 #include "dynamics/islands.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -18,24 +19,69 @@ namespace stepwise::viewer {
 
 namespace {
 
-std::unique_ptr<World> loadWorld(const std::string& path) {
-    Scene scene = loadSceneFile(path);
-    for (const std::string& warning : scene.warnings) std::fprintf(stderr, "%s\n", warning.c_str());
-    return std::make_unique<World>(std::move(scene));
+/// Sweeps each space's box over the scene's Duration (SpaceLayout): a copy of the scene runs
+/// ahead, every space running whatever its Paused field says (it may be resumed), for at
+/// most kLayoutLookaheadSeconds of wall-clock time. A simulation error ends the sweep early:
+/// the live run meets it too, and reports it then.
+void sweepAhead(Scene scene, SpaceLayout& layout) {
+    const Real duration = scene.settings.duration;
+    Spaces ahead(std::move(scene));
+    for (Space& space : ahead.all()) space.paused = false;
+    const Real tick = ahead.finestTick();
+    const auto ticks = static_cast<std::uint64_t>(std::llround(duration / tick));
+    const auto start = std::chrono::steady_clock::now();
+    const auto grow = [&](std::size_t k) { layout.grow(k, ahead.all()[k].world); };
+    try {
+        for (std::uint64_t i = 0; i < ticks; ++i) {
+            ahead.advance(tick, grow);
+            if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() >
+                kLayoutLookaheadSeconds) {
+                break;
+            }
+        }
+    } catch (const SimulationError&) {
+    }
 }
 
 }  // namespace
 
 std::string bodyName(const World& world, const BodyRef& ref) { return objectName(world, ref); }
 
-Simulation::Simulation(std::string scenePath)
-    : path_(std::move(scenePath)), world_(loadWorld(path_)), clock_(double(world_->settings().timeStep)),
-      loads_(1) {}
+Simulation::Loaded Simulation::load(const std::string& path) {
+    Scene scene = loadSceneFile(path);
+    for (const std::string& warning : scene.warnings) std::fprintf(stderr, "%s\n", warning.c_str());
+    Loaded loaded;
+    if (scene.spaces.empty()) {
+        loaded.world = std::make_unique<World>(std::move(scene));
+        return loaded;
+    }
+    Scene copy = scene;
+    loaded.spaces = std::make_unique<Spaces>(std::move(scene));
+    loaded.layout.reset(loaded.spaces->all().size());
+    for (std::size_t k = 0; k < loaded.spaces->all().size(); ++k) loaded.layout.grow(k, loaded.spaces->all()[k].world);
+    sweepAhead(std::move(copy), loaded.layout);
+    return loaded;
+}
+
+void Simulation::adopt(Loaded loaded) {
+    const SpaceArrangement arrangement = layout_.arrangement();
+    world_ = std::move(loaded.world);
+    spaces_ = std::move(loaded.spaces);
+    layout_ = std::move(loaded.layout);
+    layout_.arrange(arrangement);
+    FixedStepClock fresh(spaces_ ? double(spaces_->finestTick()) : double(world_->settings().timeStep));
+    fresh.setPaused(clock_.paused());
+    fresh.setScale(clock_.scale());
+    clock_ = fresh;
+}
+
+Simulation::Simulation(std::string scenePath) : path_(std::move(scenePath)), clock_(1), loads_(1) {
+    adopt(load(path_));
+}
 
 bool Simulation::reload() {
     try {
-        std::unique_ptr<World> fresh = loadWorld(path_);
-        world_ = std::move(fresh);
+        adopt(load(path_));
     } catch (const ConfigError& e) {
         error_ = "R: " + path_ + " was not reloaded; the last good scene stays:";
         for (const ConfigDiagnostic& d : e.diagnostics()) error_ += "\n" + d.message();
@@ -46,10 +92,6 @@ bool Simulation::reload() {
         std::fprintf(stderr, "%s\n", error_.c_str());
         return false;
     }
-    FixedStepClock fresh(double(world_->settings().timeStep));
-    fresh.setPaused(clock_.paused());
-    fresh.setScale(clock_.scale());
-    clock_ = fresh;
     grab_.reset();
     shownStage_.reset();
     walkthrough_.clear();
@@ -58,19 +100,21 @@ bool Simulation::reload() {
     return true;
 }
 
-void Simulation::takeStep() {
-    if (grab_) {
-        // The held point's force, as an impulse F·h given just before the
-        // step: the velocity change a force F makes over one step.
-        DynamicObject& body = world_->dynamics()[grab_->body];
-        if (log_) {
-            log_->line("%s %s step %llu at %s force %s", grab_->pull ? "pull" : "push", body.name.c_str(),
-                       static_cast<unsigned long long>(world_->stepCount() + 1),
-                       EventLog::vec(grabPoint()).c_str(), EventLog::vec(grabForce()).c_str());
-        }
-        wakeIsland(world_->dynamics(), grab_->body);  // a sleeping body must feel the push
-        applyGrab(body, *grab_, world_->settings().gravity, world_->settings().timeStep);
+void Simulation::pushHeld(World& world) {
+    // The held point's force, as an impulse F·h given just before the
+    // step: the velocity change a force F makes over one step.
+    DynamicObject& body = world.dynamics()[grab_->body];
+    if (log_) {
+        log_->line("%s %s step %llu at %s force %s", grab_->pull ? "pull" : "push", body.name.c_str(),
+                   static_cast<unsigned long long>(world.stepCount() + 1), EventLog::vec(grabPoint()).c_str(),
+                   EventLog::vec(grabForce()).c_str());
     }
+    wakeIsland(world.dynamics(), grab_->body);  // a sleeping body must feel the push
+    applyGrab(body, *grab_, world.settings().gravity, world.settings().timeStep);
+}
+
+void Simulation::takeStep() {
+    if (grab_) pushHeld(*world_);
     try {
         world_->step();
     } catch (const SimulationError& e) {
@@ -81,30 +125,79 @@ void Simulation::takeStep() {
     }
 }
 
+std::uint64_t Simulation::takeTick() {
+    std::uint64_t steps = 0;
+    // The held body's push before each step of its space; each step's poses widen its swept box.
+    const auto before = [this](std::size_t k) {
+        if (grab_ && k == grabSpace_) pushHeld(spaces_->all()[k].world);
+    };
+    const auto after = [this, &steps](std::size_t k) {
+        layout_.grow(k, spaces_->all()[k].world);
+        ++steps;
+    };
+    try {
+        spaces_->advance(spaces_->finestTick(), after, before);
+    } catch (const SimulationError& e) {
+        clock_.setPaused(true);
+        error_ = std::string("simulation failed (paused; R reloads the scene):\n") + e.what();
+        std::fprintf(stderr, "stepwise view: %s\n", error_.c_str());
+        throw;
+    }
+    return steps;
+}
+
 std::uint64_t Simulation::advanceFrame(double wallSeconds) {
     const std::uint64_t steps = clock_.advance(wallSeconds);
     if (steps > 0) shownStage_.reset();
     std::uint64_t taken = 0;
     try {
-        for (; taken < steps; ++taken) takeStep();
+        for (; taken < steps; ++taken) {
+            if (spaces_) takeTick();
+            else takeStep();
+        }
     } catch (const SimulationError&) {
-        // takeStep() paused the clock and keeps the message for the screen.
+        // takeStep() and takeTick() paused the clock and keep the message for the screen.
     }
     return taken;
 }
 
-void Simulation::stepOnce() {
+bool Simulation::stepOnce() {
     if (shownStage_) {  // the World is at the end of the walk-through's step already
         shownStage_.reset();
-        return;
+        return true;
     }
     try {
-        takeStep();
+        if (!spaces_) {
+            takeStep();
+            return true;
+        }
+        // A running space of step h and time scale s steps at least once in every h/s of the
+        // clock: that many ticks, and one for the rounding, are the most N has to wait.
+        std::uint64_t limit = 0;
+        const Real tick = spaces_->finestTick();
+        for (const Space& space : spaces_->all()) {
+            if (space.paused) continue;
+            const Real ticks = space.world.settings().timeStep / space.timeScale / tick;
+            limit = std::max(limit, static_cast<std::uint64_t>(std::ceil(ticks)) + 1);
+        }
+        for (std::uint64_t i = 0; i < limit; ++i) {
+            if (takeTick() > 0) return true;
+        }
     } catch (const SimulationError&) {
+        return true;  // it stepped, and failed: error() says why
     }
+    return false;
 }
 
 void Simulation::stepTo(double seconds) {
+    if (spaces_) {
+        // As `stepwise run --duration` counts its ticks: llround(seconds / tick) in all.
+        const double tick = double(spaces_->finestTick());
+        const auto target = static_cast<std::uint64_t>(std::llround(seconds / tick));
+        auto taken = static_cast<std::uint64_t>(std::llround(double(spaces_->clock()) / tick));
+        for (; taken < target; ++taken) takeTick();  // a SimulationError reaches the caller
+        return;
+    }
     const auto target = static_cast<std::uint64_t>(std::llround(seconds / double(world_->settings().timeStep)));
     while (world_->stepCount() < target) takeStep();  // a SimulationError reaches the caller
 }
@@ -124,6 +217,7 @@ bool Simulation::recordStep() {
 }
 
 void Simulation::stepStage(bool skipMiddleSubsteps) {
+    if (spaces_) return;  // kNoWalkthroughWithSpaces
     clock_.setPaused(true);
     if (shownStage_) {
         for (std::size_t k = *shownStage_ + 1; k < walkthrough_.size(); ++k) {
@@ -139,6 +233,7 @@ void Simulation::stepStage(bool skipMiddleSubsteps) {
 }
 
 bool Simulation::showStageRun(std::size_t k) {
+    if (spaces_) return false;  // kNoWalkthroughWithSpaces
     clock_.setPaused(true);
     if (!recordStep()) return false;
     const bool exists = k < walkthrough_.size();
@@ -147,8 +242,10 @@ bool Simulation::showStageRun(std::size_t k) {
     return exists;
 }
 
-void Simulation::grab(std::uint32_t body, const Vec3& point, const Vec3& rayDirection, bool pull) {
-    grab_ = grabAt(world_->dynamics()[body], body, point, rayDirection, pull);
+void Simulation::grab(std::uint32_t body, const Vec3& point, const Vec3& rayDirection, bool pull, std::size_t space) {
+    World& world = spaces_ ? spaces_->all().at(space).world : *world_;
+    grabSpace_ = spaces_ ? space : 0;
+    grab_ = grabAt(world.dynamics()[body], body, point, rayDirection, pull);
 }
 
 void Simulation::aimGrab(const Vec3& rayDirection) {
@@ -157,7 +254,7 @@ void Simulation::aimGrab(const Vec3& rayDirection) {
 
 void Simulation::release() {
     if (grab_ && log_) {
-        const DynamicObject& b = world_->dynamics()[grab_->body];
+        const DynamicObject& b = worldAt(grabSpace_).dynamics()[grab_->body];
         log_->line("release %s v %s w %s", b.name.c_str(), EventLog::vec(b.velocity).c_str(),
                    EventLog::vec(b.angularVelocity).c_str());
     }
@@ -165,19 +262,32 @@ void Simulation::release() {
 }
 
 Vec3 Simulation::grabPoint() const {
-    return grab_ ? viewer::grabPoint(world_->dynamics()[grab_->body], *grab_) : Vec3(0);
+    return grab_ ? viewer::grabPoint(worldAt(grabSpace_).dynamics()[grab_->body], *grab_) : Vec3(0);
 }
 
 Vec3 Simulation::grabForce() const {
-    return grab_ ? viewer::grabForce(world_->dynamics()[grab_->body], *grab_, world_->settings().gravity) : Vec3(0);
+    if (!grab_) return Vec3(0);
+    const World& world = worldAt(grabSpace_);
+    return viewer::grabForce(world.dynamics()[grab_->body], *grab_, world.settings().gravity);
 }
 
 void Simulation::dumpState(const std::string& path) const {
     std::FILE* out = std::fopen(path.c_str(), "w");
     if (!out) throw std::runtime_error("cannot write '" + path + "'");
-    writeTrajectoryHeader(out);
-    writeTrajectoryRows(out, *world_);
+    if (spaces_) {
+        writeTrajectoryHeader(out, true);
+        for (const Space& space : spaces_->all()) writeTrajectoryRows(out, space.world, space.name);
+    } else {
+        writeTrajectoryHeader(out);
+        writeTrajectoryRows(out, *world_);
+    }
     if (std::fclose(out) != 0) throw std::runtime_error("cannot write '" + path + "'");
+}
+
+bool Simulation::toggleSpacePause(std::size_t k) {
+    if (!spaces_ || k >= spaces_->all().size()) return false;
+    spaces_->togglePause(k);
+    return true;
 }
 
 }  // namespace stepwise::viewer

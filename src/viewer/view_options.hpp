@@ -44,6 +44,8 @@ inline constexpr const char* kViewerControls[] = {
         "  F       frame the scene again (reset the camera)",
         "  O       hide / show the on-screen text",
         "  P       save a picture of the window (stepwise-SCENE-stepN.png, current directory)",
+        "  L       a scene with spaces: side by side / overlaid, each space in its own colour",
+        "  1 - 9   a scene with spaces: pause / resume space 1 to 9 (the others run on)",
         "  Esc, Q  quit",
         "Kinematic bodies wear diagonal stripes; joints are drawn as lines to their anchors.",
 };

@@ -86,26 +86,37 @@ Ray mouseRay(int x, int y) {
     return app->camera.rayThroughPixel(Real(x) + Real(0.5), Real(y) + Real(0.5), app->width, app->height);
 }
 
-/// The body under pixel (x, y), or nothing.
-std::optional<RayHit> pickAt(int x, int y) { return pickBody(app->simulation->world(), mouseRay(x, y)); }
+/// The body under pixel (x, y), in whichever space, or nothing.
+std::optional<SpaceHit> pickAt(int x, int y) { return pickInSimulation(*app->simulation, mouseRay(x, y)); }
+
+/// The camera that frames the scene in a @p width × @p height window: its bodies, or every space as drawn
+/// (F, L, and at the start).
+OrbitCamera frameScene(const Simulation& sim, int width, int height) {
+    return sim.hasSpaces() ? cameraForSpaces(sim.layout(), Real(width) / Real(height)) : cameraForScene(sim.world());
+}
 
 /// The name shown for what the mouse points at or holds.
-void describePointer(const std::optional<RayHit>& hit) {
-    const World& world = app->simulation->world();
-    if (const std::optional<Grab>& grab = app->simulation->grabbed()) {
+void describePointer(const std::optional<SpaceHit>& hit) {
+    const Simulation& sim = *app->simulation;
+    if (const std::optional<Grab>& grab = sim.grabbed()) {
+        const World& world = sim.worldAt(sim.grabbedSpace());
         app->overlay.pointed = std::string(grab->pull ? "pulling " : "pushing ") + world.dynamics()[grab->body].name;
         app->overlay.draw.hovered = BodyRef{BodyKind::Dynamic, grab->body};
-    } else if (hit && hit->body.kind != BodyKind::Plane) {
-        const BodyRef ref = hit->body;
-        app->overlay.pointed = "pointing at " + bodyName(world, ref) +
+        app->overlay.draw.hoveredSpace = sim.grabbedSpace();
+    } else if (hit && hit->hit.body.kind != BodyKind::Plane) {
+        const BodyRef ref = hit->hit.body;
+        app->overlay.pointed = "pointing at " + bodyName(sim.worldAt(hit->space), ref) +
+                               (sim.hasSpaces() ? " in space " + sim.spaces()->all()[hit->space].name : "") +
                                (ref.kind == BodyKind::Kinematic ? " (kinematic: cannot be pushed)" : "");
         app->overlay.draw.hovered = ref;
+        app->overlay.draw.hoveredSpace = hit->space;
     } else {
         app->overlay.pointed.clear();
         app->overlay.draw.hovered.reset();
     }
     const std::string highlighted =
-        app->overlay.draw.hovered ? bodyName(world, *app->overlay.draw.hovered) : std::string("none");
+        app->overlay.draw.hovered ? bodyName(sim.worldAt(app->overlay.draw.hoveredSpace), *app->overlay.draw.hovered)
+                                  : std::string("none");
     if (highlighted != app->highlighted) {
         app->highlighted = highlighted;
         app->log.line("highlight %s", highlighted.c_str());
@@ -131,10 +142,24 @@ void pressKey(unsigned char key) {
         case 'n':
         case 'N':
             clock.setPaused(true);
-            sim.stepOnce();
+            if (!sim.stepOnce()) notify("N: every space is paused (1-9 resume one)");
             break;
-        case 's': sim.stepStage(); break;
-        case 'S': sim.stepStage(true); break;  // Shift+S: past the middle substeps
+        case 's':
+        case 'S':
+            if (sim.hasSpaces()) notify(std::string("S: ") + kNoWalkthroughWithSpaces);
+            else sim.stepStage(key == 'S');  // Shift+S: past the middle substeps
+            break;
+        case 'l':
+        case 'L':
+            if (!sim.hasSpaces()) {
+                notify("L: this scene has no spaces (Space records) to arrange");
+                break;
+            }
+            sim.layout().arrange(sim.layout().arrangement() == SpaceArrangement::SideBySide
+                                         ? SpaceArrangement::Overlaid
+                                         : SpaceArrangement::SideBySide);
+            app->camera = frameScene(sim, app->width, app->height);  // the heads-up display names the arrangement
+            break;
         case '+':
         case '=':
             clock.setScale(clock.scale() * 2);
@@ -163,21 +188,30 @@ void pressKey(unsigned char key) {
         case 'h':
         case 'H': app->overlay.help = !app->overlay.help; break;
         case 'f':
-        case 'F': app->camera = cameraForScene(sim.world()); break;
+        case 'F': app->camera = frameScene(sim, app->width, app->height); break;
         case 'o':
         case 'O': app->overlay.hud = !app->overlay.hud; break;
         case 'p':
         case 'P':
             if (!app->screenshot) savePicture();  // a --screenshot is a picture already
             break;
-        default: break;
+        default:
+            // 1-9: a space's pause, which its line of the heads-up display and its name show. A key
+            // past the last space says so. A scene without spaces has no use for them: they do nothing.
+            if (const std::optional<std::size_t> k = spaceForKey(key); k && sim.hasSpaces()) {
+                if (!sim.toggleSpacePause(*k)) {
+                    notify(std::string(1, char(key)) + ": there is no space " + std::string(1, char(key)) +
+                           " (this scene has " + std::to_string(sim.worldCount()) + ")");
+                }
+            }
+            break;
     }
 }
 
 void drawFrame(double framesPerSecond) {
     app->overlay.framesPerSecond = framesPerSecond;
     drawScene(*app->simulation, app->camera, app->width, app->height, app->overlay.draw);
-    drawOverlay(*app->simulation, app->width, app->height, app->overlay);
+    drawOverlay(*app->simulation, app->camera, app->width, app->height, app->overlay);
 }
 
 /// Draws a frame into the back buffer and writes it to the PNG file @p path,
@@ -205,15 +239,20 @@ void writeFrame(const std::string& path, double framesPerSecond) {
 /// The P key: a picture of the window as it is now, in the current directory,
 /// named after the scene and the step (`stepwise-NAME-stepN.png`, then
 /// `stepwise-NAME-stepN-2.png`, … so that no earlier picture is overwritten).
+/// With spaces, N counts the ticks of the shared clock.
 void savePicture() {
     const Simulation& sim = *app->simulation;
-    const std::string stem = "stepwise-" + std::filesystem::path(sim.scenePath()).stem().string() + "-step" +
-                             std::to_string(sim.world().stepCount());
+    const std::uint64_t step = sim.hasSpaces() ? static_cast<std::uint64_t>(std::llround(
+                                                       double(sim.spaces()->clock() / sim.spaces()->finestTick())))
+                                               : sim.world().stepCount();
+    const std::string stem =
+        "stepwise-" + std::filesystem::path(sim.scenePath()).stem().string() + "-step" + std::to_string(step);
     std::string path = stem + ".png";
     for (int copy = 2; std::filesystem::exists(path); ++copy) path = stem + "-" + std::to_string(copy) + ".png";
     try {
         writeFrame(path, app->overlay.framesPerSecond);
-        std::printf("Picture of the window at t = %.6g s written to %s\n", double(sim.world().time()), path.c_str());
+        const double time = sim.hasSpaces() ? double(sim.spaces()->clock()) : double(sim.world().time());
+        std::printf("Picture of the window at t = %.6g s written to %s\n", time, path.c_str());
         std::fflush(stdout);
         app->log.line("picture %s", path.c_str());
         notify("P: saved " + path);
@@ -275,15 +314,16 @@ std::optional<MouseButton> mouseButton(int button) {
     }
 }
 
-/// A "pick" line of the event log for a press at pixel (x, y).
-void logPick(const std::optional<RayHit>& hit, int x, int y) {
+/// A "pick" line of the event log for a press at pixel (x, y); the hit point in its space's coordinates.
+void logPick(const std::optional<SpaceHit>& hit, int x, int y) {
     if (!hit) {
         app->log.line("pick none pixel %d %d", x, y);
         return;
     }
     static constexpr const char* kKindNames[] = {"dynamic", "kinematic", "plane"};
-    app->log.line("pick %s pixel %d %d hit %s %s", bodyName(app->simulation->world(), hit->body).c_str(), x, y,
-                  EventLog::vec(hit->point).c_str(), kKindNames[static_cast<int>(hit->body.kind)]);
+    app->log.line("pick %s pixel %d %d hit %s %s",
+                  bodyName(app->simulation->worldAt(hit->space), hit->hit.body).c_str(), x, y,
+                  EventLog::vec(hit->hit.point).c_str(), kKindNames[static_cast<int>(hit->hit.body.kind)]);
 }
 
 void onMouse(int button, int state, int x, int y) {
@@ -304,11 +344,12 @@ void onMouse(int button, int state, int x, int y) {
     }
     const int glutModifiers = glutGetModifiers();
     const Modifiers modifiers{(glutModifiers & GLUT_ACTIVE_SHIFT) != 0, (glutModifiers & GLUT_ACTIVE_CTRL) != 0};
-    const std::optional<RayHit> hit = pickAt(x, y);
-    app->drag = dragForPress(*which, modifiers, hit && hit->body.kind == BodyKind::Dynamic);
+    const std::optional<SpaceHit> hit = pickAt(x, y);
+    app->drag = dragForPress(*which, modifiers, hit && hit->hit.body.kind == BodyKind::Dynamic);
     logPick(hit, x, y);
     if (app->drag == Drag::Grab) {
-        app->simulation->grab(hit->body.index, hit->point, mouseRay(x, y).direction, *which == MouseButton::Right);
+        app->simulation->grab(hit->hit.body.index, hit->hit.point, mouseRay(x, y).direction,
+                              *which == MouseButton::Right, hit->space);
         if (app->simulation->clock().paused()) notify("paused: Space resumes (or N steps), then the push acts");
     }
     describePointer(hit);
@@ -350,10 +391,17 @@ void onScreenshotDisplay() {
     } else {
         try {
             writeFrame(app->screenshotPath, 0);
-            std::printf("Screenshot of %s at t = %.6g s (step %llu), %dx%d, written to %s\n",
-                        app->simulation->scenePath().c_str(), double(app->simulation->world().time()),
-                        static_cast<unsigned long long>(app->simulation->world().stepCount()), width, height,
-                        app->screenshotPath.c_str());
+            const Simulation& sim = *app->simulation;
+            if (const Spaces* spaces = sim.spaces()) {
+                std::printf("Screenshot of %s at t = %.6g s on the spaces' clock (%zu spaces), %dx%d, written to %s\n",
+                            sim.scenePath().c_str(), double(spaces->clock()), spaces->all().size(), width, height,
+                            app->screenshotPath.c_str());
+            } else {
+                std::printf("Screenshot of %s at t = %.6g s (step %llu), %dx%d, written to %s\n",
+                            sim.scenePath().c_str(), double(sim.world().time()),
+                            static_cast<unsigned long long>(sim.world().stepCount()), width, height,
+                            app->screenshotPath.c_str());
+            }
             if (!app->dumpStatePath.empty()) {
                 app->simulation->dumpState(app->dumpStatePath);
                 std::printf("State written to %s\n", app->dumpStatePath.c_str());
@@ -438,7 +486,7 @@ int runViewer(const ViewOptions& options) {
         std::fprintf(stderr, "stepwise: %s: %s\n", options.scenePath.c_str(), error.what());
         return kExitUsageError;
     }
-    state.camera = cameraForScene(state.simulation->world());
+    state.camera = frameScene(*state.simulation, state.width, state.height);
 
     auto check = std::make_unique<DisplayCheck>();
     if (const std::optional<std::string>& problem = check->problem()) {
@@ -465,6 +513,11 @@ int runViewer(const ViewOptions& options) {
             return kExitSimulationError;
         }
         for (char key : options.keys) pressKey(static_cast<unsigned char>(key));
+        if (options.stage && state.simulation->hasSpaces()) {
+            std::fprintf(stderr, "stepwise view: --stage %zu: %s\n", *options.stage, kNoWalkthroughWithSpaces);
+            app = nullptr;
+            return kExitUsageError;
+        }
         if (options.stage && !state.simulation->showStageRun(*options.stage - 1)) {
             std::fprintf(stderr, "stepwise view: --stage %zu: the step has %zu stage runs\n", *options.stage,
                          state.simulation->walkthrough().size());

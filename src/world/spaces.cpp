@@ -97,7 +97,8 @@ Real Spaces::finestTick() const {
     return tick;
 }
 
-void Spaces::advance(Real seconds, const std::function<void(std::size_t)>& afterStep) {
+void Spaces::advance(Real seconds, const std::function<void(std::size_t)>& afterStep,
+                     const std::function<void(std::size_t)>& beforeStep) {
     clock_ += seconds;
     for (std::size_t k = 0; k < spaces_.size(); ++k) {
         Space& space = spaces_[k];
@@ -109,6 +110,7 @@ void Spaces::advance(Real seconds, const std::function<void(std::size_t)>& after
         const Real h = space.world.settings().timeStep;
         const auto owed = static_cast<std::uint64_t>(std::floor(space.timeScale * space.runTime / h + Real(1e-9)));
         while (space.world.stepCount() < owed) {
+            if (beforeStep) beforeStep(k);
             space.world.step();
             if (afterStep) afterStep(k);
         }

@@ -59,7 +59,10 @@ public:
 
     /// @brief Advances the shared clock by @p seconds: each running space takes every step that fits.
     /// @param afterStep called with the space's index after each step any space takes (may be empty)
-    void advance(Real seconds, const std::function<void(std::size_t)>& afterStep = {});
+    /// @param beforeStep called with the space's index just before each such step (may be empty):
+    ///        the viewer gives a held body its push there, as it does before World::step()
+    void advance(Real seconds, const std::function<void(std::size_t)>& afterStep = {},
+                 const std::function<void(std::size_t)>& beforeStep = {});
 
     /// @brief The clock's smallest useful tick: the shortest h/TimeScale among the spaces, s.
     Real finestTick() const;

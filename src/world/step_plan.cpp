@@ -2,6 +2,7 @@
 /// @brief The rules of the step plan (step_plan.hpp): one small function per decision.
 #include "world/step_plan.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <string>
 
@@ -77,19 +78,28 @@ PlanDecision clippingOf(const PlanInputs& in) {
     return run("runs: touching faces and edges (boxes, hulls, cylinders, capsules, meshes) are clipped for their points");
 }
 
+/// Has a surface of @p body a μ other than 0: its own, or a compound's part with a Material of its own?
+template <class Body>
+bool hasRoughSurface(const Body& body) {
+    if (body.friction != 0) return true;
+    if (!body.compound) return false;
+    return std::any_of(body.compound->parts.begin(), body.compound->parts.end(),
+                       [](const CompoundPart& part) { return part.material != kNoMaterial && part.friction != 0; });
+}
+
 /// Can the combined μ be non-zero for some pair that can touch?
 bool anyFriction(const PlanInputs& in) {
     // A MaterialPair may give any pair friction: assume one can touch.
     if (in.materials != nullptr && in.materials->hasPairs()) return true;
     std::size_t rough = 0;  // dynamic bodies with μ ≠ 0
-    for (const DynamicObject& body : in.dynamics) rough += body.friction != 0 ? 1 : 0;
+    for (const DynamicObject& body : in.dynamics) rough += hasRoughSurface(body) ? 1 : 0;
     // Max and Average give μ > 0 when either side has some: a frictionless ball on a rough floor.
     const bool eitherSide =
         in.settings.frictionCombine == CombineRule::Max || in.settings.frictionCombine == CombineRule::Average;
     if (eitherSide && rough > 0) return true;
     if (eitherSide && !in.dynamics.empty()) {
         for (const KinematicsObject& body : in.kinematics) {
-            if (body.friction != 0) return true;
+            if (hasRoughSurface(body)) return true;
         }
         for (const CollisionPlane& plane : in.planes) {
             if (plane.friction != 0) return true;
@@ -99,7 +109,7 @@ bool anyFriction(const PlanInputs& in) {
     if (rough == 0) return false;
     if (rough >= 2) return true;  // two rough dynamic bodies can touch each other
     for (const KinematicsObject& body : in.kinematics) {
-        if (body.friction != 0) return true;
+        if (hasRoughSurface(body)) return true;
     }
     for (const CollisionPlane& plane : in.planes) {
         if (plane.friction != 0) return true;

@@ -98,7 +98,7 @@ ContactConstraint prepare(const BodySet& bodies, const Contact& contact, Real h,
     c.tangentMass[0] = c.tangentMass[1] =
         frictionPairMass(inverseEffectiveMass(c, c.tangent[0]), inverseEffectiveMass(c, c.tangent[1]));
     // μ and e of the pair: the World's combine rules (products by default), or a MaterialPair's.
-    const ContactCoefficients material = contactCoefficients(bodies, a, other);
+    const ContactCoefficients material = contactCoefficients(bodies, contact, a, other);
     c.friction = material.friction;
 
     // The bounce is decided once, from the velocities before any impulse:
