@@ -1309,7 +1309,7 @@ private:
             sink_.report(line.number, values.valueColumn("Resolution"), "Resolution",
                          "a whole number from " + std::to_string(least) + " to " + std::to_string(most) + " for a " +
                              (sphere ? "Sphere" : "Box"),
-                         values.asWritten("Resolution"),
+                         formatNumber(resolution),
                          sphere ? "the icosahedron's triangles are cut in 4 that many times: 2 gives 162 nodes, 3 gives "
                                   "642, 5 gives 10242"
                                 : "the cells along each edge of the cube: 4 gives 98 nodes, 8 gives 386, 32 gives 6146");
@@ -1340,12 +1340,14 @@ private:
             if (settings.integrator == IntegratorKind::ExplicitEuler && growthOverRun <= kTolerableGrowth) continue;
             char text[512];
             std::snprintf(text, sizeof text,
-                          "the step is past its springs' stability limit for %s: h*w = %.4g s * %.4g rad/s = %.3g > 2 "
+                          "the step is past its springs' stability limit for %s: h*w = %.4g s * %.4g rad/s = %.3g > %.3g "
                           "(w = sqrt(k_eff/m_node), k_eff = 2 x the stiffness at its busiest node = %.4g N/m, m_node = "
-                          "%.4g kg); its swing can grow x%.3g every step; use a step below %.4g s (TimeStep, or more "
-                          "Substeps), a lower Stiffness, or a lower Resolution",
+                          "%.4g kg%s); its swing can grow x%.3g every step; use a step below %.4g s (TimeStep, or more "
+                          "Substeps), a lower Stiffness or Damping, or a lower Resolution",
                           toString(settings.integrator), double(h), double(s.omega), double(h * s.omega),
-                          double(s.effectiveStiffness), double(s.nodeMass), double(s.growthPerStep), double(s.undampedLimit));
+                          double(s.largestStableStep * s.omega), double(s.effectiveStiffness), double(s.nodeMass),
+                          s.dampingRatio > 0 ? ", the limit is below 2 because of Damping" : "", double(s.growthPerStep),
+                          double(s.largestStableStep));
             scene_.warnings.push_back(scene_.sourcePath + ":" + std::to_string(softBodyLines_[i]) + ": warning: SoftBody " +
                                       quoted(body.name) + ": " + text);
         }

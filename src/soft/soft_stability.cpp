@@ -10,6 +10,31 @@
 
 namespace stepwise {
 
+namespace {
+
+/// ρ within this of 1 counts as neutral: the symplectic methods have ρ = 1 to rounding.
+constexpr Real kNeutralTolerance = Real(1e-12);
+/// Halvings of the interval: 60 take it below double precision.
+constexpr int kBisectionSteps = 60;
+
+/// The largest h with ρ(h) ≤ 1, by bisection from the undamped limit 2/ω (doubled until unstable).
+Real largestStableStep(IntegratorKind integrator, Real omega, Real zeta) {
+    const auto stable = [&](Real h) { return amplificationPerStep(integrator, h, omega, zeta) <= 1 + kNeutralTolerance; };
+    if (integrator == IntegratorKind::ExplicitEuler && zeta == 0) return 0;  // ρ = √(1 + h²ω²) > 1 for every h
+    Real low = 0, high = 2 / omega;
+    for (int i = 0; i < kBisectionSteps && stable(high); ++i) {
+        low = high;
+        high *= 2;
+    }
+    for (int i = 0; i < kBisectionSteps; ++i) {
+        const Real middle = Real(0.5) * (low + high);
+        (stable(middle) ? low : high) = middle;
+    }
+    return low;
+}
+
+}  // namespace
+
 SoftStability analyseSoftBody(const SoftBody& body, IntegratorKind integrator, Real h) {
     SoftStability result;
     if (body.nodeCount() == 0) return result;
@@ -28,7 +53,7 @@ SoftStability analyseSoftBody(const SoftBody& body, IntegratorKind integrator, R
     result.omega = std::sqrt(result.effectiveStiffness / result.nodeMass);
     result.dampingRatio = 2 * damping[busiest] / (2 * std::sqrt(result.effectiveStiffness * result.nodeMass));
     result.growthPerStep = amplificationPerStep(integrator, h, result.omega, result.dampingRatio);
-    result.undampedLimit = 2 / result.omega;
+    result.largestStableStep = largestStableStep(integrator, result.omega, result.dampingRatio);
     return result;
 }
 

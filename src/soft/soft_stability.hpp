@@ -31,7 +31,7 @@ struct SoftStability {
     Real omega = 0;             ///< ω = √(k_eff/m), rad/s.
     Real dampingRatio = 0;      ///< ζ = c_eff/(2√(k_eff·m)), c_eff from the dampers the same way.
     Real growthPerStep = 1;     ///< ρ = amplificationPerStep(): the swing's factor per step.
-    Real undampedLimit = 0;     ///< 2/ω, s: the largest stable step of the symplectic integrators without damping.
+    Real largestStableStep = 0; ///< The largest h with ρ ≤ 1, s (dampers included); 0 when none is (undamped explicit Euler).
 };
 
 /// @brief Stability of @p body's springs stepped by @p integrator at the step @p h (a substep under the sequential impulse).
