@@ -512,6 +512,7 @@ std::string skippedStagesLine(const StepPlan& plan, const StageRecords& records,
         const std::size_t i = static_cast<std::size_t>(slot.stage);
         if (listed[i]) continue;  // apply-forces has two places in the sequential-impulse step
         listed[i] = true;
+        if (slot.stage == Stage::SoftBodies && !plan.softBodies.runs) continue;  // no soft body: not part of this step
         if (!plan.runs(slot.stage) || (stepTaken && !records[i].ranLastStep)) {
             skipped += std::string(skipped.empty() ? "" : ", ") + stageName(slot.stage);
         }

@@ -209,7 +209,8 @@ std::string describeIslandSubsteps(std::span<const IslandSubsteps> islands, std:
 /// @brief The viewer's "skipped stages: …" line: the stages of this scene's pipeline
 /// (pipelineOrder(plan.solver), each once) that the plan skips or, once a step
 /// was taken, that did not run in it (an idle step of sleepers runs none).
-/// The other solver's stages are not named: they are not part of this step at all.
+/// The other solver's stages are not named: they are not part of this step at all; nor is
+/// `soft-bodies` in a scene without a soft body.
 /// @param plan       the World's plan (World::plan())
 /// @param records    the World's stage records (World::stageRecords())
 /// @param stepTaken  false before the first step: only the plan's skips are known
