@@ -8,6 +8,7 @@
 /// | pressure forces | `pressure_forces.cpp` | node positions, faces, nRT, V | P, node forces |
 /// | integrate | `integrate_nodes.cpp` | forces, gravity, h | node positions, velocities |
 /// | collide | `node_collisions.cpp` | nodes, the rigid objects, materials | node positions, velocities; a dynamic body's v and L |
+/// | soft contacts | `soft_contacts.cpp` | every soft body's nodes and faces | node positions, velocities |
 #pragma once
 
 #include <span>
@@ -50,6 +51,11 @@ void integrateNodes(SoftBody& body, IntegratorKind integrator, Real h, const Vec
 /// @param gravity the World's, m/s²: a node approaching slower than gravity builds in two steps is resting
 /// @param h       the step the nodes were just moved by, s
 void collideNodes(SoftBody& body, const BodySet& rigid, const Vec3& gravity, Real h);
+
+/// @brief Every node of each soft body against the triangles of every other one it may touch, with the
+/// same projection, bounce and friction as collideNodes(), the impulses shared by the triangle's
+/// corners (soft_contacts.cpp). A body does not collide with itself.
+void collideSoftBodies(std::span<SoftBody> bodies, const ContactMaterials& materials, const Vec3& gravity, Real h);
 
 /// @brief Sets body.position and body.velocity to the nodes' centre of mass and its velocity.
 void measureCentreOfMass(SoftBody& body);

@@ -9,6 +9,7 @@
 ///     3. pressure   P    = nRT / V,  F_i += Σ_faces round i (P·A·n)/3   pressure_forces.cpp
 ///     4. integrate  v, x by the scene's integrator, a_i = F_i/m_i + g  integrate_nodes.cpp
 ///     5. collide    each node a small sphere against the rigid objects node_collisions.cpp
+///     6. soft–soft  each node against the other soft bodies' faces     soft_contacts.cpp
 ///
 /// then the centre of mass and its velocity, for output. After every
 /// stage the nodes it moved are checked: the first non-finite number stops
@@ -88,8 +89,10 @@ void measureSoftBody(SoftBody& body) {
 void stepSoftBodies(std::span<SoftBody> bodies, const BodySet& rigid, const SoftStepSettings& settings) {
     const Real hs = settings.timeStep / Real(settings.substeps);
     const StageAtStep& where = settings.where;
-    for (SoftBody& body : bodies) {
-        for (int substep = 0; substep < settings.substeps; ++substep) {
+    const ContactMaterials byProduct{};
+    const ContactMaterials& materials = rigid.materials != nullptr ? *rigid.materials : byProduct;
+    for (int substep = 0; substep < settings.substeps; ++substep) {
+        for (SoftBody& body : bodies) {
             // 1–3. Springs, then the volume and the gas's push (spring_forces.cpp, enclosed_volume.cpp,
             //      pressure_forces.cpp)
             clearNodeForces(body);
@@ -105,8 +108,13 @@ void stepSoftBodies(std::span<SoftBody> bodies, const BodySet& rigid, const Soft
             collideNodes(body, rigid, settings.gravity, hs);
             requireFiniteNodes(body, "node collisions", where);
         }
-        measureCentreOfMass(body);
+        // 6. Soft bodies against each other, once all have moved (soft_contacts.cpp)
+        if (bodies.size() > 1) {
+            collideSoftBodies(bodies, materials, settings.gravity, hs);
+            for (const SoftBody& body : bodies) requireFiniteNodes(body, "soft-soft contacts", where);
+        }
     }
+    for (SoftBody& body : bodies) measureCentreOfMass(body);
 }
 
 }  // namespace stepwise
