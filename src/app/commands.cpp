@@ -605,6 +605,13 @@ int checkCommand(const std::string& scenePath) {
         std::printf("  CollisionPlane   %-16s through %s m, normal %s\n", p.name.c_str(), vec(p.position).c_str(),
                     vec(p.normal).c_str());
     }
+    for (const SoftBody& b : scene->softBodies) {
+        std::printf("  SoftBody         %-16s %-8s at %s m, v %s m/s, mass %.6g kg, %zu nodes, %zu springs, %zu "
+                    "triangles, nRT %.6g J, elasticity %.3g, friction %.3g\n",
+                    b.name.c_str(), toString(b.shape), vec(b.position).c_str(), vec(b.velocity).c_str(), double(b.mass),
+                    b.nodeCount(), b.springs.size(), b.faces.size(), double(b.nRT), double(b.elasticity),
+                    double(b.friction));
+    }
     // "-" for a value the material leaves to each object's own default.
     const auto optional = [](const std::optional<Real>& value) {
         char text[32] = "-";
