@@ -399,7 +399,8 @@ TEST_CASE("A soft ball squashes on a floor: the patch shrinks as the pressure ri
     //     m·g = N = m_patch·g + P·A − S,   so   P·A = m·g − m_patch·g + S,
     // the statics of the patch, checked within 1 %. A smooth skin would leave the floor along it
     // (S → 0, a kink would need the floor to pull) and a small patch weighs little, so P·A → m·g;
-    // on this mesh the first ring of springs leaves the floor at an angle and S is 10–25 % of m·g.
+    // on this mesh of 2562 nodes the first ring of springs leaves the floor at an angle, S is
+    // 9–13 % of m·g and the patch weighs 5–9 % of it.
     const Vec3 g(0, -9.81, 0);
     Real lastPressure = 0, lastPatch = 1e9;
     for (const Real nRT : {Real(30), Real(50), Real(80)}) {
@@ -408,13 +409,13 @@ TEST_CASE("A soft ball squashes on a floor: the patch shrinks as the pressure ri
         scene.settings.substeps = 16;
         scene.planes.push_back(test::ground());
         SoftBodyMaking making;
-        making.resolution = 3;
+        making.resolution = 4;
         making.position = Vec3(0, 0.6, 0);
         making.radius = Real(0.5);
         making.mass = 1;
-        making.stiffness = 40;
-        making.bendStiffness = 5;  // the bending springs' dampers settle the slow sag of the shell
-        making.damping = Real(0.2);
+        making.stiffness = 10;     // weak: the gas carries the weight
+        making.bendStiffness = 1;  // the bending springs' dampers settle the slow sag of the shell
+        making.damping = Real(0.03);
         making.nRT = nRT;
         SoftBody b;
         b.name = "ball";
@@ -443,6 +444,8 @@ TEST_CASE("A soft ball squashes on a floor: the patch shrinks as the pressure ri
         CHECK(patch < lastPatch);                 // ... a smaller patch
         CHECK(ball.pressure * patch == Approx(9.81 - patchMass * 9.81 + pull).epsilon(0.01));
         CHECK(patchMass < 0.1);  // a patch of less than a tenth of the surface
+        // The patch's weight and the rim's pull nearly cancel: P·A is m·g within 7 % (measured −1, +6, +4 %)
+        CHECK(ball.pressure * patch == Approx(9.81).epsilon(0.07));
         lastPressure = ball.pressure;
         lastPatch = patch;
     }
