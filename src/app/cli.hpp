@@ -35,6 +35,7 @@ struct RunOptions {
     std::optional<double> duration;       ///< --duration S: simulated seconds (overrides the scene's Duration).
     std::optional<std::uint64_t> steps;   ///< --steps N: number of steps (alternative to --duration).
     std::optional<std::string> csvPath;   ///< --csv PATH: write the trajectory here.
+    std::optional<std::string> nodesCsvPath;  ///< --csv-nodes PATH: write every soft body's nodes here.
     std::uint64_t every = 1;              ///< --every K: write a CSV sample every K steps.
     bool explain = false;                 ///< --explain: print the step plan first (with --steps 0, only that).
     std::optional<int> threads;           ///< --threads N: overrides the scene's World Threads (0: one per hardware thread).

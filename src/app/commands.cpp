@@ -60,6 +60,7 @@ void printSceneHeader(const std::string& path, const Scene& scene) {
     std::printf("  %zu dynamic, %zu kinematic, %zu plane(s)", scene.dynamics.size(), scene.kinematics.size(),
                 scene.planes.size());
     if (!scene.joints.empty()) std::printf(", %zu joint(s) at %.3g Hz", scene.joints.size(), double(jointHertzInUse(s)));
+    if (!scene.softBodies.empty()) std::printf(", %zu soft bod%s", scene.softBodies.size(), scene.softBodies.size() == 1 ? "y" : "ies");
     std::printf("\n");
     // Said only when the scene departs from the products, so the classic scenes print as before.
     const bool rules = s.frictionCombine != CombineRule::Product || s.elasticityCombine != CombineRule::Product;
@@ -278,6 +279,18 @@ void printBroadphase(const World& world) {
     std::printf("Broadphase %s (Auto: %s)\n", toString(choice.kind), choice.reason.c_str());
 }
 
+/// Each soft body at the end: its centre of mass, volume and pressure (src/objects/soft_body.hpp).
+void printSoftBodies(const World& world) {
+    if (world.softBodies().empty()) return;
+    std::printf("\nSoft bodies (centre of mass, its velocity, the volume and the pressure P = nRT/V at the end)\n");
+    std::printf("  %-16s %6s %-28s %-28s %12s %12s\n", "name", "nodes", "centre (m)", "velocity (m/s)", "volume (m^3)",
+                "pressure (Pa)");
+    for (const SoftBody& body : world.softBodies()) {
+        std::printf("  %-16s %6zu %-28s %-28s %12.6g %12.6g\n", body.name.c_str(), body.nodeCount(), vec(body.position).c_str(),
+                    vec(body.velocity).c_str(), double(body.volume), double(body.pressure));
+    }
+}
+
 void printStageTimes(const World& world, double wallSeconds) {
     std::printf("\nTime per stage (a substep stage runs several times a step; skipped stages show 0 runs)\n");
     std::printf("  %-20s %8s %12s %12s\n", "stage", "runs", "us/step", "total ms");
@@ -479,8 +492,18 @@ int runCommand(const RunOptions& options) {
     if (!openTrajectory(options, csvFile)) return kExitUsageError;
     std::FILE* csv = csvFile ? csvFile->file() : nullptr;
     if (csv) {
-        writeTrajectoryHeader(csv);
+        writeTrajectoryHeader(csv, false, !world.softBodies().empty());
         writeTrajectoryRows(csv, world);
+    }
+    std::optional<OutputFile> nodesFile;
+    if (options.nodesCsvPath) {
+        nodesFile.emplace(*options.nodesCsvPath);
+        if (!nodesFile->ok()) {
+            std::fprintf(stderr, "stepwise: error: %s\n", nodesFile->error().c_str());
+            return kExitUsageError;
+        }
+        writeNodeHeader(nodesFile->file());
+        writeNodeRows(nodesFile->file(), world);
     }
 
     const Energy energyBefore = energyOf(world);
@@ -502,6 +525,7 @@ int runCommand(const RunOptions& options) {
                 monitor.observe(world);
                 reportWarnings(watch, watch.observe(world));
                 if (csv && world.stepCount() % options.every == 0) writeTrajectoryRows(csv, world);
+                if (nodesFile && world.stepCount() % options.every == 0) writeNodeRows(nodesFile->file(), world);
                 progress.update(world.stepCount(), double(world.time()));
                 if (csvFile && csvFile->failed()) break;  // a full disk: no use going on
                 if (InterruptGuard::signalReceived() != 0) break;
@@ -532,6 +556,10 @@ int runCommand(const RunOptions& options) {
     const double wall = std::chrono::duration<double>(Clock::now() - start).count();
     std::string csvError;
     if (csvFile) csvError = csvFile->close();
+    if (nodesFile) {
+        const std::string nodesError = nodesFile->close();
+        if (csvError.empty()) csvError = nodesError;
+    }
 
     std::printf("Simulated %.6g s in %llu steps\n", double(world.time()),
                 static_cast<unsigned long long>(world.stepCount()));
@@ -542,10 +570,12 @@ int runCommand(const RunOptions& options) {
     printFinalState(world);
     printJoints(world);
     printRegions(world);
+    printSoftBodies(world);
     printConservation(energyBefore, energyOf(world), momentumBefore, linearMomentumOf(world), angularMomentumBefore,
                       angularMomentumOf(world));
     printStageTimes(world, wall);
     if (csvFile && csvError.empty()) std::printf("\nTrajectory written to %s\n", options.csvPath->c_str());
+    if (nodesFile && csvError.empty()) std::printf("Soft bodies' nodes written to %s\n", options.nodesCsvPath->c_str());
     if (!csvError.empty()) {
         std::fprintf(stderr, "stepwise: error: %s; the trajectory is incomplete\n", csvError.c_str());
         if (exitCode == kExitOk || exitCode == kExitExpectationFailed) exitCode = kExitSimulationError;
@@ -574,6 +604,13 @@ int checkCommand(const std::string& scenePath) {
     for (const CollisionPlane& p : scene->planes) {
         std::printf("  CollisionPlane   %-16s through %s m, normal %s\n", p.name.c_str(), vec(p.position).c_str(),
                     vec(p.normal).c_str());
+    }
+    for (const SoftBody& b : scene->softBodies) {
+        std::printf("  SoftBody         %-16s %-8s at %s m, v %s m/s, mass %.6g kg, %zu nodes, %zu springs, %zu "
+                    "triangles, nRT %.6g J, elasticity %.3g, friction %.3g\n",
+                    b.name.c_str(), toString(b.shape), vec(b.position).c_str(), vec(b.velocity).c_str(), double(b.mass),
+                    b.nodeCount(), b.springs.size(), b.faces.size(), double(b.nRT), double(b.elasticity),
+                    double(b.friction));
     }
     // "-" for a value the material leaves to each object's own default.
     const auto optional = [](const std::optional<Real>& value) {

@@ -28,14 +28,17 @@ struct CommandUsage {
 constexpr CommandUsage kUsage[] = {
     {"run",
      "  stepwise run [FILE] [--duration S | --steps N] [--csv PATH] [--every K] [--explain]\n"
-     "               [--threads N] [--max-seconds S]\n"
+     "               [--threads N] [--max-seconds S] [--csv-nodes PATH]\n"
      "      Simulate the scene in FILE (the default scene when omitted) and print a\n"
      "      summary: objects, final state, energy, momentum, time per stage.\n"
      "      --duration S  simulated seconds (default: the scene's World Duration)\n"
      "      --steps N     number of time steps instead of a duration\n"
      "      --csv PATH    write the trajectory as CSV: time,name,px,py,pz,vx,vy,vz,\n"
      "                    qw,qx,qy,qz,wx,wy,wz, one row per object per sample,\n"
-     "                    starting with the initial state at time 0\n"
+     "                    starting with the initial state at time 0; a soft body's row\n"
+     "                    adds its volume and pressure\n"
+     "      --csv-nodes PATH  write every soft body's nodes as CSV:\n"
+     "                    time,body,node,px,py,pz,vx,vy,vz, sampled as --csv\n"
      "      --every K     write a CSV sample every K steps (default 1)\n"
      "      --explain     print the step plan first: each stage, whether it runs\n"
      "                    and why (with --steps 0, only the plan)\n"
@@ -285,6 +288,8 @@ RunOptions parseRunOptions(const std::vector<std::string>& args, const std::stri
             options.explain = true;
         } else if (in.is("--csv")) {
             options.csvPath = in.value();
+        } else if (in.is("--csv-nodes")) {
+            options.nodesCsvPath = in.value();
         } else if (in.is("--every")) {
             options.every = parseWholeNumber(in.option(), in.value(), 1, kMaxSteps);
         } else if (in.is("--threads")) {

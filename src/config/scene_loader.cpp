@@ -42,6 +42,8 @@
 #include "objects/mass_properties.hpp"
 #include "objects/triangle_mesh.hpp"
 #include "forces/spring_stability.hpp"
+#include "objects/soft_mesh.hpp"
+#include "soft/soft_stability.hpp"
 
 namespace stepwise {
 
@@ -116,6 +118,11 @@ constexpr Real kDefaultDamping = 0;
 /// amplitude grows by √(1 + h²ω²) every step at any h, is only warned
 /// about when that adds up to a visible change.
 constexpr Real kTolerableGrowth = 2;
+
+// SoftBody (docs/config-format.md#softbody, docs/soft-bodies.md)
+constexpr int kDefaultSphereResolution = 2;  ///< Icosphere subdivisions: 162 nodes, 320 triangles.
+constexpr int kDefaultBoxResolution = 4;     ///< Cells along a cube's edge: 98 nodes, 192 triangles.
+const Vec3 kDefaultSoftHalfExtents{0.5, 0.5, 0.5};  ///< m: a 1 m cube, as a DynamicObject box's Scale.
 /// ρ above 1 by more than this is growth (symplectic methods have ρ = 1 exactly, up to rounding).
 constexpr Real kGrowthTolerance = Real(1e-12);
 /// Two bodies whose bounding spheres are apart by less than this fraction of the sum of their
@@ -247,6 +254,7 @@ public:
             case RecordKind::Space: addSpace(values, line, index); break;
             case RecordKind::Material: addMaterial(values, line, index); break;
             case RecordKind::MaterialPair: addMaterialPair(values, line, index); break;
+            case RecordKind::SoftBody: addSoftBody(values, line, index); break;
         }
     }
 
@@ -266,8 +274,10 @@ public:
         resolveJoints();
         checkBuoyantShapes();
         resolveSpaces();
+        refuseSoftBodiesInSpaces();
         if (sink_.diagnostics().empty()) {
             warnAboutUnstableSprings();
+            warnAboutUnstableSoftBodies();
             warnAboutMassRatios();
             return std::move(scene_);
         }
@@ -1266,6 +1276,103 @@ private:
         scene_.attractors.push_back(std::move(attractor));
     }
 
+    // ---------------------------------------------------------- soft bodies
+
+    /// A SoftBody: a closed mesh of nodes and springs with a gas inside (src/objects/soft_body.hpp).
+    /// Shape is Sphere or Box; Radius belongs to a sphere and HalfExtents to a box; Resolution is a
+    /// whole number within the mesh's bounds (soft_mesh.hpp), so nobody asks for a million nodes.
+    void addSoftBody(const RecordValues& values, const SceneLine& line, int index) {
+        const Token& recordName = line.tokens.front();
+        const std::size_t before = sink_.diagnostics().size();
+        SoftBody body;
+        body.name = claimName(values, line, index);
+        body.color = toColor(values.triple("Color", kDefaultColor));
+        const Material* material = materialOf(values, line, body.material);
+        body.elasticity = values.number("Elasticity", materialValue(material, &Material::elasticity, kDynamicElasticity));
+        body.friction = values.number("Friction", materialValue(material, &Material::friction, kDynamicFriction));
+
+        SoftBodyMaking making;
+        making.shape = values.choice<Shape>("Shape", kShapeChoices, kDefaultShape);
+        const bool sphere = making.shape == Shape::Sphere;
+        if (!sphere && making.shape != Shape::Box) {
+            sink_.report(line.number, shapeColumn(values, line), "Shape", "Sphere or Box for a SoftBody",
+                         values.text("Shape").value_or(toString(making.shape)),
+                         "a soft body's surface is an icosphere (Sphere) or a subdivided cube (Box)");
+        }
+        const std::string_view otherSize = sphere ? "HalfExtents" : "Radius";
+        if (values.isSet(otherSize)) {
+            sink_.report(line.number, values.valueColumn(otherSize), std::string(otherSize),
+                         std::string("no ") + std::string(otherSize) + " for a " + (sphere ? "Sphere" : "Box"),
+                         values.asWritten(otherSize),
+                         sphere ? "a Sphere takes Radius; HalfExtents sizes a Box" : "a Box takes HalfExtents; Radius sizes a Sphere");
+        }
+        making.position = values.triple("Position", kZero);
+        making.velocity = values.triple("Velocity", kZero);
+        making.angularVelocity = values.triple("AngularVelocity", kZero);
+        making.radius = values.number("Radius", kRadiusPerDiameter);
+        making.halfExtents = values.triple("HalfExtents", kDefaultSoftHalfExtents);
+        making.mass = values.number("Mass", kDefaultMass);
+        making.stiffness = values.number("Stiffness", 0);
+        making.damping = values.number("Damping", kDefaultDamping);
+        making.bendStiffness = values.number("BendStiffness", 0);
+        making.nRT = values.number("Pressure", 0);
+        if (!values.isSet("Stiffness")) {
+            sink_.report(line.number, recordName.column, "SoftBody", "a Stiffness field (every soft body needs one)",
+                         std::string(recordName.text), "give the edge springs' constant k in N/m, e.g. Stiffness=200");
+        }
+        const int least = sphere ? 0 : 1;
+        const int most = sphere ? kMaxIcosphereSubdivisions : kMaxCubeCells;
+        const Real resolution = values.number("Resolution", sphere ? kDefaultSphereResolution : kDefaultBoxResolution);
+        making.resolution = static_cast<int>(resolution);
+        if (resolution != std::floor(resolution) || resolution < least || resolution > most) {
+            making.resolution = least;
+            sink_.report(line.number, values.valueColumn("Resolution"), "Resolution",
+                         "a whole number from " + std::to_string(least) + " to " + std::to_string(most) + " for a " +
+                             (sphere ? "Sphere" : "Box"),
+                         formatNumber(resolution),
+                         sphere ? "the icosahedron's triangles are cut in 4 that many times: 2 gives 162 nodes, 3 gives "
+                                  "642, 5 gives 10242"
+                                : "the cells along each edge of the cube: 4 gives 98 nodes, 8 gives 386, 32 gives 6146");
+        }
+        if (sink_.diagnostics().size() == before) buildSoftBody(making, body);
+        softBodyLines_.push_back(line.number);
+        scene_.softBodies.push_back(std::move(body));
+    }
+
+    /// Spaces step Worlds of rigid bodies (src/world/spaces.hpp); a soft body belongs to the one World of a scene.
+    void refuseSoftBodiesInSpaces() {
+        if (scene_.spaces.empty() || scene_.softBodies.empty()) return;
+        sink_.report(softBodyLines_.front(), 1, "SoftBody", "no SoftBody in a scene with Space records",
+                     "SoftBody " + quoted(scene_.softBodies.front().name),
+                     "soft bodies run in a scene of one simulation so far; move it to a scene without Space records");
+    }
+
+    /// The explicit limit h·ω < 2 of each soft body's springs (src/soft/soft_stability.hpp): a warning, as for springs.
+    void warnAboutUnstableSoftBodies() {
+        const WorldSettings& settings = scene_.settings;
+        const Real h = integrationStep(settings);  // the nodes move by the substep under SequentialImpulse
+        const Real steps = std::round(settings.duration / h);
+        for (std::size_t i = 0; i < scene_.softBodies.size(); ++i) {
+            const SoftBody& body = scene_.softBodies[i];
+            const SoftStability s = analyseSoftBody(body, settings.integrator, h);
+            if (s.growthPerStep <= 1 + kGrowthTolerance) continue;
+            const Real growthOverRun = std::pow(s.growthPerStep, steps);
+            if (settings.integrator == IntegratorKind::ExplicitEuler && growthOverRun <= kTolerableGrowth) continue;
+            char text[512];
+            std::snprintf(text, sizeof text,
+                          "the step is past its springs' stability limit for %s: h*w = %.4g s * %.4g rad/s = %.3g > %.3g "
+                          "(w = sqrt(k_eff/m_node), k_eff = 2 x the stiffness at its busiest node = %.4g N/m, m_node = "
+                          "%.4g kg%s); its swing can grow x%.3g every step; use a step below %.4g s (TimeStep, or more "
+                          "Substeps), a lower Stiffness or Damping, or a lower Resolution",
+                          toString(settings.integrator), double(h), double(s.omega), double(h * s.omega),
+                          double(s.largestStableStep * s.omega), double(s.effectiveStiffness), double(s.nodeMass),
+                          s.dampingRatio > 0 ? ", the limit is below 2 because of Damping" : "", double(s.growthPerStep),
+                          double(s.largestStableStep));
+            scene_.warnings.push_back(scene_.sourcePath + ":" + std::to_string(softBodyLines_[i]) + ": warning: SoftBody " +
+                                      quoted(body.name) + ": " + text);
+        }
+    }
+
     /// A Space: a simulation of its own (src/world/spaces.hpp). Its World fields are read in
     /// resolveSpaces(), over the World record's, which may come later in the file.
     void addSpace(const RecordValues& values, const SceneLine& line, int index) {
@@ -1910,6 +2017,7 @@ private:
     std::vector<PendingName> pendingNames_;  ///< Names used by Expect records.
     std::vector<PendingChange> pendingChanges_;  ///< MayChange records, resolved by finish().
     std::map<std::string, NameUse> names_;  ///< Lower-cased name → first use.
+    std::vector<int> softBodyLines_;  ///< The line of each SoftBody record, for its warnings.
     std::array<int, kRecordKindCount> counts_{};  ///< Records seen so far, per RecordKind (for default names).
     std::vector<PendingSpring> pendingSprings_;   ///< Springs in file order, resolved by finish().
     std::vector<int> springLines_;                ///< Line of each resolved spring in scene_.springs.

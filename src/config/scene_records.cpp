@@ -56,6 +56,8 @@ constexpr std::string_view kTimeScaleHint =
     "simulated seconds per second of the shared clock: 0.5 runs at half speed, 2 at double; it must be positive";
 constexpr std::string_view kDensityHint =
     "density is in kg/m^3 (water 1000, wood about 600, steel 7850); the mass is density x the shape's volume";
+constexpr std::string_view kGasHint =
+    "Pressure is the gas's nRT in joules (= P*V): the pressure is nRT / V, so 0 leaves the springs alone";
 constexpr std::string_view kHeightHint =
     "Height is a capsule's segment between its two ball centres, or a cylinder's full length, in metres";
 
@@ -334,6 +336,28 @@ constexpr FieldSpec kMaterialPairFields[] = {
     {"Elasticity",       FieldKind::Number,  kNamedOnly, Range::UnitInterval, kElasticityHint},
 };
 
+/// SoftBody: a pressure soft body (src/objects/soft_body.hpp, docs/soft-bodies.md), named fields only.
+/// Which size field a shape takes, and the bounds of Resolution, the loader checks (addSoftBody()).
+constexpr FieldSpec kSoftBodyFields[] = {
+    {"Name",            FieldKind::Name,    kNamedOnly, Range::Any},
+    {"Shape",           FieldKind::Shape,   kNamedOnly, Range::Any},              // Sphere (default) or Box
+    {"Position",        FieldKind::Vector,  kNamedOnly, Range::Any},              // m, the centre
+    {"Velocity",        FieldKind::Vector,  kNamedOnly, Range::Any},              // m/s, every node's at the start
+    {"AngularVelocity", FieldKind::Vector,  kNamedOnly, Range::Any},              // rad/s: node i starts at v + w x r_i
+    {"Radius",          FieldKind::Number,  kNamedOnly, Range::Radius, kSizeHint},   // m, Sphere
+    {"HalfExtents",     FieldKind::Vector,  kNamedOnly, Range::Radius, kSizeHint},   // m, Box
+    {"Resolution",      FieldKind::Number,  kNamedOnly, Range::Any},              // subdivisions, or cells per edge
+    {"Mass",            FieldKind::Number,  kNamedOnly, Range::Mass, kMassHint},  // kg, spread evenly over the nodes
+    {"Stiffness",       FieldKind::Number,  kNamedOnly, Range::NonNegative, kStiffnessHint}, // N/m, required
+    {"Damping",         FieldKind::Number,  kNamedOnly, Range::NonNegative, kDampingHint},   // N·s/m
+    {"BendStiffness",   FieldKind::Number,  kNamedOnly, Range::NonNegative, kStiffnessHint}, // N/m
+    {"Pressure",        FieldKind::Number,  kNamedOnly, Range::NonNegative, kGasHint},       // J: nRT = P·V
+    {"Material",        FieldKind::Name,    kNamedOnly, Range::Any},              // a Material's Name
+    {"Friction",        FieldKind::Number,  kNamedOnly, Range::NonNegative, kFrictionHint},
+    {"Elasticity",      FieldKind::Number,  kNamedOnly, Range::UnitInterval, kElasticityHint},
+    {"Color",           FieldKind::Color,   kNamedOnly, Range::UnitInterval},
+};
+
 constexpr RecordSpec kRecords[] = {
     {RecordKind::DynamicObject,    "DynamicObject",    kDynamicFields},
     {RecordKind::KinematicsObject, "KinematicsObject", kKinematicFields},
@@ -353,6 +377,7 @@ constexpr RecordSpec kRecords[] = {
     {RecordKind::Material,         "Material",         kMaterialFields},
     {RecordKind::MaterialPair,     "MaterialPair",     kMaterialPairFields},
     {RecordKind::Space,            "Space",            kSpaceFields},
+    {RecordKind::SoftBody,         "SoftBody",         kSoftBodyFields},
 };
 // clang-format on
 static_assert(std::size(kRecords) == kRecordKindCount, "one record table per RecordKind");

@@ -78,10 +78,11 @@ enum class RecordKind : std::uint8_t {
     Material,          ///< Density, friction and elasticity that objects share (src/objects/materials.hpp).
     MaterialPair,      ///< The friction and elasticity of contacts between two materials.
     Space,             ///< A simulation of its own, beside the others (src/world/spaces.hpp).
+    SoftBody,          ///< A pressure soft body: nodes, springs and a gas inside (src/objects/soft_body.hpp).
 };
 
 /// @brief Number of RecordKind values.
-inline constexpr std::size_t kRecordKindCount = 18;
+inline constexpr std::size_t kRecordKindCount = 19;
 
 /// @brief One record type: its name and its field table.
 struct RecordSpec {

@@ -19,6 +19,7 @@ const char* stageName(Stage stage) {
         case Stage::Restitution: return "restitution";
         case Stage::Sleep: return "sleep";
         case Stage::Continuous: return "continuous";
+        case Stage::SoftBodies: return "soft-bodies";
         case Stage::Count: break;
     }
     return "?";

@@ -24,6 +24,7 @@ enum class Stage : std::uint8_t {
     Restitution,       ///< Sequential impulse, after the substeps: bounces.
     Sleep,             ///< Islands; still islands fall asleep.
     Continuous,        ///< Fast bodies moved back to their first time of impact (src/collision/continuous.cpp).
+    SoftBodies,        ///< Soft bodies: springs, gas pressure, nodes moved and collided (src/soft/soft_step.cpp).
     Count              ///< Number of stages (not a stage).
 };
 

@@ -27,7 +27,7 @@ constexpr int kMargin = 8;
 /// Short stage names for the one-line timing table.
 constexpr const char* kShortStageNames[kStageCount] = {"forces",  "integrate", "kinematics", "broad",   "narrow",
                                                        "impulses", "positions", "prepare",   "solve",   "relax",
-                                                       "bounce",   "sleep",     "ccd"};
+                                                       "bounce",   "sleep",     "ccd",       "soft"};
 
 std::string format(const char* pattern, double a, double b = 0, double c = 0) {
     char text[200];

@@ -257,6 +257,35 @@ void drawBody(const ShapeLook& look, const Vec3& position, const Quat& orientati
     glPopMatrix();
 }
 
+/// A soft body's surface as its nodes are now: each triangle lit by its own normal, then its
+/// edges (the springs) drawn darker over it, as a rigid body's wire frame is.
+void drawSoftBody(const SoftBody& body) {
+    const auto corners = [&](const SoftFace& f) {
+        return std::array<Vec3, 3>{body.nodePositions[f.a], body.nodePositions[f.b], body.nodePositions[f.c]};
+    };
+    glEnable(GL_LIGHTING);
+    color(body.color);
+    glBegin(GL_TRIANGLES);
+    for (const SoftFace& f : body.faces) {
+        const std::array<Vec3, 3> p = corners(f);
+        const Vec3 across = glm::cross(p[1] - p[0], p[2] - p[0]);
+        const Real length = glm::length(across);
+        if (length > 0) normal(across / length);
+        for (const Vec3& q : p) vertex(q);
+    }
+    glEnd();
+    glDisable(GL_LIGHTING);
+    color(body.color, 0.45f);
+    glLineWidth(1.0f);
+    glDepthFunc(GL_LEQUAL);
+    for (const SoftFace& f : body.faces) {
+        glBegin(GL_LINE_LOOP);
+        for (const Vec3& q : corners(f)) vertex(q);
+        glEnd();
+    }
+    glDepthFunc(GL_LESS);
+}
+
 /// Two unit vectors that, with @p n, make a right-handed orthonormal basis.
 void basisFor(const Vec3& n, Vec3& u, Vec3& v) {
     const Vec3 helper = std::abs(n.y) < Real(0.9) ? Vec3(0, 1, 0) : Vec3(1, 0, 0);
@@ -531,6 +560,7 @@ void drawWorld(const Simulation& simulation, std::size_t space, const OrbitCamer
     for (const KinematicsObject& b : view.kinematics) {
         drawBody(lookOf(b), b.position, b.orientation, tinted(b.color, look.tint), true);
     }
+    for (const SoftBody& b : world.softBodies()) drawSoftBody(b);  // the live World's (the walk-through keeps no copy)
 
     glDisable(GL_LIGHTING);
     drawJoints(world, view.dynamics);

@@ -259,6 +259,9 @@ void StageWalkthrough::describe(StageSnapshot& s, const World& world) const {
         case Stage::Continuous:
             line.add("%zu fast bodies stopped at their time of impact", world.bodiesStoppedAtImpact());
             break;
+        case Stage::SoftBodies:
+            line.add("%zu soft bodies", world.softBodies().size());
+            break;
         case Stage::Count: break;
     }
     s.description.assign(line.text());  // keeps the string's storage from the last step

@@ -2,6 +2,8 @@
 /// @brief Energy and momenta summed over the dynamic bodies.
 #include "world/measurements.hpp"
 
+#include <cmath>
+
 namespace stepwise {
 
 Energy energyOf(const DynamicObject& body, const Vec3& gravity) {
@@ -26,6 +28,18 @@ Energy energyOf(const World& world) {
         }
     }
     for (const Spring& spring : world.springs()) energy.potential += springPotentialEnergy(spring, world.dynamics());
+    for (const SoftBody& body : world.softBodies()) {
+        for (std::size_t i = 0; i < body.nodeCount(); ++i) {
+            const Real m = Real(1) / body.nodeInverseMasses[i];
+            energy.translational += Real(0.5) * m * glm::dot(body.nodeVelocities[i], body.nodeVelocities[i]);
+            energy.potential -= m * glm::dot(world.settings().gravity, body.nodePositions[i]);
+        }
+        for (const SoftSpring& s : body.springs) {
+            const Real stretch = glm::length(body.nodePositions[s.b] - body.nodePositions[s.a]) - s.restLength;
+            energy.potential += Real(0.5) * s.stiffness * stretch * stretch;
+        }
+        if (body.nRT > 0 && body.volume > 0) energy.potential -= body.nRT * std::log(body.volume);
+    }
     energy.kinetic = energy.translational + energy.rotational;
     return energy;
 }
@@ -47,6 +61,9 @@ Energy energyOfBody(const World& world, std::size_t index) {
 Vec3 linearMomentumOf(const World& world) {
     Vec3 momentum(0);
     for (const DynamicObject& body : world.dynamics()) momentum += body.mass * body.velocity;
+    for (const SoftBody& body : world.softBodies()) {
+        for (std::size_t i = 0; i < body.nodeCount(); ++i) momentum += body.nodeVelocities[i] / body.nodeInverseMasses[i];
+    }
     return momentum;
 }
 
@@ -54,6 +71,11 @@ Vec3 angularMomentumOf(const World& world) {
     Vec3 momentum(0);
     for (const DynamicObject& body : world.dynamics()) {
         momentum += glm::cross(body.position, body.mass * body.velocity) + body.angularMomentum;
+    }
+    for (const SoftBody& body : world.softBodies()) {
+        for (std::size_t i = 0; i < body.nodeCount(); ++i) {
+            momentum += glm::cross(body.nodePositions[i], body.nodeVelocities[i] / body.nodeInverseMasses[i]);
+        }
     }
     return momentum;
 }

@@ -26,6 +26,9 @@ struct Energy {
 /// A uniform acceleration g has potential U = −m·g·x per body (for g = (0,−9.81,0)
 /// that is m·9.81·y, the familiar m·g·h); a spring stores ½·k·(l − L₀)²
 /// (springPotentialEnergy()), an attractor gives −μ·m/r (attractorPotentialEnergy()).
+/// A soft body adds its nodes' ½·m·|v|² (translational), their −m·g·x, its springs' ½·k·(l − L₀)²
+/// and its gas's −nRT·ln(V / 1 m³) (potential: the gas's force is −∂/∂x of it, pressure_forces.cpp;
+/// only its changes mean anything).
 Energy energyOf(const World& world);
 
 /// @brief The same energies for one body in a uniform field @p gravity (energyOf(world) sums these).
@@ -41,10 +44,10 @@ Energy energyOf(const DynamicObject& body, const Vec3& gravity);
 /// `stepwise plot FILE --quantity energy` draws it per body.
 Energy energyOfBody(const World& world, std::size_t index);
 
-/// @brief Total linear momentum Σ m·v of the dynamic bodies, kg·m/s.
+/// @brief Total linear momentum Σ m·v of the dynamic bodies and the soft bodies' nodes, kg·m/s.
 Vec3 linearMomentumOf(const World& world);
 
-/// @brief Total angular momentum of the dynamic bodies about the world origin, kg·m²/s.
+/// @brief Total angular momentum of the dynamic bodies and the soft bodies' nodes about the world origin, kg·m²/s.
 ///
 /// Each body contributes the moment of its centre's momentum plus its own
 /// spin: \f[ L_O = \sum_k \left( x_k \times m_k v_k + L_k \right). \f]

@@ -12,6 +12,7 @@
 #include "dynamics/joints/joint_def.hpp"
 #include "objects/game_object.hpp"
 #include "objects/materials.hpp"
+#include "objects/soft_body.hpp"
 #include "world/expectations.hpp"
 #include "core/world_settings.hpp"
 
@@ -70,6 +71,7 @@ struct Scene {
     std::vector<std::uint32_t> regionSpace;     ///< The space of each of `regions`.
     std::vector<Material> materials;         ///< `Material` records, in file order (objects' `material` indexes them).
     std::vector<MaterialPair> materialPairs; ///< `MaterialPair` records: pairs with their own μ or e.
+    std::vector<SoftBody> softBodies;        ///< `SoftBody` records: pressure soft bodies (src/objects/soft_body.hpp).
 };
 
 }  // namespace stepwise

@@ -236,7 +236,13 @@ PlanDecision killRegionsOf(const PlanInputs& in) {
     return skip("skipped: no Kill region");
 }
 
+PlanDecision softBodiesOf(const PlanInputs& in) {
+    if (in.softBodies.empty()) return skip("skipped: no soft bodies");
+    return run("runs (src/soft/soft_step.cpp): springs, gas pressure P = nRT/V, nodes moved and collided, in every substep");
+}
+
 PlanDecision idleSkipOf(const PlanInputs& in) {
+    if (!in.softBodies.empty()) return skip("off: soft bodies never sleep, so no step is idle");
     if (in.settings.solver == SolverKind::Impulse) {
         return run("on, rarely: the Impulse solver lets no body sleep, so only a world without an awake body is idle");
     }
@@ -281,6 +287,8 @@ void planStages(const PlanInputs& in, StepPlan& plan) {
         set(Stage::Continuous, skip("skipped: ContinuousCollision=false in the World record"));
     }
     if (!plan.enabled) return;  // StepPlan=Off: every stage of the pipeline runs
+
+    if (!plan.softBodies.runs) set(Stage::SoftBodies, plan.softBodies);
 
     if (in.dynamics.empty()) {
         set(Stage::ApplyForces, skip("skipped: no dynamic body to push"));
@@ -327,6 +335,7 @@ const char* runReason(Stage stage, bool enabled) {
         case Stage::Sleep: return "runs: islands at rest fall asleep";
         case Stage::Continuous:
             return "runs: a body that moves farther than its inner radius in a step stops at its first touch";
+        case Stage::SoftBodies: return "runs: soft bodies move";
         case Stage::Count: break;
     }
     return "runs";
@@ -342,6 +351,7 @@ std::span<const PipelineSlot> pipelineOrder(SolverKind solver) {
     static constexpr PipelineSlot kImpulse[] = {
         {ApplyForces, kOnce}, {Integrate, kOnce},   {MoveKinematics, kOnce},  {Continuous, kOnce},
         {Broadphase, kOnce},  {Narrowphase, kOnce}, {ResolveImpulses, kOnce}, {CorrectPositions, kOnce},
+        {SoftBodies, kOnce},
     };
     // World::stepWithSequentialImpulses(): find the contacts first, then hold them through the substeps.
     static constexpr PipelineSlot kSequential[] = {
@@ -356,6 +366,7 @@ std::span<const PipelineSlot> pipelineOrder(SolverKind solver) {
         {RelaxConstraints, kEach},
         {Continuous, kOnce},
         {Restitution, kOnce},
+        {SoftBodies, kOnce},
         {Sleep, kOnce},
     };
     switch (solver) {
@@ -373,6 +384,7 @@ StepPlan makeStepPlan(const PlanInputs& in) {
     plan.broadphase = in.settings.broadphase;
     plan.broadphaseChoice = broadphaseOf(in);
     plan.jointSolver = jointSolverOf(in);
+    plan.softBodies = softBodiesOf(in);
     if (!plan.enabled) {
         constexpr PlanDecision kOff = {true, "runs: StepPlan=Off"};
         plan.collisions = kOff;
@@ -457,6 +469,7 @@ std::string describeStepPlan(const StepPlan& plan) {
     line("colour order", plan.colourOrder);
     line("regions", plan.regions);
     line("kill regions", plan.killRegions);
+    line("soft bodies", plan.softBodies);
     text += "  broadphase kind       ";
     text += toString(plan.broadphase);
     text += ": ";
@@ -509,6 +522,7 @@ std::string skippedStagesLine(const StepPlan& plan, const StageRecords& records,
         const std::size_t i = static_cast<std::size_t>(slot.stage);
         if (listed[i]) continue;  // apply-forces has two places in the sequential-impulse step
         listed[i] = true;
+        if (slot.stage == Stage::SoftBodies && !plan.softBodies.runs) continue;  // no soft body: not part of this step
         if (!plan.runs(slot.stage) || (stepTaken && !records[i].ranLastStep)) {
             skipped += std::string(skipped.empty() ? "" : ", ") + stageName(slot.stage);
         }

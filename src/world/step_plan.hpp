@@ -30,6 +30,7 @@
 #include "forces/spring.hpp"
 #include "objects/game_object.hpp"
 #include "objects/materials.hpp"
+#include "objects/soft_body.hpp"
 #include "core/stages.hpp"
 #include "core/world_settings.hpp"
 
@@ -85,6 +86,7 @@ struct StepPlan {
     PlanDecision colourOrder;      ///< Sequential impulse: do the passes take the contacts colour by colour (`ContactOrder`, src/dynamics/contact_colours.hpp)?
     PlanDecision regions;          ///< Do regions push the bodies inside them (src/forces/region.hpp)?
     PlanDecision killRegions;      ///< Are bodies that end a step in a Kill region removed (src/forces/kill_region.hpp)?
+    PlanDecision softBodies;       ///< Does the soft bodies' stage run (src/soft/soft_step.hpp)?
     SolverKind solver = SolverKind::SequentialImpulse; ///< The pipeline the scene runs (pipelineOrder()).
     int substeps = 1;              ///< Substeps of a sequential-impulse step.
     BroadphaseKind broadphase = BroadphaseKind::Auto; ///< The broadphase the scene asks for.
@@ -107,6 +109,7 @@ struct PlanInputs {
     std::span<const Region> regions;              ///< Regions (what they do depends on who is inside, and how it moves).
     std::span<const Joint> joints;                ///< Joints, broken ones included.
     const ContactMaterials* materials = nullptr;  ///< The material pairs (nullptr: none), for the friction rule.
+    std::span<const SoftBody> softBodies;         ///< Pressure soft bodies (src/objects/soft_body.hpp).
 };
 
 /// @brief Builds the plan: a pure function of the scene's contents, allocating nothing.
@@ -177,6 +180,9 @@ struct PlanInputs {
 ///   whole scene then keeps `Substeps`. A step in which some island gets
 ///   fewer runs its groups of islands on the plain loop (the fast path then
 ///   waits for a step in which every island gets the full count).
+/// - **Soft bodies**: their stage runs when the scene has one; without, it
+///   would loop over nothing. A soft body never sleeps, so a scene with one
+///   is never idle.
 /// - **Broadphase**: `Auto` takes brute force below kAutoBruteForceBelow
 ///   dynamic bodies (chooseBroadphase()); every broadphase returns the same
 ///   pairs in the same order.
@@ -203,7 +209,8 @@ std::string describeIslandSubsteps(std::span<const IslandSubsteps> islands, std:
 /// @brief The viewer's "skipped stages: …" line: the stages of this scene's pipeline
 /// (pipelineOrder(plan.solver), each once) that the plan skips or, once a step
 /// was taken, that did not run in it (an idle step of sleepers runs none).
-/// The other solver's stages are not named: they are not part of this step at all.
+/// The other solver's stages are not named: they are not part of this step at all; nor is
+/// `soft-bodies` in a scene without a soft body.
 /// @param plan       the World's plan (World::plan())
 /// @param records    the World's stage records (World::stageRecords())
 /// @param stepTaken  false before the first step: only the plan's skips are known

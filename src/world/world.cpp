@@ -21,6 +21,7 @@
 #include "integrators/integrators.hpp"
 #include "objects/finite_state.hpp"
 #include "objects/inertia.hpp"
+#include "soft/soft_step.hpp"  // the soft bodies' stage (src/soft/)
 
 namespace stepwise {
 
@@ -51,6 +52,7 @@ unsigned statePartsWrittenBy(Stage stage, IntegratorKind integrator) {
         case Stage::Restitution: return kMotion;
         case Stage::Continuous: return kPose;  // positions moved back along their paths (continuous.cpp)
         case Stage::Sleep: return 0;  // flags, a timer, and exact zeros for the velocities of a body that falls asleep
+        case Stage::SoftBodies: return kMotion;  // a node's impulse on a dynamic body (its nodes are checked inside)
         default: return kEverything;  // the once-a-step stages
     }
 }
@@ -65,6 +67,7 @@ World::World(Scene scene)
       springs_(std::move(scene.springs)),
       attractors_(std::move(scene.attractors)),
       regions_(std::move(scene.regions)),
+      softBodies_(std::move(scene.softBodies)),
       materials_(settings_, scene.materials.size(), scene.materialPairs) {
     require(scene.spaces.empty(), "World",
             "the scene has Space records: each space is a World of its own (src/world/spaces.hpp, Spaces), "
@@ -120,6 +123,26 @@ World::World(Scene scene)
         require(stepwise::isFinite(region.position) && stepwise::isFinite(region.halfExtents) && isFinite(region.radius),
                 region.name, "position and size must be finite");
     }
+    for (SoftBody& body : softBodies_) {
+        require(body.mass >= kMinMass && body.mass <= kMaxMass, body.name, "mass must be from 1e-12 to 1e12 kg");
+        require(isFinite(body.nRT) && body.nRT >= 0, body.name, "Pressure (nRT) must be >= 0 J");
+        require(!body.faces.empty() && body.nodeInverseMasses.size() == body.nodeCount() &&
+                    body.nodeVelocities.size() == body.nodeCount() && body.nodeForces.size() == body.nodeCount(),
+                body.name, "a soft body needs its nodes and faces (buildSoftBody(), src/objects/soft_mesh.hpp)");
+        for (std::size_t i = 0; i < body.nodeCount(); ++i) {
+            require(stepwise::isFinite(body.nodePositions[i]) && stepwise::isFinite(body.nodeVelocities[i]), body.name,
+                    "node positions and velocities must be finite");
+        }
+        const auto isNode = [&](std::uint32_t i) { return i < body.nodeCount(); };
+        for (const SoftFace& f : body.faces) require(isNode(f.a) && isNode(f.b) && isNode(f.c), body.name, "a face names a missing node");
+        for (const SoftSpring& s : body.springs) {
+            require(isNode(s.a) && isNode(s.b) && s.a != s.b, body.name, "a spring must join two different nodes");
+            require(isFinite(s.stiffness) && s.stiffness >= 0 && isFinite(s.damping) && s.damping >= 0, body.name,
+                    "stiffness and damping must be >= 0");
+        }
+        measureSoftBody(body);
+        require(body.nRT == 0 || body.volume > 0, body.name, "the surface must enclose a volume > 0 (faces wound outward)");
+    }
     joints_ = makeJoints(scene.joints, dynamics_, settings_.solver);  // src/dynamics/joints/joint.cpp
     jointLinks(joints_, links_);
     fastWorkspace_ = std::make_unique<FastWorkspace>();
@@ -132,7 +155,8 @@ World& World::operator=(World&&) noexcept = default;
 
 /// The step plan from what the World holds now (src/world/step_plan.cpp); it allocates nothing.
 void World::replan() {
-    plan_ = makeStepPlan({settings_, dynamics_, kinematics_, planes_, springs_, attractors_, regions_, joints_, &materials_});
+    plan_ = makeStepPlan(
+        {settings_, dynamics_, kinematics_, planes_, springs_, attractors_, regions_, joints_, &materials_, softBodies_});
     asleep_ = 0;
     for (DynamicObject& body : dynamics_) {
         body.canTurn = plan_.rotation.runs;  // read by the integrators
@@ -142,8 +166,10 @@ void World::replan() {
 }
 
 /// Nothing can change this step: no dynamic body is awake (a sleeper is only
-/// woken by an awake body or a moving kinematic one) and no kinematic body moves.
+/// woken by an awake body or a moving kinematic one), no kinematic body moves
+/// and there is no soft body.
 bool World::idle() const {
+    if (!softBodies_.empty()) return false;  // soft bodies do not sleep (docs/soft-bodies.md)
     for (const DynamicObject& body : dynamics_) {
         if (!body.asleep) return false;
     }
@@ -233,6 +259,9 @@ void World::stepWithImpulses() {
     // 7. Push overlapping bodies apart (src/dynamics/impulse_resolver.cpp, correctPositions)
     const Real supportStep = positionShareOfVelocityChange(settings_.integrator) * h;
     runStage(Stage::CorrectPositions, [&] { correctPositions(bodies(), contacts_, h, supportStep, contactWorkspace_); });
+
+    // 7b. Soft bodies: springs, gas, nodes moved and pushed out of the rigid objects (src/soft/soft_step.cpp)
+    runStage(Stage::SoftBodies, [&] { stepSoftBodies(); });
 
     // 8. Bodies that ended the step in a Kill region leave the world (src/world/world_regions.cpp)
     if (plan_.killRegions.runs) removeKilledBodies();
@@ -422,6 +451,9 @@ void World::stepWithSequentialImpulses() {
         if (plan_.jointSolver.runs) finishJoints(jointWorkspace_, joints_, hs, stepCount_ + 1, time_ + h, links_);
     });
 
+    // 8b. Soft bodies: springs, gas, nodes moved and pushed out of the rigid objects (src/soft/soft_step.cpp)
+    runStage(Stage::SoftBodies, [&] { stepSoftBodies(); });
+
     // 9. Islands at rest fall asleep (src/dynamics/islands.cpp)
     if (settings_.sleeping) {
         runStage(Stage::Sleep, [&] { asleep_ = updateSleep(bodies(), contacts_, links_, settings_, islandWorkspace_); });
@@ -545,6 +577,19 @@ void World::runFastPath(const AccelerationFunction& forces, const ContactSolverS
                             .step = stepCount_ + 1,
                             .time = static_cast<double>(time_)};
     runFastSubsteps(step, *fastWorkspace_);
+}
+
+/// The soft bodies' stage (src/soft/soft_step.hpp), after the rigid bodies' solve: a node meets the
+/// rigid objects where this step left them, and pushes a dynamic one with an equal and opposite impulse.
+/// The nodes take the rigid bodies' substeps: h/Substeps under the sequential impulse, h under Impulse.
+void World::stepSoftBodies() {
+    SoftStepSettings soft;
+    soft.gravity = settings_.gravity;
+    soft.integrator = settings_.integrator;
+    soft.timeStep = settings_.timeStep;
+    soft.substeps = settings_.solver == SolverKind::SequentialImpulse ? settings_.substeps : 1;
+    soft.where = {Stage::SoftBodies, stepCount_ + 1, static_cast<double>(time_)};
+    stepwise::stepSoftBodies(softBodies_, bodies(), soft);
 }
 
 FastPathCounts World::fastPathCounts() const { return fastWorkspace_->counts; }

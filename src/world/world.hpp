@@ -82,6 +82,7 @@ public:
     const std::vector<RemovedBody>& removedBodies() const { return removedBodies_; }
     const IslandWorkspace& islands() const { return islandWorkspace_; }  ///< Islands of the last step (islandOf()).
     const std::vector<Joint>& joints() const { return joints_; }              ///< Joints, broken ones included.
+    const std::vector<SoftBody>& softBodies() const { return softBodies_; }  ///< Pressure soft bodies (src/soft/).
 
     /// @brief The dynamic body called @p name, or nullptr.
     const DynamicObject* findDynamic(std::string_view name) const;
@@ -149,6 +150,7 @@ private:
     void findRegionMembers(bool throughBroadphase);  // world_regions.cpp
     RegionForces regionForces(Real substepTime) const;  // world_regions.cpp
     void removeKilledBodies();                       // world_regions.cpp
+    void stepSoftBodies();
     BodySet bodies();
 
     WorldSettings settings_;
@@ -162,6 +164,7 @@ private:
     std::vector<std::uint32_t> regionCandidates_;  ///< Scratch: the broadphase's answer for one region.
     std::vector<RemovedBody> removedBodies_;   ///< What Kill regions took, for the run's summary.
     std::vector<Joint> joints_;
+    std::vector<SoftBody> softBodies_;  ///< Pressure soft bodies, stepped by src/soft/soft_step.cpp.
     ContactMaterials materials_;  ///< The combine rules and material pairs every contact's preparation reads.
 
     Broadphase broadphase_;

@@ -1,0 +1,63 @@
+/// @file soft_stages.hpp
+/// @brief The stages of a soft body's step, one file each; soft_step.cpp calls them in order.
+///
+/// | stage | file | reads | writes |
+/// |---|---|---|---|
+/// | spring forces | `spring_forces.cpp` | node positions, velocities, springs | node forces |
+/// | enclosed volume | `enclosed_volume.cpp` | node positions, faces | V |
+/// | pressure forces | `pressure_forces.cpp` | node positions, faces, nRT, V | P, node forces |
+/// | integrate | `integrate_nodes.cpp` | forces, gravity, h | node positions, velocities |
+/// | collide | `node_collisions.cpp` | nodes, the rigid objects, materials | node positions, velocities; a dynamic body's v and L |
+/// | soft contacts | `soft_contacts.cpp` | every soft body's nodes and faces | node positions, velocities |
+#pragma once
+
+#include <span>
+
+#include "core/types.hpp"
+#include "core/world_settings.hpp"
+#include "objects/body_set.hpp"
+#include "objects/soft_body.hpp"
+
+namespace stepwise {
+
+/// @brief Sets every node's force to zero: the start of a force evaluation.
+void clearNodeForces(SoftBody& body);
+
+/// @brief Adds each spring's Hooke and damper force to its two nodes (spring_forces.cpp):
+/// \f$ F_a = (k(l - L_0) + c\,\dot l)\,\hat d,\ F_b = -F_a \f$.
+void addSpringForces(SoftBody& body);
+
+/// @brief The volume the closed surface @p faces over @p positions encloses, m³, by the
+/// divergence theorem: \f$ V = \tfrac16 \sum_f a_f\cdot(b_f \times c_f) \f$ (enclosed_volume.cpp).
+/// Positive for an outward winding.
+Real enclosedVolume(std::span<const Vec3> positions, std::span<const SoftFace> faces);
+
+/// @brief Measures the volume, sets P = nRT / V, and adds the gas's push P·A·n on every face,
+/// a third to each of its corners (pressure_forces.cpp). Writes body.volume and body.pressure.
+void addPressureForces(SoftBody& body);
+
+/// @brief Clears the forces, then adds the springs' and the gas's: every force on the nodes but gravity.
+void computeNodeForces(SoftBody& body);
+
+/// @brief Advances every node by @p h with @p integrator, the scene's `Integrator` (integrate_nodes.cpp):
+/// the point-mass forms of src/integrators/ with a = F·(1/m) + g. Velocity Verlet works the
+/// forces out again at the new positions (computeNodeForces()).
+void integrateNodes(SoftBody& body, IntegratorKind integrator, Real h, const Vec3& gravity);
+
+/// @brief Pushes every node out of the planes, kinematic and dynamic bodies of @p rigid, and turns its
+/// approach into a bounce with restitution and Coulomb friction (node_collisions.cpp). A dynamic
+/// body gets the opposite impulse at the same point.
+/// @param rigid   the World's rigid objects; the dynamic ones' velocity and angular momentum change
+/// @param gravity the World's, m/s²: a node approaching slower than gravity builds in two steps is resting
+/// @param h       the step the nodes were just moved by, s
+void collideNodes(SoftBody& body, const BodySet& rigid, const Vec3& gravity, Real h);
+
+/// @brief Every node of each soft body against the triangles of every other one it may touch, with the
+/// same projection, bounce and friction as collideNodes(), the impulses shared by the triangle's
+/// corners (soft_contacts.cpp). A body does not collide with itself.
+void collideSoftBodies(std::span<SoftBody> bodies, const ContactMaterials& materials, const Vec3& gravity, Real h);
+
+/// @brief Sets body.position and body.velocity to the nodes' centre of mass and its velocity.
+void measureCentreOfMass(SoftBody& body);
+
+}  // namespace stepwise
