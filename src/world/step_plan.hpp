@@ -85,6 +85,7 @@ struct StepPlan {
     PlanDecision colourOrder;      ///< Sequential impulse: do the passes take the contacts colour by colour (`ContactOrder`, src/dynamics/contact_colours.hpp)?
     PlanDecision regions;          ///< Do regions push the bodies inside them (src/forces/region.hpp)?
     PlanDecision killRegions;      ///< Are bodies that end a step in a Kill region removed (src/forces/kill_region.hpp)?
+    PlanDecision conveyors;        ///< Do contacts read the belt velocities of Conveyor regions (src/forces/conveyor.hpp)?
     SolverKind solver = SolverKind::SequentialImpulse; ///< The pipeline the scene runs (pipelineOrder()).
     int substeps = 1;              ///< Substeps of a sequential-impulse step.
     BroadphaseKind broadphase = BroadphaseKind::Auto; ///< The broadphase the scene asks for.
@@ -177,6 +178,12 @@ struct PlanInputs {
 ///   whole scene then keeps `Substeps`. A step in which some island gets
 ///   fewer runs its groups of islands on the plain loop (the fast path then
 ///   waits for a step in which every island gets the full count).
+/// - **Conveyors**: only a scene with a Conveyor region works out each body's
+///   belt velocity (after the regions find their bodies) and hands it to the
+///   contact preparation; without one, the preparation is given none, and
+///   every contact is made exactly as before belts existed. A Conveyor region
+///   pushes nothing, so alone it neither makes the forces run again in every
+///   substep nor keeps the islands at Substeps.
 /// - **Broadphase**: `Auto` takes brute force below kAutoBruteForceBelow
 ///   dynamic bodies (chooseBroadphase()); every broadphase returns the same
 ///   pairs in the same order.

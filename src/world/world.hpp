@@ -149,6 +149,7 @@ private:
     void findRegionMembers(bool throughBroadphase);  // world_regions.cpp
     RegionForces regionForces(Real substepTime) const;  // world_regions.cpp
     void removeKilledBodies();                       // world_regions.cpp
+    std::span<const Vec3> beltVelocities() const;    // world_regions.cpp
     BodySet bodies();
 
     WorldSettings settings_;
@@ -160,6 +161,7 @@ private:
     std::vector<Region> regions_;              ///< Volumes with effects (src/forces/region.hpp).
     RegionMembers regionMembers_;              ///< Who each region holds this step.
     std::vector<std::uint32_t> regionCandidates_;  ///< Scratch: the broadphase's answer for one region.
+    std::vector<Vec3> conveyorVelocities_;     ///< Each dynamic body's belt velocity this step (src/forces/conveyor.hpp).
     std::vector<RemovedBody> removedBodies_;   ///< What Kill regions took, for the run's summary.
     std::vector<Joint> joints_;
     ContactMaterials materials_;  ///< The combine rules and material pairs every contact's preparation reads.
