@@ -166,7 +166,7 @@ struct PlanInputs {
 /// - **Packed substeps**, inside the fast path: when the scene integrates
 ///   with symplectic Euler, accumulates impulses, and has no joints and no
 ///   forces that follow the bodies through the substeps, a step whose
-///   contacts all hold awake balls (no box, no kinematic body) runs its
+///   contacts all hold awake balls (no box, no moving kinematic body, no belt) runs its
 ///   substeps on the contact solver's packed records and writes the objects
 ///   once, at the end (src/fast/packed_substeps.hpp). Which road a step takes
 ///   is decided each step, after the contacts are found.
