@@ -15,6 +15,7 @@
 #include "forces/conveyor.hpp"
 #include "forces/random_force.hpp"
 #include "test_support.hpp"
+#include "trace_values.hpp"
 
 using namespace stepwise;
 using stepwise::test::emptyScene;
@@ -535,4 +536,20 @@ TEST_CASE("Conveyor records load, and one without a Velocity or with a field it 
     refused("Region, Name=r, Effect=Conveyor, Velocity=(1, 0, 0), Coefficient=1\n", "no Coefficient on an Effect=Conveyor region");
     refused("Region, Name=r, Effect=Conveyor, Velocity=(1, 0, 0), Strength=1\n", "no Strength on an Effect=Conveyor region");
     refused("Region, Name=r, Effect=Conveyer, Velocity=(1, 0, 0)\n", "Conveyor");
+}
+
+TEST_CASE("The trace shows the belt a contact's friction aims for, its normal part dropped", "[forces][regions][conveyor][trace]") {
+    Scene scene = emptyScene();
+    scene.planes.push_back(test::ground());
+    scene.dynamics.push_back(test::dynamicBox("crate", Vec3(0, 0.25, 0), Vec3(0.5), 1, 0.5));
+    scene.dynamics.push_back(test::dynamicBox("beside", Vec3(0, 0.25, 5), Vec3(0.5), 1, 0.5));  // off the belt
+    scene.regions.push_back(belt(Vec3(1.5, 0.7, -0.5)));
+    const std::string trace = test::traceOf(scene, {"--steps", "1", "--stage", "prepare-constraints", "--digits", "6"});
+    INFO(trace);
+    const std::string onBelt = test::traceLine(trace, "step 1 prepare-constraints crate|ground");
+    REQUIRE(!onBelt.empty());
+    CHECK(test::traceValue(onBelt, "v_s") == std::vector<double>{1.5, 0, -0.5});  // v_s = u − (u·n)·n, n = ∓y
+    const std::string offBelt = test::traceLine(trace, "step 1 prepare-constraints beside|ground");
+    REQUIRE(!offBelt.empty());
+    CHECK(offBelt.find("belt") == std::string::npos);
 }

@@ -78,6 +78,9 @@ public:
     const std::vector<Region>& regions() const { return regions_; }  ///< Volumes with effects (src/forces/region.hpp).
     /// @brief Which bodies each region held in the last step (src/forces/region.hpp, RegionMembers).
     const RegionMembers& regionMembers() const { return regionMembers_; }
+    /// @brief Each dynamic body's conveyor belt velocity in the last step, m/s (zero: on no belt;
+    /// src/forces/conveyor.hpp); empty in a scene without a Conveyor region.
+    std::span<const Vec3> beltVelocities() const;  // world_regions.cpp
     /// @brief The bodies Kill regions have removed so far, in the order they went (src/forces/kill_region.hpp).
     const std::vector<RemovedBody>& removedBodies() const { return removedBodies_; }
     const IslandWorkspace& islands() const { return islandWorkspace_; }  ///< Islands of the last step (islandOf()).
@@ -149,7 +152,6 @@ private:
     void findRegionMembers(bool throughBroadphase);  // world_regions.cpp
     RegionForces regionForces(Real substepTime) const;  // world_regions.cpp
     void removeKilledBodies();                       // world_regions.cpp
-    std::span<const Vec3> beltVelocities() const;    // world_regions.cpp
     BodySet bodies();
 
     WorldSettings settings_;
