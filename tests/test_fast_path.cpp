@@ -763,3 +763,42 @@ TEST_CASE("A ball's contact with a kinematic body is round while the body is at 
     const DynamicObject& onStill = world.dynamics()[0];
     CHECK(std::abs(onStill.velocity.x) < Real(1e-9));  // nothing pushes it sideways: it stays put
 }
+
+TEST_CASE("Boxes and balls on a conveyor belt take the fast path with the plain numbers", "[fast][lanes][regions][conveyor]") {
+    // A belt's contacts keep stored rows whose tangent surface speeds carry the belt (src/forces/conveyor.hpp):
+    // the lanes read those numbers as the plain passes do, to the bit.
+    SECTION("boxes and balls carried off the end of a belt over a still bed, onto the floor") {
+        std::string text = "World, Duration=2, Sleep=false\n"
+                           "CollisionPlane, Name=floor, Position=(0,0,0), Normal=(0,1,0)\n"
+                           "KinematicsObject, Name=bed, Shape=Box, Position=(0,0.25,0), Scale=(3,0.5,3)\n"
+                           "Region, Name=belt, Shape=Box, Position=(0,1.5,0), Scale=(3,2,3), Effect=Conveyor, "
+                           "Velocity=(1.2,0.5,0.3)\n";
+        for (int i = 0; i < 9; ++i) {
+            const std::string at = "(" + std::to_string(-0.8 + 0.8 * (i % 3)) + "," + std::to_string(0.75 + 0.6 * (i / 3)) +
+                                   "," + std::to_string(-0.6 + 0.6 * (i % 3) + 0.05 * (i / 3)) + ")";
+            text += i % 4 == 2 ? "DynamicObject, Name=ball" + std::to_string(i) +
+                                     ", Shape=Sphere, Radius=0.2, Mass=1, Friction=0.5, Position=" + at + "\n"
+                               : "DynamicObject, Name=box" + std::to_string(i) +
+                                     ", Shape=Box, Scale=(0.5,0.5,0.5), Mass=" + std::to_string(1 + i % 3) +
+                                     ", Friction=0.7, Position=" + at + "\n";
+        }
+        const FastPathCounts counts = requireSameOnBothRoads(sceneFrom(text), 120);
+        CHECK(counts.steps == 120);
+        INFO(counts.boxLaneSteps << " steps with box lanes");
+        CHECK(counts.boxLaneSteps > 0);
+    }
+    SECTION("a rain of balls, half of them onto a belt: its contacts keep the steps off the packed records") {
+        std::string text = "World, Duration=2, Sleep=false\n"
+                           "CollisionPlane, Name=floor, Position=(0,0,0), Normal=(0,1,0)\n"
+                           "Region, Name=belt, Shape=Box, Position=(-1,1,0), Scale=(2,2,4), Effect=Conveyor, Velocity=(0,0,-0.8)\n";
+        for (int i = 0; i < 24; ++i) {
+            const double x = -1.8 + 0.6 * (i % 6), z = -0.9 + 0.6 * ((i / 6) % 4), y = 0.25 + 0.1 * (i % 3);
+            text += "DynamicObject, Name=b" + std::to_string(i) + ", Shape=Sphere, Radius=0.2, Mass=" +
+                    std::to_string(1 + i % 3) + ", Position=(" + std::to_string(x) + "," + std::to_string(y) + "," +
+                    std::to_string(z) + "), Elasticity=0.3, Friction=0.6\n";
+        }
+        const FastPathCounts counts = requireSameOnBothRoads(sceneFrom(text), 90);
+        CHECK(counts.steps == 90);
+        CHECK(counts.packedSteps < counts.steps);  // a ball on the belt has stored rows: those steps run on the objects
+    }
+}

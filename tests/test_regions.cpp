@@ -12,8 +12,10 @@
 
 #include "config/scene_loader.hpp"
 #include "forces/buoyancy.hpp"
+#include "forces/conveyor.hpp"
 #include "forces/random_force.hpp"
 #include "test_support.hpp"
+#include "trace_values.hpp"
 
 using namespace stepwise;
 using stepwise::test::emptyScene;
@@ -356,4 +358,195 @@ TEST_CASE("Region records load, and a wrong one is refused with its line and col
     refused("DynamicObject, Name=pill, Shape=Capsule\nRegion, Name=r, Shape=HalfSpace, Effect=Buoyancy, Density=1000\n",
             "only spheres and boxes");
     refused("Region, Name=r, Effect=Drag, Law=Cubic, Coefficient=1\n", "Law");
+}
+
+// Conveyor belts (src/forces/conveyor.hpp): no force, a moving surface for friction. Against
+// Coulomb's law: a body set down at rest on a belt of speed u is pushed by friction μ·m·g until
+// its contact point moves with the belt. Tolerances: speeds within 1 % of u, times within 2 steps.
+namespace {
+
+/// A belt over the floor y = 0: a Conveyor region 40 m along x, 4 m across z, 2 m high, moving at @p u.
+Region belt(Vec3 u) {
+    Region region;
+    region.name = "belt";
+    region.shape = RegionShape::Box;
+    region.position = Vec3(0, 1, 0);
+    region.halfExtents = Vec3(20, 1, 2);
+    region.effect = RegionEffect::Conveyor;
+    region.velocity = u;
+    return region;
+}
+
+constexpr Real kBeltStep = Real(1) / 60;  // the steps of emptyScene(), s
+
+}  // namespace
+
+TEST_CASE("A box set down on a belt slides at mu g until it moves with the belt, at t = u / (mu g)",
+          "[forces][regions][conveyor]") {
+    const SolverKind solver = GENERATE(SolverKind::SequentialImpulse, SolverKind::Impulse);
+    INFO("Solver=" << toString(solver));
+    const Real mu = 0.4, u = 2, h = kBeltStep;  // the floor's Friction is 1: the pair's μ is the box's
+    Scene scene = emptyScene();
+    scene.settings.solver = solver;
+    scene.planes.push_back(test::ground());
+    scene.dynamics.push_back(test::dynamicBox("crate", Vec3(0, 0.25, 0), Vec3(0.5), 1, mu));
+    scene.dynamics.push_back(test::dynamicBox("beside", Vec3(0, 0.25, 5), Vec3(0.5), 1, mu));  // off the belt
+    World still(scene);  // the same scene without the belt
+    scene.regions.push_back(belt(Vec3(u, 0, 0)));
+    World world(std::move(scene));
+    REQUIRE(world.plan().conveyors.runs);
+    const Real arrival = u / (mu * kG);  // 0.51 s: 30.6 steps
+    Real reached = -1;
+    for (int n = 1; n <= 120; ++n) {
+        world.step();
+        still.step();
+        const Real t = world.time();
+        const DynamicObject& crate = world.dynamics()[0];
+        INFO("t = " << t);
+        if (reached < 0 && crate.velocity.x >= Real(0.99) * u) reached = t;
+        if (t < arrival - 2 * h) REQUIRE(crate.velocity.x == Approx(mu * kG * t).margin(0.01 * u));
+        if (t > arrival + 2 * h) REQUIRE(crate.velocity.x == Approx(u).margin(0.01 * u));
+        REQUIRE(std::abs(crate.velocity.z) < 0.01 * u);  // carried along the belt, not across it
+        REQUIRE(std::abs(crate.velocity.y) < 0.01 * u);  // nor lifted or pressed down
+        // Off the belt, a box settles on the floor as in a world without one, to 1e-9 (not to the bit: a
+        // box sliding elsewhere, belt or no belt, changes the rounding of a resting one)
+        REQUIRE(glm::length(world.dynamics()[1].position - still.dynamics()[1].position) < Real(1e-9));
+        REQUIRE(glm::length(world.dynamics()[1].velocity - still.dynamics()[1].velocity) < Real(1e-9));
+    }
+    // v reaches 0.99·u at 0.99·t*: the first step at or after that
+    CHECK(std::abs(reached - Real(0.99) * arrival) <= 2 * h);
+}
+
+TEST_CASE("A ball on a belt rolls up to 2u/7, its lowest point moving with the belt", "[forces][regions][conveyor]") {
+    // The friction impulse J that brings the contact point to the belt's speed (v + ω·r = u, ω about z)
+    // gives Δv = J/m and Δ(ω·r) = 5J/(2m) (I = 2/5·m·r²): v = 2u/7. Sliding until then, the point's
+    // speed grows at μg + 5μg/2 = 7μg/2, so it arrives at t = 2u/(7μg).
+    const SolverKind solver = GENERATE(SolverKind::SequentialImpulse, SolverKind::Impulse);
+    INFO("Solver=" << toString(solver));
+    const Real mu = 0.2, u = 3, r = 0.25, h = kBeltStep;
+    Scene scene = emptyScene();
+    scene.settings.solver = solver;
+    scene.planes.push_back(test::ground());
+    scene.dynamics.push_back(sphere("ball", Vec3(0, r, 0), Vec3(0), r, 2, 0, mu));
+    scene.regions.push_back(belt(Vec3(u, 0, 0)));
+    World world(std::move(scene));
+    const Real arrival = 2 * u / (7 * mu * kG);  // 0.437 s: 26.2 steps
+    const Real rolling = 2 * u / 7;
+    Real reached = -1;
+    for (int n = 1; n <= 90; ++n) {
+        world.step();
+        const DynamicObject& ball = world.dynamics()[0];
+        if (reached < 0 && ball.velocity.x >= Real(0.99) * rolling) reached = world.time();
+    }
+    const DynamicObject& ball = world.dynamics()[0];
+    CHECK(ball.velocity.x == Approx(rolling).epsilon(0.01));
+    CHECK(ball.velocity.x + ball.angularVelocity.z * r == Approx(u).epsilon(0.01));  // the lowest point's speed
+    CHECK(std::abs(reached - Real(0.99) * arrival) <= 2 * h);
+}
+
+TEST_CASE("A belt's velocity counts in the contact's plane only: its part along the normal is dropped",
+          "[forces][regions][conveyor]") {
+    // Over a floor of normal (0, 1, 0), u = (2, 1, 0) and (2, 0, 0) have the same tangential part,
+    // v_s = u − (u·n)·n, to the bit: the same run, not a box lifted by the belt.
+    const auto run = [](Vec3 u) {
+        Scene scene = emptyScene();
+        scene.planes.push_back(test::ground());
+        scene.dynamics.push_back(test::dynamicBox("crate", Vec3(0, 0.25, 0), Vec3(0.5), 1, 0.5));
+        scene.dynamics.push_back(sphere("ball", Vec3(2, 0.2, 0), Vec3(0), 0.2, 1, 0, 0.5));
+        scene.regions.push_back(belt(u));
+        return World(std::move(scene));
+    };
+    World tilted = run(Vec3(2, 1, 0));
+    World flat = run(Vec3(2, 0, 0));
+    for (int n = 0; n < 60; ++n) {
+        tilted.step();
+        flat.step();
+        test::requireSameState(tilted, flat);
+    }
+    CHECK(flat.dynamics()[0].velocity.x == Approx(2).epsilon(0.01));
+    CHECK(conveyorSurfaceVelocity(Vec3(2, 1, 0), Vec3(0, -1, 0)) == Vec3(2, 0, 0));
+}
+
+TEST_CASE("Dynamic-dynamic contacts keep their own friction: a crate on a pallet rides at u, not 2u",
+          "[forces][regions][conveyor]") {
+    // Both centres are inside the belt, but only the pallet's contact with the floor takes the belt's
+    // speed: the crate is carried by the pallet's friction (μ = 0.4·0.4 between the two) up to u.
+    // Were the belt applied between them too, the crate would end at 2u.
+    const Real u = 1.5;
+    Scene scene = emptyScene();
+    scene.planes.push_back(test::ground());
+    scene.dynamics.push_back(test::dynamicBox("pallet", Vec3(0, 0.25, 0), Vec3(1.2, 0.5, 1.2), 10, 0.4));
+    scene.dynamics.push_back(test::dynamicBox("crate", Vec3(0, 0.75, 0), Vec3(0.5), 1, 0.4));
+    scene.regions.push_back(belt(Vec3(u, 0, 0)));
+    World world(std::move(scene));
+    for (int n = 0; n < 180; ++n) world.step();  // the crate arrives after u/(0.16 g) = 0.96 s
+    CHECK(world.dynamics()[0].velocity.x == Approx(u).epsilon(0.01));
+    CHECK(world.dynamics()[1].velocity.x == Approx(u).epsilon(0.01));
+}
+
+TEST_CASE("A belt on a kinematic body adds to the body's own surface velocity", "[forces][regions][conveyor]") {
+    // A still slab under a belt moves its surface at u; one that itself moves at w at u + w.
+    const SolverKind solver = GENERATE(SolverKind::SequentialImpulse, SolverKind::Impulse);
+    INFO("Solver=" << toString(solver));
+    const Vec3 u(2, 0, 0);
+    const Vec3 w(0, 0, 1);
+    Scene scene = emptyScene();
+    scene.kinematics.push_back(test::kinematicBox("still", Vec3(0, -0.25, 0), Vec3(10, 0.5, 10)));
+    scene.kinematics.push_back(test::kinematicBox("moving", Vec3(20, -0.25, 0), Vec3(10, 0.5, 10), w));
+    scene.dynamics.push_back(test::dynamicBox("on_still", Vec3(0, 0.25, 0), Vec3(0.5), 1, 0.5));
+    scene.dynamics.push_back(test::dynamicBox("on_moving", Vec3(20, 0.25, 0), Vec3(0.5), 1, 0.5));
+    Region region = belt(u);
+    region.position = Vec3(10, 1, 0);
+    region.halfExtents = Vec3(20, 1, 10);
+    scene.regions.push_back(region);
+    World world(std::move(scene));
+    for (int n = 0; n < 90; ++n) world.step();  // both arrive within |u + w|/(μ g) = 0.46 s
+    CHECK(glm::length(world.dynamics()[0].velocity - u) <= 0.01 * glm::length(u));
+    CHECK(glm::length(world.dynamics()[1].velocity - (u + w)) <= 0.01 * glm::length(u + w));
+}
+
+TEST_CASE("A Conveyor region is planned apart: it pushes nothing, so forces stay once a step",
+          "[forces][regions][conveyor][plan]") {
+    Scene scene = emptyScene();
+    scene.planes.push_back(test::ground());
+    scene.dynamics.push_back(sphere("ball", Vec3(0, 0.5, 0)));
+    const StepPlan without = World(scene).plan();
+    CHECK_FALSE(without.conveyors.runs);
+    scene.regions.push_back(belt(Vec3(1, 0, 0)));
+    const StepPlan with = World(scene).plan();
+    CHECK(with.conveyors.runs);
+    CHECK(with.regions.runs);              // the regions find their bodies: the belt needs to know who is on it
+    CHECK_FALSE(with.substepForces.runs);  // but it adds no force, so none is worked out again in the substeps
+    CHECK_THAT(describeStepPlan(with), Catch::Contains("conveyors") && Catch::Contains("src/forces/conveyor.cpp"));
+}
+
+TEST_CASE("Conveyor records load, and one without a Velocity or with a field it does not use is refused",
+          "[forces][regions][conveyor][config]") {
+    const Scene scene = parseScene("World, Gravity=(0, -9.81, 0)\n"
+                                   "Region, Name=belt, Shape=Box, Scale=(8, 1, 2), Effect=Conveyor, Velocity=(2, 0, 0)\n",
+                                   "belt.scene");
+    REQUIRE(scene.regions.size() == 1);
+    CHECK(scene.regions[0].effect == RegionEffect::Conveyor);
+    CHECK(scene.regions[0].velocity == Vec3(2, 0, 0));
+    const auto refused = test::checkRefused;
+    refused("Region, Name=r, Effect=Conveyor\n", "a Velocity field (every Effect=Conveyor region needs one)");
+    refused("Region, Name=r, Effect=Conveyor, Velocity=(1, 0, 0), Coefficient=1\n", "no Coefficient on an Effect=Conveyor region");
+    refused("Region, Name=r, Effect=Conveyor, Velocity=(1, 0, 0), Strength=1\n", "no Strength on an Effect=Conveyor region");
+    refused("Region, Name=r, Effect=Conveyer, Velocity=(1, 0, 0)\n", "Conveyor");
+}
+
+TEST_CASE("The trace shows the belt a contact's friction aims for, its normal part dropped", "[forces][regions][conveyor][trace]") {
+    Scene scene = emptyScene();
+    scene.planes.push_back(test::ground());
+    scene.dynamics.push_back(test::dynamicBox("crate", Vec3(0, 0.25, 0), Vec3(0.5), 1, 0.5));
+    scene.dynamics.push_back(test::dynamicBox("beside", Vec3(0, 0.25, 5), Vec3(0.5), 1, 0.5));  // off the belt
+    scene.regions.push_back(belt(Vec3(1.5, 0.7, -0.5)));
+    const std::string trace = test::traceOf(scene, {"--steps", "1", "--stage", "prepare-constraints", "--digits", "6"});
+    INFO(trace);
+    const std::string onBelt = test::traceLine(trace, "step 1 prepare-constraints crate|ground");
+    REQUIRE(!onBelt.empty());
+    CHECK(test::traceValue(onBelt, "v_s") == std::vector<double>{1.5, 0, -0.5});  // v_s = u − (u·n)·n, n = ∓y
+    const std::string offBelt = test::traceLine(trace, "step 1 prepare-constraints beside|ground");
+    REQUIRE(!offBelt.empty());
+    CHECK(offBelt.find("belt") == std::string::npos);
 }

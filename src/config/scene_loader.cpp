@@ -1505,7 +1505,7 @@ private:
         if (!values.isSet("Effect")) {
             sink_.report(line.number, recordName.column, "Region", "an Effect field (every region needs one)",
                          std::string(recordName.text),
-                         "say what it does: Effect=Drag, Wind, Gravity, Buoyancy, RandomForce or Kill");
+                         "say what it does: Effect=Drag, Wind, Gravity, Buoyancy, RandomForce, Kill or Conveyor");
             return;
         }
         region.effect = values.choice<RegionEffect>("Effect", kEffectChoices, RegionEffect::Drag);
@@ -1534,6 +1534,7 @@ private:
             case RegionEffect::Buoyancy: uses = {{"Density", true}, {"Coefficient", false}, {"AngularCoefficient", false}, {"Law", false}, {"Velocity", false}}; break;
             case RegionEffect::RandomForce: uses = {{"Strength", true}, {"Seed", false}}; break;
             case RegionEffect::Kill: break;
+            case RegionEffect::Conveyor: uses = {{"Velocity", true}}; break;
         }
         constexpr std::string_view kEffectFields[] = {"Law", "Coefficient", "AngularCoefficient", "Velocity", "Gravity", "Density", "Strength", "Seed"};
         for (const std::string_view field : kEffectFields) {

@@ -249,7 +249,7 @@ constexpr FieldSpec kRegionFields[] = {
     {"Law",                FieldKind::DragLaw,     kNamedOnly, Range::Any},            // Linear (default) or Quadratic
     {"Coefficient",        FieldKind::Number,      kNamedOnly, Range::NonNegative, kDragHint},  // N·s/m or kg/m
     {"AngularCoefficient", FieldKind::Number,      kNamedOnly, Range::NonNegative, kDragHint},  // N·m·s
-    {"Velocity",           FieldKind::Vector,      kNamedOnly, Range::Any},            // m/s: the fluid's or the wind's
+    {"Velocity",           FieldKind::Vector,      kNamedOnly, Range::Any},            // m/s: the fluid's, the wind's or the belt's
     {"Gravity",            FieldKind::Vector,      kNamedOnly, Range::Any},            // m/s²: inside a Gravity region
     {"Density",            FieldKind::Number,      kNamedOnly, Range::Positive, kFluidDensityHint},  // kg/m³: the fluid's
     {"Strength",           FieldKind::Number,      kNamedOnly, Range::Positive, kStrengthHint}, // N: RandomForce's largest
@@ -456,13 +456,14 @@ const std::array<Choice<RegionShape>, 3> kRegionShapeChoices = {{
     {"HalfSpace", RegionShape::HalfSpace},
 }};
 
-const std::array<Choice<RegionEffect>, 6> kEffectChoices = {{
+const std::array<Choice<RegionEffect>, 7> kEffectChoices = {{
     {"Drag", RegionEffect::Drag},
     {"Wind", RegionEffect::Wind},
     {"Gravity", RegionEffect::Gravity},
     {"Buoyancy", RegionEffect::Buoyancy},
     {"RandomForce", RegionEffect::RandomForce},
     {"Kill", RegionEffect::Kill},
+    {"Conveyor", RegionEffect::Conveyor},
 }};
 
 const std::array<Choice<DragLaw>, 2> kDragLawChoices = {{

@@ -126,8 +126,8 @@ extern const std::array<Choice<ContactOrder>, 3> kContactOrderChoices;
 /// @brief Accepted spellings of RegionShape (any case): Box, Sphere, HalfSpace.
 extern const std::array<Choice<RegionShape>, 3> kRegionShapeChoices;
 
-/// @brief Accepted spellings of RegionEffect (any case): Drag, Wind, Gravity, Buoyancy, RandomForce, Kill.
-extern const std::array<Choice<RegionEffect>, 6> kEffectChoices;
+/// @brief Accepted spellings of RegionEffect (any case): Drag, Wind, Gravity, Buoyancy, RandomForce, Kill, Conveyor.
+extern const std::array<Choice<RegionEffect>, 7> kEffectChoices;
 
 /// @brief Accepted spellings of DragLaw (any case): Linear, Quadratic.
 extern const std::array<Choice<DragLaw>, 2> kDragLawChoices;

@@ -113,7 +113,8 @@ inline constexpr std::uint32_t kRoundContact = 0xffffffffu;
 /// the levers ℓ_A = r_A·n and ℓ_B = r_B·n (solver_body.hpp, "Rows of a round
 /// contact"; ℓ_B = 0 for a static B, whose m⁻¹ and I⁻¹ are zero). Such a *round*
 /// contact has `rows == kRoundContact` and a pass computes its rows; any other
-/// (a box, a moving kinematic body, whose surface speed v + ω × r enters J·v)
+/// (a box, a moving kinematic body, whose surface speed v + ω × r enters J·v,
+/// or a surface under a conveyor belt, whose belt speed does: src/forces/conveyor.hpp)
 /// keeps them in the side array SolverWorkspace::rows, which a pass reads at
 /// index `rows`. A kinematic body at rest is measured as a plane is, from the
 /// fixed pose at the origin: its anchor is a fixed point for the whole step.
@@ -163,12 +164,12 @@ struct SolverContact {
     std::uint32_t turningAnchors = kNoTurningAnchors; ///< Index in SolverWorkspace::turningAnchors, if an anchor turns.
 };
 
-/// @brief The stored Jacobian rows of a contact that is not round (a box, a moving kinematic body), read by every pass.
+/// @brief The stored Jacobian rows of a contact that is not round (a box, a moving kinematic body, a belt), read by every pass.
 struct ContactRows {
     ContactRow normal;                    ///< J's angular parts along n (solver_body.hpp), fixed for the step.
     ContactRow tangent[2];                ///< The same along each tangent.
     Real normalSurfaceSpeed = 0;          ///< A kinematic B's surface velocity along n, m/s (zero for a plane or a dynamic B).
-    Real tangentSurfaceSpeed[2] = {0, 0}; ///< The same along each tangent, m/s.
+    Real tangentSurfaceSpeed[2] = {0, 0}; ///< The same along each tangent, plus a conveyor belt's (conveyor.hpp), m/s.
 };
 
 /// @brief The anchors of a contact that turn with their body, in body frames (zero for a side that does not turn), m.
@@ -368,10 +369,18 @@ SolverFootprint solverFootprint(const SolverWorkspace& workspace);
 /// contacts the work is cut into ranges of contacts; each range keeps the
 /// rows and anchors it makes in arrays of its own, which are then joined in
 /// range order, so every number and index is what one thread gives.
+///
+/// A conveyor belt (src/forces/conveyor.hpp): a contact of a body on a belt
+/// with a static or kinematic surface gets stored rows, whose tangent surface
+/// speeds carry the belt's velocity in the contact's plane, v_s·t_k, as a moving
+/// kinematic body's carry its own: the passes, plain and fast, read those numbers
+/// and nothing else of the belt.
 /// @param h full step, s (for the resting rule)
 /// @param pool threads to share the work (nullptr: the calling thread alone)
+/// @param beltVelocities each dynamic body's belt velocity u, m/s (conveyorVelocities()); empty: no belt in the scene
 void prepareContacts(const BodySet& bodies, std::span<const Contact> contacts, std::span<const BodyLink> links, Real h,
-                     bool warmStart, SolverWorkspace& workspace, ThreadPool* pool = nullptr);
+                     bool warmStart, SolverWorkspace& workspace, ThreadPool* pool = nullptr,
+                     std::span<const Vec3> beltVelocities = {});
 
 /// @brief Records every body's pose: the separations of the next solveContacts() are measured there.
 ///

@@ -96,7 +96,7 @@ struct ImpulseReport {
 struct ContactConstraint {
     DynamicObject* a = nullptr;    ///< Body A (always dynamic).
     DynamicObject* b = nullptr;    ///< Body B when dynamic, else nullptr.
-    Vec3 staticVelocity{0, 0, 0};  ///< Velocity of B's surface at the contact when B is kinematic or a plane, m/s.
+    Vec3 staticVelocity{0, 0, 0};  ///< Velocity of B's surface at the contact when B is kinematic or a plane (with a belt's, conveyor.hpp), m/s.
     Mat3 inverseInertiaA{1};       ///< A's world inverse inertia (fixed during the passes), 1/(kg·m²).
     Mat3 inverseInertiaB{0};       ///< B's, or zero.
     Real inverseMassA = 0;         ///< A's 1/m, 1/kg.
@@ -245,8 +245,12 @@ struct ContactWorkspace {
 /// @param warmStart   start each contact found again from last step's impulses
 /// @param workspace   scratch arrays, reused between steps
 /// @param reports     optional, one report per contact (size must match), may be empty
+/// @param beltVelocities each dynamic body's conveyor belt u, m/s (conveyorVelocities(), src/forces/conveyor.hpp):
+///                    a contact with a static or kinematic surface adds u's part in its tangent plane to the
+///                    surface's velocity, after the bounce is decided; empty: no belt in the scene
 void resolveImpulses(const BodySet& bodies, std::span<const Contact> contacts, Real h, int iterations,
-                     bool warmStart, ContactWorkspace& workspace, std::span<ImpulseReport> reports = {});
+                     bool warmStart, ContactWorkspace& workspace, std::span<ImpulseReport> reports = {},
+                     std::span<const Vec3> beltVelocities = {});
 
 /// @brief Stage 7: moves supported bodies as their integrator would have, then pushes overlapping bodies apart.
 ///

@@ -9,6 +9,7 @@
 #include "dynamics/contact_body.hpp"
 #include "dynamics/contact_colours.hpp"
 #include "dynamics/contact_rows.hpp"
+#include "forces/conveyor.hpp"
 #include "objects/inertia.hpp"
 
 namespace stepwise {
@@ -84,9 +85,10 @@ RoundedAnchor roundedAnchor(const Body& body, const Vec3& lever) {
 }
 
 /// The contact's pass record (returned) and its start record @p start; its stored rows and turning
-/// anchors, if it has them, go to @p out, and the record holds their indices there.
+/// anchors, if it has them, go to @p out, and the record holds their indices there. @p beltVelocities
+/// are the dynamic bodies' conveyor belts (prepareContacts()), empty in a scene without one.
 SolverContact prepareOne(const BodySet& bodies, const Contact& contact, Real h, const SolverWorkspace& w,
-                         ContactStart& start, PreparedSideArrays& out) {
+                         std::span<const Vec3> beltVelocities, ContactStart& start, PreparedSideArrays& out) {
     SolverContact c;
     const DynamicObject& a = bodies.dynamics[contact.a];
     const ContactBody other = contactBody(bodies, contact.b, contact.point);
@@ -158,8 +160,10 @@ SolverContact prepareOne(const BodySet& bodies, const Contact& contact, Real h, 
     tangentBasis(c.normal, c.tangent);
     // J's angular parts and K, once per step: r, d and I⁻¹ are fixed through it (solver_body.hpp).
     // A ball on a ball, a plane or a kinematic body at rest (no anchor turns, no surface moves):
-    // levers along n, rows computed by the pass.
-    const bool surfaceMovesB = contact.b.kind == BodyKind::Kinematic && !bodies.kinematics[contact.b.index].atRest();
+    // levers along n, rows computed by the pass. A surface under a conveyor belt moves: stored rows.
+    const Vec3* belt = beltUnder(beltVelocities, contact.a, other.dynamic != nullptr);
+    const bool surfaceMovesB =
+        belt != nullptr || (contact.b.kind == BodyKind::Kinematic && !bodies.kinematics[contact.b.index].atRest());
     if (!turnsA && !turnsB && !surfaceMovesB) {
         // The levers from the local vectors: read back from `start`, a 16-byte load of a vector
         // just written as 8-byte stores waits for them (the processor cannot forward it).
@@ -174,11 +178,15 @@ SolverContact prepareOne(const BodySet& bodies, const Contact& contact, Real h, 
         rows.normal = makeContactRow(inertiaA, inertiaB, start.rA, start.rB, c.normal);
         c.normalMass = Real(1) / inverseEffectiveMass(bodyA, bodyB, rows.normal);
         rows.normalSurfaceSpeed = glm::dot(start.staticVelocity, c.normal);
+        // Friction's target: the surface's velocity in the tangent plane, a belt's included (conveyor.hpp).
+        // The belt has no part along n, so the normal row and the bounce never see it.
+        Vec3 tangentialSurface = start.staticVelocity;
+        if (belt != nullptr) tangentialSurface += conveyorSurfaceVelocity(*belt, c.normal);
         Real tangentInverseMass[2];
         for (int k = 0; k < 2; ++k) {
             rows.tangent[k] = makeContactRow(inertiaA, inertiaB, start.rA, start.rB, c.tangent[k]);
             tangentInverseMass[k] = inverseEffectiveMass(bodyA, bodyB, rows.tangent[k]);
-            rows.tangentSurfaceSpeed[k] = glm::dot(start.staticVelocity, c.tangent[k]);
+            rows.tangentSurfaceSpeed[k] = glm::dot(tangentialSurface, c.tangent[k]);
         }
         // One mass for the pair, or a sliding box's friction is not against its sliding (frictionPairMass())
         c.tangentMass[0] = c.tangentMass[1] = frictionPairMass(tangentInverseMass[0], tangentInverseMass[1]);
@@ -229,7 +237,7 @@ ContactSolverSettings makeContactSolverSettings(const WorldSettings& settings, R
 }
 
 void prepareContacts(const BodySet& bodies, std::span<const Contact> contacts, std::span<const BodyLink> links, Real h,
-                     bool warmStart, SolverWorkspace& workspace, ThreadPool* pool) {
+                     bool warmStart, SolverWorkspace& workspace, ThreadPool* pool, std::span<const Vec3> beltVelocities) {
     SolverWorkspace& w = workspace;
     w.dynamics = bodies.dynamics;
     makeBodyRecords(bodies, contacts, links, w);  // last step's records are dropped
@@ -249,7 +257,7 @@ void prepareContacts(const BodySet& bodies, std::span<const Contact> contacts, s
         std::size_t nextCached = 0;  // the contacts come in key order, mostly: each lookup starts where the last ended
         for (std::size_t i = first; i < last; ++i) {
             SolverContact& c = w.contacts[i];
-            c = prepareOne(bodies, contacts[i], h, w, w.starts[i], out);
+            c = prepareOne(bodies, contacts[i], h, w, beltVelocities, w.starts[i], out);
             if (!warmStart) continue;
             if (const CachedImpulse* cached = findCachedImpulse(w.previousImpulses, keyOf(contacts[i]), nextCached)) {
                 c.normalImpulse = cached->normalImpulse;

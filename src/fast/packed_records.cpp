@@ -9,7 +9,7 @@
 namespace stepwise {
 
 bool packRecords(SolverWorkspace& solver, FastWorkspace& fast) {
-    if (!solver.otherContacts.empty()) return false;  // rows of a box or a moving kinematic body: the substeps on the objects
+    if (!solver.otherContacts.empty()) return false;  // rows of a box, a moving kinematic body or a belt: the substeps on the objects
     const std::size_t count = solver.bodies.size();
     fast.centres.resize(count);
     fast.orientations.resize(count);

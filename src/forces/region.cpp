@@ -82,6 +82,7 @@ void applyRegions(std::span<DynamicObject> bodies, const RegionForces& in) {
     if (in.members == nullptr) return;
     for (std::size_t r = 0; r < in.regions.size(); ++r) {
         const Region& region = in.regions[r];
+        if (region.effect == RegionEffect::Conveyor) continue;  // no force: it acts through the contacts (conveyor.hpp)
         for (const std::uint32_t i : in.members->of(r)) {
             DynamicObject& body = bodies[i];
             if (body.asleep) continue;  // a sleeper is not integrated: a force on it would wait in its acceleration
@@ -92,6 +93,7 @@ void applyRegions(std::span<DynamicObject> bodies, const RegionForces& in) {
                 case RegionEffect::Buoyancy: addBuoyancy(body, region, in.worldGravity, in.substepTime); break;
                 case RegionEffect::RandomForce: addRandomForce(body, i, region, in.step); break;
                 case RegionEffect::Kill: break;  // the World removes these bodies at the end of the step
+                case RegionEffect::Conveyor: break;  // skipped above
             }
         }
     }
@@ -105,6 +107,7 @@ const char* toString(RegionEffect effect) {
         case RegionEffect::Buoyancy: return "Buoyancy";
         case RegionEffect::RandomForce: return "RandomForce";
         case RegionEffect::Kill: return "Kill";
+        case RegionEffect::Conveyor: return "Conveyor";
     }
     return "?";
 }

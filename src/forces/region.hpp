@@ -15,6 +15,7 @@
 /// | `Buoyancy`    | buoyancy.cpp          | any part (the submerged part) | F = −ρ·V_sub·g at the centre of buoyancy |
 /// | `RandomForce` | random_force.cpp      | centre | a seeded force of at most Strength, new every step |
 /// | `Kill`        | kill_region.cpp       | centre | the body is removed at the end of the step |
+/// | `Conveyor`    | conveyor.cpp          | centre | no force: its contacts with static surfaces take v_s = u − (u·n)·n as the surface's velocity |
 ///
 /// Which bodies are inside is decided once a step, from where they are at its
 /// start (the World asks its broadphase for the bodies whose boxes meet the
@@ -49,6 +50,7 @@ enum class RegionEffect : std::uint8_t {
     Buoyancy,     ///< Archimedes' push on the submerged part, with the fluid's drag (buoyancy.hpp).
     RandomForce,  ///< A seeded random push, new every step (random_force.hpp).
     Kill,         ///< Bodies entering are removed from the world (kill_region.hpp).
+    Conveyor,     ///< The static surfaces under the bodies move at `velocity`, for friction (conveyor.hpp).
 };
 
 /// @brief How drag grows with speed.
@@ -69,7 +71,7 @@ struct Region {
     DragLaw law = DragLaw::Linear;            ///< Drag, Wind, Buoyancy: how the drag grows with speed.
     Real coefficient = 0;                     ///< Drag, Wind, Buoyancy: c, N·s/m (Linear) or kg/m (Quadratic).
     Real angularCoefficient = 0;              ///< Drag, Wind, Buoyancy: c_ω of the torque −c_ω·ω, N·m·s.
-    Vec3 velocity{0, 0, 0};                   ///< Drag, Buoyancy: the fluid's velocity (a current); Wind: the air's, m/s.
+    Vec3 velocity{0, 0, 0};                   ///< Drag, Buoyancy: the fluid's velocity (a current); Wind: the air's; Conveyor: the belt's, m/s.
     Vec3 gravity{0, 0, 0};                    ///< Gravity: the acceleration inside, m/s².
     Real density = 0;                         ///< Buoyancy: the fluid's density, kg/m³ (water 1000).
     Real strength = 0;                        ///< RandomForce: the largest force, N.
@@ -123,6 +125,7 @@ struct RegionForces {
 ///
 /// Run after applyUniformForces(), springs and attractors, which start and add to them.
 /// A Kill region adds nothing here: the World removes its bodies at the end of the step.
+/// Nor does a Conveyor region: it acts through the contacts' friction (conveyor.hpp).
 void applyRegions(std::span<DynamicObject> bodies, const RegionForces& in);
 
 /// @brief The word a scene file uses for an effect ("Drag", "Wind", ...).

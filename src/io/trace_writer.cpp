@@ -8,6 +8,7 @@
 #include <functional>
 #include <stdexcept>
 
+#include "forces/conveyor.hpp"
 #include "world/world.hpp"
 #include "world/object_name.hpp"
 
@@ -338,10 +339,14 @@ void TraceObserver::writePreparedConstraints(const std::string& head, const Worl
         const std::string& a = bodies[start.indexA].name;
         const std::string& b = objectName(world, start.refB);
         if (!objectSelected(a) && !objectSelected(b)) continue;
+        std::string belt;  // a conveyor's surface velocity, friction's target (src/forces/conveyor.hpp)
+        if (const Vec3* u = beltUnder(world.beltVelocities(), start.indexA, start.refB.kind == BodyKind::Dynamic)) {
+            belt = "  belt v_s " + vec(conveyorSurfaceVelocity(*u, c.normal)) + " m/s";
+        }
         line(head, a + "|" + b,
              contactFields(world, i) + "m_eff " + num(c.normalMass) + " kg  C0 " + num(start.startSeparation) + " m  v_c " +
                  num(start.approachAtTouch) + " m/s  e " + num(start.restitution) + "  warm j " +
-                 num(c.normalImpulse) + " N*s");
+                 num(c.normalImpulse) + " N*s" + belt);
     }
     // SubstepsPerIsland=true: each island's count and the rule's inputs (src/dynamics/substep_rule.hpp)
     for (const IslandSubsteps& island : world.islandSubsteps()) {

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "collision/broadphase.hpp"
+#include "forces/conveyor.hpp"
 #include "forces/kill_region.hpp"
 
 namespace stepwise {
@@ -140,12 +141,21 @@ PlanDecision rotationOf(const PlanInputs& in) {
     return skip("skipped: only spheres, no spin, no friction, no torque: still spheres skip the angular update");
 }
 
+/// Regions other than conveyors: a Conveyor region pushes nothing in a substep (it changes the
+/// contacts' rows, fixed for the step: src/forces/conveyor.hpp).
+bool regionsBesidesConveyors(const PlanInputs& in) {
+    for (const Region& region : in.regions) {
+        if (region.effect != RegionEffect::Conveyor) return true;
+    }
+    return false;
+}
+
 /// Forces that depend on where the bodies are must follow them through the substeps.
 PlanDecision substepForcesOf(const PlanInputs& in) {
     if (in.settings.solver == SolverKind::Impulse) return skip("not in the Impulse pipeline (one step, one force evaluation)");
     if (!in.springs.empty()) return run("runs: springs pull by where their ends are, which changes every substep");
     if (!in.attractors.empty()) return run("runs: attractors pull by where a body is, which changes every substep");
-    if (!in.regions.empty()) return run("runs: regions push by where a body is and how it moves, which change every substep");
+    if (regionsBesidesConveyors(in)) return run("runs: regions push by where a body is and how it moves, which change every substep");
     return skip("skipped: only uniform forces (gravity, ConstantAcceleration): the step's a and torque hold for every substep");
 }
 
@@ -193,7 +203,7 @@ PlanDecision islandSubstepsOf(const PlanInputs& in) {
     if (in.settings.solver == SolverKind::Impulse) return skip("not in the Impulse pipeline (it has no substeps)");
     if (!in.settings.substepsPerIsland) return skip("off: SubstepsPerIsland=false, every island runs Substeps");
     if (!in.joints.empty()) return skip("off: joints act in every substep; every island runs Substeps");
-    if (!in.springs.empty() || !in.attractors.empty() || !in.regions.empty()) {
+    if (!in.springs.empty() || !in.attractors.empty() || regionsBesidesConveyors(in)) {
         return skip("off: springs, attractors or regions act in every substep; every island runs Substeps");
     }
     for (const KinematicsObject& body : in.kinematics) {
@@ -221,12 +231,25 @@ PlanDecision colourOrderOf(const PlanInputs& in) {
 /// Regions push the bodies inside them (src/forces/region.hpp); a Kill region removes them.
 PlanDecision regionsOf(const PlanInputs& in) {
     for (const Region& region : in.regions) {
-        if (region.effect != RegionEffect::Kill) {
+        if (region.effect != RegionEffect::Kill && region.effect != RegionEffect::Conveyor) {
             return run("runs (src/forces/region.cpp): after the broadphase, each region finds the bodies inside it and "
                        "pushes them, again in every substep");
         }
     }
+    if (anyConveyor(in.regions)) {
+        return run("runs (src/world/world_regions.cpp): after the broadphase, each Conveyor region finds the bodies "
+                   "inside it; it pushes nothing itself");
+    }
     return skip("skipped: no region with a force (Drag, Wind, Gravity, Buoyancy, RandomForce)");
+}
+
+/// A Conveyor region moves the static surfaces under the bodies inside it, for friction (src/forces/conveyor.hpp).
+PlanDecision conveyorsOf(const PlanInputs& in) {
+    if (anyConveyor(in.regions)) {
+        return run("runs (src/forces/conveyor.cpp): a contact of a body on a belt with a static or kinematic surface "
+                   "takes the belt's velocity in its plane as the surface's, for friction (stored rows)");
+    }
+    return skip("skipped: no Conveyor region, so no contact's surface moves but a kinematic body's own");
 }
 
 PlanDecision killRegionsOf(const PlanInputs& in) {
@@ -414,6 +437,7 @@ StepPlan makeStepPlan(const PlanInputs& in) {
     plan.colourOrder = colourOrderOf(in);        // the same
     plan.regions = regionsOf(in);                // forces, not skips: they run whenever the scene has them
     plan.killRegions = killRegionsOf(in);
+    plan.conveyors = conveyorsOf(in);
     return plan;
 }
 
@@ -470,6 +494,7 @@ std::string describeStepPlan(const StepPlan& plan) {
     line("regions", plan.regions);
     line("kill regions", plan.killRegions);
     line("soft bodies", plan.softBodies);
+    line("conveyors", plan.conveyors);
     text += "  broadphase kind       ";
     text += toString(plan.broadphase);
     text += ": ";

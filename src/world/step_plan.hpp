@@ -87,6 +87,7 @@ struct StepPlan {
     PlanDecision regions;          ///< Do regions push the bodies inside them (src/forces/region.hpp)?
     PlanDecision killRegions;      ///< Are bodies that end a step in a Kill region removed (src/forces/kill_region.hpp)?
     PlanDecision softBodies;       ///< Does the soft bodies' stage run (src/soft/soft_step.hpp)?
+    PlanDecision conveyors;        ///< Do contacts read the belt velocities of Conveyor regions (src/forces/conveyor.hpp)?
     SolverKind solver = SolverKind::SequentialImpulse; ///< The pipeline the scene runs (pipelineOrder()).
     int substeps = 1;              ///< Substeps of a sequential-impulse step.
     BroadphaseKind broadphase = BroadphaseKind::Auto; ///< The broadphase the scene asks for.
@@ -168,7 +169,7 @@ struct PlanInputs {
 /// - **Packed substeps**, inside the fast path: when the scene integrates
 ///   with symplectic Euler, accumulates impulses, and has no joints and no
 ///   forces that follow the bodies through the substeps, a step whose
-///   contacts all hold awake balls (no box, no kinematic body) runs its
+///   contacts all hold awake balls (no box, no moving kinematic body, no belt) runs its
 ///   substeps on the contact solver's packed records and writes the objects
 ///   once, at the end (src/fast/packed_substeps.hpp). Which road a step takes
 ///   is decided each step, after the contacts are found.
@@ -183,6 +184,12 @@ struct PlanInputs {
 /// - **Soft bodies**: their stage runs when the scene has one; without, it
 ///   would loop over nothing. A soft body never sleeps, so a scene with one
 ///   is never idle.
+/// - **Conveyors**: only a scene with a Conveyor region works out each body's
+///   belt velocity (after the regions find their bodies) and hands it to the
+///   contact preparation; without one, the preparation is given none, and
+///   every contact is made exactly as before belts existed. A Conveyor region
+///   pushes nothing, so alone it neither makes the forces run again in every
+///   substep nor keeps the islands at Substeps.
 /// - **Broadphase**: `Auto` takes brute force below kAutoBruteForceBelow
 ///   dynamic bodies (chooseBroadphase()); every broadphase returns the same
 ///   pairs in the same order.

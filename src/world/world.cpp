@@ -122,6 +122,7 @@ World::World(Scene scene)
         region.normal /= glm::length(region.normal);
         require(stepwise::isFinite(region.position) && stepwise::isFinite(region.halfExtents) && isFinite(region.radius),
                 region.name, "position and size must be finite");
+        require(stepwise::isFinite(region.velocity), region.name, "the velocity (a fluid's, the wind's, a belt's) must be finite");
     }
     for (SoftBody& body : softBodies_) {
         require(body.mass >= kMinMass && body.mass <= kMaxMass, body.name, "mass must be from 1e-12 to 1e12 kg");
@@ -253,7 +254,7 @@ void World::stepWithImpulses() {
     runStage(Stage::ResolveImpulses, [&] {
         impulses_.resize(contacts_.size());
         resolveImpulses(bodies(), contacts_, h, settings_.impulseIterations, settings_.warmStarting, contactWorkspace_,
-                        impulses_);
+                        impulses_, beltVelocities());  // the belts of Conveyor regions (src/forces/conveyor.hpp)
     });
 
     // 7. Push overlapping bodies apart (src/dynamics/impulse_resolver.cpp, correctPositions)
@@ -379,7 +380,8 @@ void World::stepWithSequentialImpulses() {
     runStage(Stage::PrepareConstraints, [&] {
         if (asleep_ > 0) wakeTouchedIslands(bodies(), contacts_, links_);
         solverWorkspace_.colourOrder = settings_.contactOrder == ContactOrder::Colours;
-        prepareContacts(bodies(), contacts_, links_, h, settings_.warmStarting, solverWorkspace_, threadPool_.get());
+        prepareContacts(bodies(), contacts_, links_, h, settings_.warmStarting, solverWorkspace_, threadPool_.get(),
+                        beltVelocities());  // a conveyor's belt: friction's target (src/forces/conveyor.hpp)
         // A joint's or a spring's anchor on a ball turns with it; nothing else inside a step reads how a ball is turned
         solverWorkspace_.ballsTurnOnce = links_.empty() && springs_.empty();
         if (plan_.jointSolver.runs) prepareJoints(bodies(), joints_, settings_.warmStarting, jointWorkspace_);

@@ -78,6 +78,9 @@ public:
     const std::vector<Region>& regions() const { return regions_; }  ///< Volumes with effects (src/forces/region.hpp).
     /// @brief Which bodies each region held in the last step (src/forces/region.hpp, RegionMembers).
     const RegionMembers& regionMembers() const { return regionMembers_; }
+    /// @brief Each dynamic body's conveyor belt velocity in the last step, m/s (zero: on no belt;
+    /// src/forces/conveyor.hpp); empty in a scene without a Conveyor region.
+    std::span<const Vec3> beltVelocities() const;  // world_regions.cpp
     /// @brief The bodies Kill regions have removed so far, in the order they went (src/forces/kill_region.hpp).
     const std::vector<RemovedBody>& removedBodies() const { return removedBodies_; }
     const IslandWorkspace& islands() const { return islandWorkspace_; }  ///< Islands of the last step (islandOf()).
@@ -162,6 +165,7 @@ private:
     std::vector<Region> regions_;              ///< Volumes with effects (src/forces/region.hpp).
     RegionMembers regionMembers_;              ///< Who each region holds this step.
     std::vector<std::uint32_t> regionCandidates_;  ///< Scratch: the broadphase's answer for one region.
+    std::vector<Vec3> conveyorVelocities_;     ///< Each dynamic body's belt velocity this step (src/forces/conveyor.hpp).
     std::vector<RemovedBody> removedBodies_;   ///< What Kill regions took, for the run's summary.
     std::vector<Joint> joints_;
     std::vector<SoftBody> softBodies_;  ///< Pressure soft bodies, stepped by src/soft/soft_step.cpp.

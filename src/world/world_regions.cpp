@@ -10,6 +10,7 @@
 
 #include "collision/aabb.hpp"
 #include "fast/fast_workspace.hpp"
+#include "forces/conveyor.hpp"
 #include "world/world.hpp"
 
 namespace stepwise {
@@ -25,6 +26,7 @@ RegionForces World::regionForces(Real substepTime) const {
 /// pond in a level of 10 000 bodies tests the few near it, not all; each candidate is then
 /// tested exactly (regionHolds()). Without (the Impulse pipeline, whose broadphase runs after
 /// the move, or a scene where nothing can touch, whose broadphase never runs), every body is tested.
+/// Then, in a scene with a Conveyor region, each body's belt velocity (conveyorVelocities()).
 void World::findRegionMembers(bool throughBroadphase) {
     RegionMembers& members = regionMembers_;
     members.start.resize(regions_.size() + 1);
@@ -47,6 +49,15 @@ void World::findRegionMembers(bool throughBroadphase) {
         }
     }
     members.start[regions_.size()] = static_cast<std::uint32_t>(members.bodies.size());
+    // The belt under each body, for the contact preparation (src/forces/conveyor.hpp)
+    if (plan_.conveyors.runs) conveyorVelocities(regions_, members, dynamics_.size(), conveyorVelocities_);
+}
+
+/// The belt velocity of each dynamic body this step, for the contacts' friction (src/forces/conveyor.hpp);
+/// empty in a scene without a Conveyor region, whose contacts then never ask.
+std::span<const Vec3> World::beltVelocities() const {
+    if (!plan_.conveyors.runs) return {};
+    return conveyorVelocities_;
 }
 
 /// Takes out every body whose centre ends the step inside a Kill region.

@@ -33,6 +33,7 @@
 #include "dynamics/contact_body.hpp"
 #include "objects/inertia.hpp"
 #include "dynamics/point_impulse.hpp"
+#include "forces/conveyor.hpp"
 #include "integrators/integrators.hpp"
 
 namespace stepwise {
@@ -192,12 +193,19 @@ void rememberImpulses(std::span<const Contact> contacts, const std::vector<Conta
 }  // namespace
 
 void resolveImpulses(const BodySet& bodies, std::span<const Contact> contacts, Real h, int iterations,
-                     bool warmStart, ContactWorkspace& workspace, std::span<ImpulseReport> reports) {
+                     bool warmStart, ContactWorkspace& workspace, std::span<ImpulseReport> reports,
+                     std::span<const Vec3> beltVelocities) {
     std::vector<ContactConstraint>& constraints = workspace.constraints;
     constraints.resize(contacts.size());
     ImpulseReport unused;
     for (std::size_t i = 0; i < contacts.size(); ++i) {
         constraints[i] = prepare(bodies, contacts[i], h, reports.empty() ? unused : reports[i]);
+        // A conveyor belt under A moves B's surface along itself (src/forces/conveyor.hpp): the friction of
+        // the passes compares against it. It lies in the tangent plane, so v_n changes by rounding only,
+        // and the bounce, decided in prepare(), not at all.
+        if (const Vec3* belt = beltUnder(beltVelocities, contacts[i].a, constraints[i].b != nullptr)) {
+            constraints[i].staticVelocity += conveyorSurfaceVelocity(*belt, constraints[i].normal);
+        }
     }
     // Warm start after every contact is prepared: the bounce targets were
     // taken from the velocities before any impulse.
