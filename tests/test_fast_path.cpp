@@ -610,6 +610,26 @@ TEST_CASE("A pass of box contacts in lanes is the scalar pass, four contacts at 
     CHECK(lanes.bodies[kStaticSolverBody].angularVelocity == Vec3(0));
 }
 
+namespace {
+
+/// Nine bodies in three rows over a 3 m deck at y = 0.5: boxes of 1 to 3 kg (μ = 0.7) and two
+/// balls (μ = 0.5), each a little off the one below, so they land at different moments.
+std::string boxesAndBallsOnADeck() {
+    std::string text;
+    for (int i = 0; i < 9; ++i) {
+        const std::string at = "(" + std::to_string(-0.8 + 0.8 * (i % 3)) + "," + std::to_string(0.75 + 0.6 * (i / 3)) +
+                               "," + std::to_string(-0.6 + 0.6 * (i % 3) + 0.05 * (i / 3)) + ")";
+        text += i % 4 == 2 ? "DynamicObject, Name=ball" + std::to_string(i) +
+                                 ", Shape=Sphere, Radius=0.2, Mass=1, Friction=0.5, Position=" + at + "\n"
+                           : "DynamicObject, Name=box" + std::to_string(i) +
+                                 ", Shape=Box, Scale=(0.5,0.5,0.5), Mass=" + std::to_string(1 + i % 3) +
+                                 ", Friction=0.7, Position=" + at + "\n";
+    }
+    return text;
+}
+
+}  // namespace
+
 TEST_CASE("Stacks of boxes and a kinematic platform take the fast path with the plain numbers", "[fast][lanes]") {
     SECTION("the pyramid of 210 boxes (lesson 8)") {
         Scene scene = loadSceneFile(std::string(STEPWISE_SOURCE_DIR) + "/config/lesson08_pyramid.scene");
@@ -636,15 +656,7 @@ TEST_CASE("Stacks of boxes and a kinematic platform take the fast path with the 
                            "CollisionPlane, Name=floor, Position=(0,0,0), Normal=(0,1,0)\n"
                            "KinematicsObject, Name=deck, Shape=Box, Position=(0,0.25,0), Scale=(3,0.5,3), "
                            "Velocity=(0.4,0,0.1), AngularVelocity=(0,0.5,0)\n";
-        for (int i = 0; i < 9; ++i) {
-            const std::string at = "(" + std::to_string(-0.8 + 0.8 * (i % 3)) + "," + std::to_string(0.75 + 0.6 * (i / 3)) +
-                                   "," + std::to_string(-0.6 + 0.6 * (i % 3) + 0.05 * (i / 3)) + ")";
-            text += i % 4 == 2 ? "DynamicObject, Name=ball" + std::to_string(i) +
-                                     ", Shape=Sphere, Radius=0.2, Mass=1, Friction=0.5, Position=" + at + "\n"
-                               : "DynamicObject, Name=box" + std::to_string(i) +
-                                     ", Shape=Box, Scale=(0.5,0.5,0.5), Mass=" + std::to_string(1 + i % 3) +
-                                     ", Friction=0.7, Position=" + at + "\n";
-        }
+        text += boxesAndBallsOnADeck();
         const FastPathCounts counts = requireSameOnBothRoads(sceneFrom(text), 90);
         CHECK(counts.steps == 90);
         INFO(counts.boxLaneSteps << " steps with box lanes");
@@ -773,15 +785,7 @@ TEST_CASE("Boxes and balls on a conveyor belt take the fast path with the plain 
                            "KinematicsObject, Name=bed, Shape=Box, Position=(0,0.25,0), Scale=(3,0.5,3)\n"
                            "Region, Name=belt, Shape=Box, Position=(0,1.5,0), Scale=(3,2,3), Effect=Conveyor, "
                            "Velocity=(1.2,0.5,0.3)\n";
-        for (int i = 0; i < 9; ++i) {
-            const std::string at = "(" + std::to_string(-0.8 + 0.8 * (i % 3)) + "," + std::to_string(0.75 + 0.6 * (i / 3)) +
-                                   "," + std::to_string(-0.6 + 0.6 * (i % 3) + 0.05 * (i / 3)) + ")";
-            text += i % 4 == 2 ? "DynamicObject, Name=ball" + std::to_string(i) +
-                                     ", Shape=Sphere, Radius=0.2, Mass=1, Friction=0.5, Position=" + at + "\n"
-                               : "DynamicObject, Name=box" + std::to_string(i) +
-                                     ", Shape=Box, Scale=(0.5,0.5,0.5), Mass=" + std::to_string(1 + i % 3) +
-                                     ", Friction=0.7, Position=" + at + "\n";
-        }
+        text += boxesAndBallsOnADeck();
         const FastPathCounts counts = requireSameOnBothRoads(sceneFrom(text), 120);
         CHECK(counts.steps == 120);
         INFO(counts.boxLaneSteps << " steps with box lanes");
