@@ -58,6 +58,7 @@ figures=(
     "11-mpr-depth.png:mpr_depth"
     "12-capsule-roll.png:capsule_roll"
     "13-terminal-speed.png:terminal_speed"
+    "14-inflation.png:inflation"
 )
 if [[ $list == 1 ]]; then
     for entry in "${figures[@]}"; do echo "${entry%%:*}"; done
@@ -194,6 +195,13 @@ terminal_speed() {
     plot config/lesson13_terminal_speed.scene --quantity velocity --object stokes,newton --component norm \
         --data "$work/terminal-speed.csv"
     draw 13-terminal-speed.gp "$1"
+}
+
+inflation() {
+    # One file per ball: the run's CSV has a row per body and step.
+    "$stepwise" run config/lesson14_inflate.scene --csv "$work/inflation.csv" > /dev/null
+    for ball in ico ball; do awk -F, -v name="$ball" '$2 == name' "$work/inflation.csv" > "$work/inflation-$ball.csv"; done
+    draw 14-inflation.gp "$1"
 }
 
 gjk_bounds() {
