@@ -371,6 +371,18 @@ TEST_CASE("A soft body past its stability limit stops the run with exit 1, namin
     CHECK_THAT(run.output, Catch::Matchers::Contains("stage 'soft-bodies': object 'jelly'"));
 }
 
+TEST_CASE("stepwise run of soft bodies alone says there is no rigid object, then lists the soft ones", "[soft][cli]") {
+    // No gravity, nothing to hit: the run ends normally, and its final-state table has no rigid rows
+    const test::TempFile file("soft-alone.scene", "World, TimeStep=1/60, Duration=0.5, Gravity=(0,0,0)\n"
+                                                  "SoftBody, Name=puff, Stiffness=50, Pressure=5\n");
+    const test::CommandResult run = test::runStepwise("run " + file.quoted());
+    INFO(run.output);
+    CHECK(run.exitCode == 0);
+    CHECK_THAT(run.output, Catch::Matchers::Contains("no rigid object; the soft bodies follow"));
+    CHECK_THAT(run.output, !Catch::Matchers::Contains("orientation (w, x, y, z)"));
+    CHECK_THAT(run.output, Catch::Matchers::Contains("puff"));
+}
+
 namespace {
 
 /// The contact patch of @p body on the floor y = 0, m²: the share of the surface that the nodes

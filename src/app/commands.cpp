@@ -134,6 +134,10 @@ std::string quat(const Quat& q) {
 void printFinalState(const World& world) {
     std::printf("\nFinal state at t = %.6g s\n", double(world.time()));
     const std::size_t total = world.dynamics().size() + world.kinematics().size();
+    if (total == 0) {  // a scene of soft bodies alone: printSoftBodies() gives their state
+        std::printf("  no rigid object%s\n", world.softBodies().empty() ? "" : "; the soft bodies follow");
+        return;
+    }
     auto forEachListed = [&](auto&& row) {
         std::size_t listed = 0;
         for (const DynamicObject& b : world.dynamics()) {
