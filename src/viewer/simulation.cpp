@@ -5,7 +5,6 @@
 #include "dynamics/islands.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -21,24 +20,20 @@ namespace {
 
 /// Sweeps each space's box over the scene's Duration (SpaceLayout): a copy of the scene runs
 /// ahead, every space running whatever its Paused field says (it may be resumed), for at
-/// most kLayoutLookaheadSeconds of wall-clock time. A simulation error ends the sweep early:
+/// most kLayoutLookaheadBodySteps of work. A simulation error ends the sweep early:
 /// the live run meets it too, and reports it then.
 void sweepAhead(Scene scene, SpaceLayout& layout) {
     const Real duration = scene.settings.duration;
     Spaces ahead(std::move(scene));
     for (Space& space : ahead.all()) space.paused = false;
     const Real tick = ahead.finestTick();
-    const auto ticks = static_cast<std::uint64_t>(std::llround(duration / tick));
-    const auto start = std::chrono::steady_clock::now();
+    std::uint64_t bodies = 1;  // every space's dynamic bodies: what a tick costs, at most
+    for (const Space& space : ahead.all()) bodies += space.world.dynamics().size();
+    const auto ticks = std::min(static_cast<std::uint64_t>(std::llround(duration / tick)),
+                                kLayoutLookaheadBodySteps / bodies);
     const auto grow = [&](std::size_t k) { layout.grow(k, ahead.all()[k].world); };
     try {
-        for (std::uint64_t i = 0; i < ticks; ++i) {
-            ahead.advance(tick, grow);
-            if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() >
-                kLayoutLookaheadSeconds) {
-                break;
-            }
-        }
+        for (std::uint64_t i = 0; i < ticks; ++i) ahead.advance(tick, grow);
     } catch (const SimulationError&) {
     }
 }

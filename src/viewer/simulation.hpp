@@ -27,9 +27,11 @@
 
 namespace stepwise::viewer {
 
-/// @brief How many seconds of wall-clock time the viewer spends, at most, running a copy of a scene
-/// with spaces ahead to sweep each space's box (SpaceLayout); a big scene's layout may widen later.
-inline constexpr double kLayoutLookaheadSeconds = 1.0;
+/// @brief How much work the viewer spends, at most, running a copy of a scene with spaces ahead to
+/// sweep each space's box (SpaceLayout), in body-steps (ticks of the shared clock × dynamic bodies):
+/// about a second in a Release build. Counted in work, not in wall-clock time, so the layout is the
+/// same on every machine and build; a bigger scene's layout may widen later.
+inline constexpr std::uint64_t kLayoutLookaheadBodySteps = 2'000'000;
 
 /// @brief What S, Shift+S and `--stage` say in a scene with spaces: the walk-through follows one World.
 inline constexpr const char* kNoWalkthroughWithSpaces =
