@@ -15,7 +15,7 @@ using Catch::Matchers::WithinAbs;
 
 TEST_CASE("Every stage runs once per step and the clock advances by h", "[world]") {
     // Solver=Impulse runs its seven stages once a step; Solver=SequentialImpulse
-    // runs collision once and the integrate/solve/relax stages once per substep.
+    // runs collision once and the soft/integrate/solve/relax stages once per substep.
     for (SolverKind solver : {SolverKind::Impulse, SolverKind::SequentialImpulse}) {
         Scene scene = test::emptyScene();
         scene.settings.solver = solver;
@@ -36,8 +36,8 @@ TEST_CASE("Every stage runs once per step and the clock advances by h", "[world]
                 if (stage >= Stage::PrepareConstraints && stage != Stage::Continuous && stage != Stage::SoftBodies) perStep = 0;
             } else if (stage == Stage::ResolveImpulses || stage == Stage::CorrectPositions) {
                 perStep = 0;
-            } else if (stage == Stage::ApplyForces || stage == Stage::Integrate || stage == Stage::MoveKinematics ||
-                       stage == Stage::SolveConstraints || stage == Stage::RelaxConstraints) {
+            } else if (stage == Stage::ApplyForces || stage == Stage::SoftBodies || stage == Stage::Integrate ||
+                       stage == Stage::MoveKinematics || stage == Stage::SolveConstraints || stage == Stage::RelaxConstraints) {
                 perStep = substeps;
             }
             CHECK(world.stageRecords()[s].runs == 3 * perStep);

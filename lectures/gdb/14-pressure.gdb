@@ -12,7 +12,7 @@ p body.pressure
 p f
 p areaNormal
 p share
-break-at soft_step.cpp "requirePositiveVolume(body, where);" if where.step == 1200 && substep == 7
+break-at soft_step.cpp "requirePositiveVolume(body, where);" if where.step == 1200
 continue
 p body.name
 p body.volume

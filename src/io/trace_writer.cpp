@@ -190,7 +190,7 @@ void TraceObserver::writeStage(const StageEvent& event, const World& world) {
         case Stage::Continuous:
             line(head, "fast bodies", "stopped at their time of impact: " + std::to_string(world.bodiesStoppedAtImpact()));
             break;
-        case Stage::SoftBodies:  // the pressure stage: each body's gas after its last substep (src/soft/)
+        case Stage::SoftBodies:  // the pressure stage: each body's gas after this substep of it (src/soft/)
             for (const SoftBody& b : world.softBodies()) {
                 if (!objectSelected(b.name)) continue;
                 line(head, b.name, "V " + num(b.volume) + " m^3  P = nRT/V " + num(b.pressure) + " Pa  centre " +

@@ -8,13 +8,18 @@
 /// overlaps an object by the depth d along the object's outward normal n:
 ///
 /// 1. **moves out** by d along n: a position projection, as in
-///    position-based dynamics, so no node stays inside a wall;
+///    position-based dynamics, so no node stays inside a wall. It moves
+///    against the force F that pressed it in (springs, gas, weight), which
+///    takes the work W = max(0, −F·n)·d that no force paid;
 /// 2. if it approaches the object at the contact point, v_n = (v − v_B)·n < 0,
 ///    gets the **normal impulse** that turns the approach into a separation
-///    at e·|v_n| (e = 0 for an approach slower than gravity builds in two
-///    steps: a resting node, which would otherwise hop for ever), with the
-///    effective mass of the node and, for a dynamic body, of the body at that point:
-///    \f[ j_n = \frac{-(1+e)\,v_n}{\tfrac1{m_i} + \tfrac1{m_B} + (r\times n)\cdot I_B^{-1}(r\times n)} ; \f]
+///    at v_sep = √((e·|v_n|)² − 2·K·W), or 0: the bounce pays the push out's
+///    work back from the approach's kinetic energy ½·v_n²/K (separationPayingFor(),
+///    soft_stages.hpp), so that e = 1 gains nothing. e = 0 for an approach
+///    slower than gravity builds in two substeps: a resting node, which would
+///    otherwise hop for ever. K is the inverse mass of the node and, for a
+///    dynamic body, of the body at that point:
+///    \f[ j_n = \frac{|v_n| + v_{sep}}{K},\qquad K = \tfrac1{m_i} + \tfrac1{m_B} + (r\times n)\cdot I_B^{-1}(r\times n) ; \f]
 /// 3. then the **friction impulse** on what is left sliding (measured after
 ///    the normal impulse, which can change it when B turns), clamped to
 ///    Coulomb's cone |j_t| ≤ μ·j_n.
@@ -41,10 +46,6 @@
 namespace stepwise {
 
 namespace {
-
-/// A node approaching slower than gravity builds along the normal in this many steps is resting,
-/// not striking: it gets no bounce (as kRestingContactSteps for rigid contacts).
-constexpr Real kRestingSteps = Real(2);
 
 /// The side a node touches: a dynamic body (which takes the opposite impulse), or something that does not give.
 struct Obstacle {
@@ -75,15 +76,20 @@ void respond(SoftBody& body, std::size_t i, const Vec3& normal, Real depth, cons
     Vec3& x = body.nodePositions[i];
     Vec3& v = body.nodeVelocities[i];
     const Real inverseMass = body.nodeInverseMasses[i];
-    if (depth > 0) x += depth * normal;  // 1. out of the object
+    // 1. Out of the object, against the force pressing the node in: the work that takes, J
+    const Vec3 force = body.nodeForces[i] + gravity / inverseMass;  // springs, gas and weight, N
+    const Real work = depth > 0 ? std::max(Real(0), -glm::dot(force, normal)) * depth : Real(0);
+    if (depth > 0) x += depth * normal;
 
     const Real approach = -glm::dot(v - obstacle.velocityAt(point), normal);  // −v_n, > 0 when approaching
     if (approach <= 0) return;
-    const Real resting = kRestingSteps * std::abs(glm::dot(gravity, normal)) * h;
+    const Real resting = kSoftRestingSteps * std::abs(glm::dot(gravity, normal)) * h;
     const Real e = approach < resting ? Real(0) : mixed.elasticity;
 
-    // 2. The normal impulse
-    const Real normalImpulse = (1 + e) * approach / (inverseMass + obstacle.inverseMassAlong(point, normal));
+    // 2. The normal impulse, to a separation e·|v_n| less the push's work (a bounce that pays for it)
+    const Real inverseMassAlongNormal = inverseMass + obstacle.inverseMassAlong(point, normal);
+    const Real separation = separationPayingFor(e * approach, inverseMassAlongNormal, work);
+    const Real normalImpulse = (approach + separation) / inverseMassAlongNormal;
     v += normalImpulse * inverseMass * normal;
     if (obstacle.dynamic != nullptr) applyImpulseAt(*obstacle.dynamic, -normalImpulse * normal, point);
 

@@ -14,7 +14,9 @@
 /// node on a rigid object (node_collisions.cpp): the overlap d is removed,
 /// the node moved by d·(1/m_x)/K and the corners by −d·(w_k/m_k)/K (a split
 /// that keeps the centre of mass where it was); an approach v_n < 0 becomes
-/// e·|v_n| by the impulse j = −(1 + e)·v_n / K; friction, clamped to μ·j,
+/// a separation e·|v_n|, less what pays for the work of that push against the
+/// forces on the node and the corners (separationPayingFor(), soft_stages.hpp),
+/// by the impulse j = (|v_n| + v_sep) / K; friction, clamped to μ·j,
 /// stops the sliding by the same rule along the tangent. Every impulse acts
 /// on the node and, opposite, on the corners: the total momentum is kept.
 ///
@@ -33,9 +35,6 @@
 namespace stepwise {
 
 namespace {
-
-/// As in node_collisions.cpp: an approach slower than gravity builds in this many steps gets no bounce.
-constexpr Real kRestingSteps = Real(2);
 
 Aabb boundsOf(const SoftBody& body) {
     Aabb box{body.nodePositions[0], body.nodePositions[0]};
@@ -81,10 +80,16 @@ void collideNodesWithFaces(SoftBody& a, SoftBody& b, const ContactMaterials& mat
             for (int k = 0; k < 3; ++k) {
                 inverseMass += closest.weights[k] * closest.weights[k] * b.nodeInverseMasses[corner[k]];
             }
-            // The overlap removed, split so that the centre of mass stays where it is
-            a.nodePositions[i] += depth * nodeInverse / inverseMass * n;
+            // The overlap removed, split so that the centre of mass stays where it is; the work that
+            // takes against the forces pressing the node and the corners together, J (separationPayingFor())
+            const Vec3 nodeMove = depth * nodeInverse / inverseMass * n;
+            Real work = -glm::dot(a.nodeForces[i] + gravity / nodeInverse, nodeMove);
+            a.nodePositions[i] += nodeMove;
             for (int k = 0; k < 3; ++k) {
-                b.nodePositions[corner[k]] -= depth * closest.weights[k] * b.nodeInverseMasses[corner[k]] / inverseMass * n;
+                const std::uint32_t c = corner[k];
+                const Vec3 cornerMove = -depth * closest.weights[k] * b.nodeInverseMasses[c] / inverseMass * n;
+                work -= glm::dot(b.nodeForces[c] + gravity / b.nodeInverseMasses[c], cornerMove);
+                b.nodePositions[c] += cornerMove;
             }
             const auto relativeVelocity = [&] {
                 Vec3 v = a.nodeVelocities[i];
@@ -99,8 +104,9 @@ void collideNodesWithFaces(SoftBody& a, SoftBody& b, const ContactMaterials& mat
             };
             const Real approach = -glm::dot(relativeVelocity(), n);
             if (approach <= 0) continue;
-            const Real e = approach < kRestingSteps * std::abs(glm::dot(gravity, n)) * h ? Real(0) : mixed.elasticity;
-            const Real normalImpulse = (1 + e) * approach / inverseMass;
+            const Real e = approach < kSoftRestingSteps * std::abs(glm::dot(gravity, n)) * h ? Real(0) : mixed.elasticity;
+            const Real separation = separationPayingFor(e * approach, inverseMass, std::max(Real(0), work));
+            const Real normalImpulse = (approach + separation) / inverseMass;
             push(normalImpulse * n);
             const Vec3 relative = relativeVelocity();
             const Vec3 sliding = relative - glm::dot(relative, n) * n;

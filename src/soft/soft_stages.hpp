@@ -11,6 +11,7 @@
 /// | soft contacts | `soft_contacts.cpp` | every soft body's nodes and faces | node positions, velocities |
 #pragma once
 
+#include <cmath>
 #include <span>
 
 #include "core/types.hpp"
@@ -19,6 +20,29 @@
 #include "objects/soft_body.hpp"
 
 namespace stepwise {
+
+/// @brief A node approaching slower than gravity builds along the normal in this many substeps is
+/// resting, not striking: it gets no bounce (as kRestingContactSteps for rigid contacts), or it
+/// would hop for ever.
+inline constexpr Real kSoftRestingSteps = Real(2);
+
+/// @brief The speed a contact separates at after a bounce that pays for its push out, m/s.
+///
+/// A node moved out of an object by the position projection moves against
+/// the force F that pressed it in (springs, gas, weight): that takes the work
+/// W = max(0, −F·n)·d, J, which no force paid, and the gas's and the springs'
+/// energy rise by it. The bounce pays it back from the kinetic energy of the
+/// approach, ½·v_n²/K for a pair of inverse mass K along n:
+/// \f[ v_{sep} = \sqrt{\max\left(0,\ (e\,|v_n|)^2 - 2KW\right)} \f]
+/// so that a contact with e = 1 gives back no more energy than it took
+/// (docs/soft-bodies.md, "The push out is paid for").
+/// @param bounce       e·|v_n|, the separation speed of a bounce with nothing to pay, m/s
+/// @param inverseMass  K, 1/kg
+/// @param work         W ≥ 0, J
+inline Real separationPayingFor(Real bounce, Real inverseMass, Real work) {
+    const Real paid = bounce * bounce - 2 * inverseMass * work;
+    return paid > 0 ? std::sqrt(paid) : Real(0);
+}
 
 /// @brief Sets every node's force to zero: the start of a force evaluation.
 void clearNodeForces(SoftBody& body);

@@ -173,6 +173,7 @@ PlanDecision fastPathOf(const PlanInputs& in, const StepPlan& plan) {
         return skip("off: FastPath=false (the default of the debug and student builds), so every step takes the plain path");
     }
     if (!plan.stage(Stage::SolveConstraints).runs) return skip("off: nothing to solve");
+    if (!in.softBodies.empty()) return skip("off: soft bodies step between the substeps, which the plain path runs");
     bool anyBallOrBox = false;
     for (const DynamicObject& body : in.dynamics) {
         anyBallOrBox = anyBallOrBox || body.shape == Shape::Sphere || body.shape == Shape::Box;
@@ -213,6 +214,7 @@ PlanDecision islandSubstepsOf(const PlanInputs& in) {
     }
     if (!in.settings.accumulateImpulses) return skip("off: AccumulateImpulses=false; every island runs Substeps");
     if (in.settings.substeps == 1) return skip("off: Substeps=1 leaves nothing to choose");
+    if (!in.softBodies.empty()) return skip("off: soft bodies take every substep beside the rigid ones; every island runs Substeps");
     return run("runs (src/dynamics/substep_rule.hpp): each island max(height/P, 2*mass ratio, speed*h/(0.1*size), "
                "4*h*60 Hz), a power of two, at most Substeps");
 }
@@ -261,7 +263,7 @@ PlanDecision killRegionsOf(const PlanInputs& in) {
 
 PlanDecision softBodiesOf(const PlanInputs& in) {
     if (in.softBodies.empty()) return skip("skipped: no soft bodies");
-    return run("runs (src/soft/soft_step.cpp): springs, gas pressure P = nRT/V, nodes moved and collided, in every substep");
+    return run("runs (src/soft/soft_step.cpp): springs, gas pressure P = nRT/V, nodes moved and collided, at the start of every substep, before the rigid move and solve");
 }
 
 PlanDecision idleSkipOf(const PlanInputs& in) {
@@ -383,13 +385,13 @@ std::span<const PipelineSlot> pipelineOrder(SolverKind solver) {
         {Narrowphase, kOnce},
         {PrepareConstraints, kOnce},
         {ApplyForces, StageRepeat::LaterSubsteps},
+        {SoftBodies, kEach},
         {Integrate, kEach},
         {MoveKinematics, kEach},
         {SolveConstraints, kEach},
         {RelaxConstraints, kEach},
         {Continuous, kOnce},
         {Restitution, kOnce},
-        {SoftBodies, kOnce},
         {Sleep, kOnce},
     };
     switch (solver) {

@@ -182,7 +182,9 @@ struct PlanInputs {
 ///   fewer runs its groups of islands on the plain loop (the fast path then
 ///   waits for a step in which every island gets the full count).
 /// - **Soft bodies**: their stage runs when the scene has one; without, it
-///   would loop over nothing. A soft body never sleeps, so a scene with one
+///   would loop over nothing. It runs at the start of every substep, so a
+///   scene with one takes the plain substeps: no fast path, and every island
+///   the full `Substeps`. A soft body never sleeps, so a scene with one
 ///   is never idle.
 /// - **Conveyors**: only a scene with a Conveyor region works out each body's
 ///   belt velocity (after the regions find their bodies) and hands it to the

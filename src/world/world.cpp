@@ -262,7 +262,7 @@ void World::stepWithImpulses() {
     runStage(Stage::CorrectPositions, [&] { correctPositions(bodies(), contacts_, h, supportStep, contactWorkspace_); });
 
     // 7b. Soft bodies: springs, gas, nodes moved and pushed out of the rigid objects (src/soft/soft_step.cpp)
-    runStage(Stage::SoftBodies, [&] { stepSoftBodies(); });
+    runStage(Stage::SoftBodies, [&] { stepSoftBodies(settings_.timeStep, 1); });
 
     // 8. Bodies that ended the step in a Kill region leave the world (src/world/world_regions.cpp)
     if (plan_.killRegions.runs) removeKilledBodies();
@@ -404,6 +404,11 @@ void World::stepWithSequentialImpulses() {
             substep_ = substep;  // for the observer's StageEvent
             // 5. Free flight for h_s (src/integrators/*.cpp, src/dynamics/kinematic_motion.cpp)
             if (substep > 0 && plan_.substepForces.runs) runStage(Stage::ApplyForces, [&] { forces(dynamics_); });
+            // 5a. Soft bodies, one substep beside the rigid ones (src/soft/soft_step.cpp): springs, gas, nodes
+            //     moved and pushed out of the rigid objects. A node's push on a dynamic body is a velocity,
+            //     like a kick of the integrator: the body moves with it in this substep, and the solve holds
+            //     it against the body's own contacts, so a box on a ball and a box under one both end at rest.
+            runStage(Stage::SoftBodies, [&] { stepSoftBodies(hs, 1); });
             runStage(Stage::Integrate, [&] {
                 recordPoses(bodies(), solverWorkspace_);  // the solve measures separations from before the flight
                 integrateBodies(settings_.integrator, dynamics_, hs, forces);
@@ -452,9 +457,6 @@ void World::stepWithSequentialImpulses() {
         storeContactImpulses(contacts_, solverWorkspace_, impulses_);
         if (plan_.jointSolver.runs) finishJoints(jointWorkspace_, joints_, hs, stepCount_ + 1, time_ + h, links_);
     });
-
-    // 8b. Soft bodies: springs, gas, nodes moved and pushed out of the rigid objects (src/soft/soft_step.cpp)
-    runStage(Stage::SoftBodies, [&] { stepSoftBodies(); });
 
     // 9. Islands at rest fall asleep (src/dynamics/islands.cpp)
     if (settings_.sleeping) {
@@ -581,15 +583,17 @@ void World::runFastPath(const AccelerationFunction& forces, const ContactSolverS
     runFastSubsteps(step, *fastWorkspace_);
 }
 
-/// The soft bodies' stage (src/soft/soft_step.hpp), after the rigid bodies' solve: a node meets the
-/// rigid objects where this step left them, and pushes a dynamic one with an equal and opposite impulse.
-/// The nodes take the rigid bodies' substeps: h/Substeps under the sequential impulse, h under Impulse.
-void World::stepSoftBodies() {
+/// The soft bodies' stage (src/soft/soft_step.hpp) for @p substeps substeps of @p h / @p substeps each.
+/// Under the sequential impulse it runs once at the start of every substep (stage 5a), so that the
+/// rigid bodies move with the nodes' pushes and their solve holds them; under Impulse, once after
+/// the step's collisions are repaired. A node pushes a dynamic body with an
+/// equal and opposite impulse.
+void World::stepSoftBodies(Real h, int substeps) {
     SoftStepSettings soft;
     soft.gravity = settings_.gravity;
     soft.integrator = settings_.integrator;
-    soft.timeStep = settings_.timeStep;
-    soft.substeps = settings_.solver == SolverKind::SequentialImpulse ? settings_.substeps : 1;
+    soft.timeStep = h;
+    soft.substeps = substeps;
     soft.where = {Stage::SoftBodies, stepCount_ + 1, static_cast<double>(time_)};
     stepwise::stepSoftBodies(softBodies_, bodies(), soft);
 }

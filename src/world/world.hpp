@@ -153,7 +153,7 @@ private:
     void findRegionMembers(bool throughBroadphase);  // world_regions.cpp
     RegionForces regionForces(Real substepTime) const;  // world_regions.cpp
     void removeKilledBodies();                       // world_regions.cpp
-    void stepSoftBodies();
+    void stepSoftBodies(Real h, int substeps);
     BodySet bodies();
 
     WorldSettings settings_;
