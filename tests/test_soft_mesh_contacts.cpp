@@ -80,14 +80,15 @@ CollisionPlane plane(Real friction, Real elasticity, Vec3 normal = Vec3(0, 1, 0)
 
 /// A soft ball of radius 0.5 m (the gas inflates it to about 0.6 m) and 1 kg, 162 nodes, held up by
 /// its gas; its springs' dampers, the bending springs' among them, let it settle in a few seconds.
-SoftBody softBall(Vec3 position, Real friction = Real(0.8), Real elasticity = Real(0)) {
+SoftBody softBall(Vec3 position, Real friction = Real(0.8), Real elasticity = Real(0), Vec3 velocity = Vec3(0)) {
     SoftBodyMaking making;
     making.resolution = 2;
     making.position = position;
+    making.velocity = velocity;
     making.radius = Real(0.5);
     making.mass = 1;
     making.stiffness = 60;
-    making.damping = Real(0.5);
+    making.damping = Real(0.2);
     making.bendStiffness = 10;
     making.nRT = 60;
     SoftBody body;
@@ -168,20 +169,27 @@ TEST_CASE("A soft ball comes to rest on a flat mesh floor where it rests on a pl
     onMesh.kinematics.push_back(meshObject(flatGrid(8, Real(0.5)), Real(0.8), Real(0.5)));
     World a(std::move(onPlane));
     World b(std::move(onMesh));
-    Real lowest = 1;    // the lowest node centre seen on the mesh, m
-    Real apart = 0;     // the largest difference in the centre's height, m
-    for (int i = 0; i < 480; ++i) {  // 8 s: the drop, the bounces and the settling
+    Real lowest = 1;  // the lowest node centre seen on the mesh, m
+    Real apart = 0;   // the largest difference in the centre's height, m
+    const int settle = 480, average = 120;  // 8 s: the drop, the bounces and the settling; then 2 s
+    Real meanHeight = 0, lowestCentre = 1, highestCentre = 0;  // over the last 2 s, m
+    for (int i = 0; i < settle + average; ++i) {
         a.step();
         b.step();
         for (const Vec3& x : b.softBodies()[0].nodePositions) lowest = std::min(lowest, x.y);
         apart = std::max(apart, std::abs(b.softBodies()[0].position.y - a.softBodies()[0].position.y));
+        if (i + 1 <= settle) continue;
+        const Real y = a.softBodies()[0].position.y;
+        meanHeight += y / average;
+        lowestCentre = std::min(lowestCentre, y);
+        highestCentre = std::max(highestCentre, y);
     }
     const SoftBody& pa = a.softBodies()[0];
     const SoftBody& pb = b.softBodies()[0];
-    // At rest but for a slow breathing of the shell (about 1 cm, 0.01 m/s), and flattened: its
-    // centre is below its inflated radius.
-    CHECK(std::abs(pa.velocity.y) < 0.05);
-    CHECK(pa.position.y < Real(0.57));
+    // Settled but for a bob on its gas (about ±2 cm at 2 Hz after 8 s: the dampers act along the
+    // springs and hardly touch that mode), and flattened: its centre is below its inflated radius.
+    CHECK(highestCentre - lowestCentre < 0.05);
+    CHECK(meanHeight < Real(0.57));
     CHECK(apart < kSameRest);
     CHECK(std::abs(pb.volume - pa.volume) < kSameRest * pa.volume);
     // No node centre went through the floor: a node that sinks in a substep is put back at once,
@@ -261,32 +269,34 @@ TEST_CASE("A soft ball dropped into a mesh bowl stays inside it and rolls to and
 }
 
 TEST_CASE("A soft ball on a rising mesh platform rides up with it", "[soft][mesh]") {
-    // The platform rises at 0.5 m/s: a steady motion of the floor is a Galilean change of frame
-    // (gravity unchanged), so once the ball has settled on it, it rises with it at the height
-    // above it that it rests at on a still floor. What is left of the settling is a slow
-    // breathing of the shell, about ±1 cm over a second or so; averaged over the last 2 s, the
-    // ball's speed is the platform's within 2 % (2 cm in 2 s) and its height above it the still
-    // ball's within 5 mm.
+    // The platform rises at 0.5 m/s and the ball starts with the same upward velocity: in the
+    // platform's frame that is the ball dropped on a still floor, but for one thing: a kinematic
+    // body moves once a step, 8.3 mm, and the nodes in h/8 substeps, so the floor comes up in
+    // jumps under them. Averaged over the last 2 s of 10 (the bob on the gas left then, ±1 cm at
+    // 2 Hz, averages out over four bobs), the ball rests on it at the still ball's height within
+    // 5 mm, a jump's worth, and its centre rises at the platform's speed within 2 %, measured from
+    // its mean height in each of the two seconds. (Not from its velocity: the floor's jumps push
+    // the nodes out by a projection, which moves them without changing their velocity.)
     const Real rise = Real(0.5);
     Scene still = softScene(softBall(Vec3(0, 0.7, 0)));
     still.kinematics.push_back(meshObject(flatGrid(8, Real(0.5)), Real(0.8), Real(0.3)));
-    Scene moving = softScene(softBall(Vec3(0, 0.7, 0)));
+    Scene moving = softScene(softBall(Vec3(0, 0.7, 0), Real(0.8), Real(0), Vec3(0, rise, 0)));
     moving.kinematics.push_back(meshObject(flatGrid(8, Real(0.5)), Real(0.8), Real(0.3)));
     moving.kinematics[0].velocity = Vec3(0, rise, 0);
     World a(std::move(still));
     World b(std::move(moving));
-    const int settle = 360, average = 120;  // 6 s to settle, then 2 s averaged
-    Real heightOnStill = 0, heightOnMoving = 0, startOfAverage = 0;
+    const int settle = 480, average = 120;  // 8 s to settle, then 2 s averaged
+    Real heightOnStill = 0, heightOnMoving = 0, firstSecond = 0, secondSecond = 0;
     for (int i = 0; i < settle + average; ++i) {
         a.step();
         b.step();
-        if (i + 1 == settle) startOfAverage = b.softBodies()[0].position.y;
         if (i + 1 <= settle) continue;
         heightOnStill += a.softBodies()[0].position.y / average;
         heightOnMoving += (b.softBodies()[0].position.y - b.kinematics()[0].position.y) / average;
+        (i + 1 <= settle + average / 2 ? firstSecond : secondSecond) += b.softBodies()[0].position.y / (average / 2);
     }
-    CHECK(b.kinematics()[0].position.y == Approx(rise * 8).epsilon(1e-9));
-    const Real meanSpeed = (b.softBodies()[0].position.y - startOfAverage) / (Real(average) / 60);
+    const Real meanSpeed = (secondSecond - firstSecond) / (Real(average / 2) / 60);
+    CHECK(b.kinematics()[0].position.y == Approx(rise * 10).epsilon(1e-9));
     CHECK(meanSpeed == Approx(rise).epsilon(0.02));
     CHECK(std::abs(heightOnMoving - heightOnStill) < 5e-3);
 }
