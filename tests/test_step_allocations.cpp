@@ -86,6 +86,15 @@ TEST_CASE("A box pyramid allocates nothing per step once it has settled", "[allo
     CHECK(allocationsPerRun(configScene("lesson08_pyramid.scene"), true) == 0);
 }
 
+TEST_CASE("A soft ball in a triangle-mesh bowl allocates nothing per step", "[allocations][mesh][soft]") {
+    // config/soft_on_mesh.scene: 162 nodes, each queried against the 512-triangle bowl every
+    // substep (node_mesh_contacts.cpp: the hierarchy's fixed stack, meshContacts()' fixed arrays).
+    for (const bool stepPlan : {true, false}) {
+        INFO((stepPlan ? "with the plan" : "with StepPlan=Off"));
+        CHECK(allocationsPerRun(configScene("soft_on_mesh.scene"), stepPlan) == 0);
+    }
+}
+
 TEST_CASE("Bodies on a triangle mesh allocate nothing per step", "[allocations][mesh]") {
     // A 10 x 10 grid of 200 triangles: a ball rolling across it at 1 m/s (still on it after the
     // 3 s counted here) and a box that slides to rest on it. The hierarchy's query keeps its

@@ -2,6 +2,7 @@
 /// @brief `stepwise run` and `stepwise check`: load, simulate, report.
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -370,11 +371,16 @@ int runSpaces(const RunOptions& options, Scene scene) {
     std::printf("\nSpaces (%zu, on one clock ticking every %.6g s)\n", spaces.all().size(), double(tick));
     for (const Space& space : spaces.all()) {
         const WorldSettings& s = space.world.settings();
-        std::printf("  %-12s %s, %s, h %.6g s, TimeScale %.6g%s: %zu dynamic, %zu kinematic, %zu plane(s)\n",
+        std::printf("  %-12s %s, %s, h %.6g s, TimeScale %.6g%s: %zu dynamic, %zu kinematic, %zu plane(s)",
                     space.name.c_str(), toString(s.integrator), toString(s.solver), double(s.timeStep),
                     double(space.timeScale), space.paused ? ", paused" : "", space.world.dynamics().size(),
                     space.world.kinematics().size(), space.world.planes().size());
+        const std::size_t soft = space.world.softBodies().size();
+        if (soft != 0) std::printf(", %zu soft bod%s", soft, soft == 1 ? "y" : "ies");
+        std::printf("\n");
     }
+    const bool anySoft = std::any_of(spaces.all().begin(), spaces.all().end(),
+                                     [](const Space& space) { return !space.world.softBodies().empty(); });
     if (options.explain) {
         for (const Space& space : spaces.all()) {
             std::printf("\nSpace %s: %s", space.name.c_str(), describeStepPlan(space.world.plan()).c_str());
@@ -395,8 +401,18 @@ int runSpaces(const RunOptions& options, Scene scene) {
     if (!openTrajectory(options, csvFile)) return kExitUsageError;
     std::FILE* csv = csvFile ? csvFile->file() : nullptr;
     if (csv) {
-        writeTrajectoryHeader(csv, true);
+        writeTrajectoryHeader(csv, true, anySoft);
         for (const Space& space : spaces.all()) writeTrajectoryRows(csv, space.world, space.name);
+    }
+    std::optional<OutputFile> nodesFile;
+    if (options.nodesCsvPath) {
+        nodesFile.emplace(*options.nodesCsvPath);
+        if (!nodesFile->ok()) {
+            std::fprintf(stderr, "stepwise: error: %s\n", nodesFile->error().c_str());
+            return kExitUsageError;
+        }
+        writeNodeHeader(nodesFile->file(), true);
+        for (const Space& space : spaces.all()) writeNodeRows(nodesFile->file(), space.world, space.name);
     }
     std::vector<Energy> energyBefore;
     for (const Space& space : spaces.all()) energyBefore.push_back(energyOf(space.world));
@@ -408,6 +424,9 @@ int runSpaces(const RunOptions& options, Scene scene) {
             const Space& space = spaces.all()[k];
             monitors[k].observe(space.world);
             if (csv && space.world.stepCount() % options.every == 0) writeTrajectoryRows(csv, space.world, space.name);
+            if (nodesFile && space.world.stepCount() % options.every == 0) {
+                writeNodeRows(nodesFile->file(), space.world, space.name);
+            }
         };
         try {
             for (std::uint64_t i = 0; i < ticks; ++i) {
@@ -433,6 +452,10 @@ int runSpaces(const RunOptions& options, Scene scene) {
     }
     std::string csvError;
     if (csvFile) csvError = csvFile->close();
+    if (nodesFile) {
+        const std::string nodesError = nodesFile->close();
+        if (csvError.empty()) csvError = nodesError;
+    }
     std::printf("Ran the clock for %.6g s\n", double(spaces.clock()));
     for (std::size_t k = 0; k < spaces.all().size(); ++k) {
         const Space& space = spaces.all()[k];
@@ -441,6 +464,7 @@ int runSpaces(const RunOptions& options, Scene scene) {
         printFinalState(space.world);
         printJoints(space.world);
         printRegions(space.world);
+        printSoftBodies(space.world);
         const Energy after = energyOf(space.world);
         std::printf("\nEnergy (kinetic = translational + rotational, plus potential), J\n");
         printEnergyLine("start", energyBefore[k]);
@@ -451,6 +475,7 @@ int runSpaces(const RunOptions& options, Scene scene) {
         }
     }
     if (csvFile && csvError.empty()) std::printf("\nTrajectory written to %s\n", options.csvPath->c_str());
+    if (nodesFile && csvError.empty()) std::printf("Soft bodies' nodes written to %s\n", options.nodesCsvPath->c_str());
     if (!csvError.empty()) {
         std::fprintf(stderr, "stepwise: error: %s; the trajectory is incomplete\n", csvError.c_str());
         if (exitCode == kExitOk || exitCode == kExitExpectationFailed) exitCode = kExitSimulationError;

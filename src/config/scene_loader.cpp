@@ -274,7 +274,6 @@ public:
         resolveJoints();
         checkBuoyantShapes();
         resolveSpaces();
-        refuseSoftBodiesInSpaces();
         if (sink_.diagnostics().empty()) {
             warnAboutUnstableSprings();
             warnAboutUnstableSoftBodies();
@@ -1336,24 +1335,21 @@ private:
         }
         if (sink_.diagnostics().size() == before) buildSoftBody(making, body);
         softBodyLines_.push_back(line.number);
+        noteSpace(values, line.number, softBodySpaceRefs_);
         scene_.softBodies.push_back(std::move(body));
-    }
-
-    /// Spaces step Worlds of rigid bodies (src/world/spaces.hpp); a soft body belongs to the one World of a scene.
-    void refuseSoftBodiesInSpaces() {
-        if (scene_.spaces.empty() || scene_.softBodies.empty()) return;
-        sink_.report(softBodyLines_.front(), 1, "SoftBody", "no SoftBody in a scene with Space records",
-                     "SoftBody " + quoted(scene_.softBodies.front().name),
-                     "soft bodies run in a scene of one simulation so far; move it to a scene without Space records");
     }
 
     /// The explicit limit h·ω < 2 of each soft body's springs (src/soft/soft_stability.hpp): a warning, as for springs.
     void warnAboutUnstableSoftBodies() {
-        const WorldSettings& settings = scene_.settings;
-        const Real h = integrationStep(settings);  // the nodes move by the substep under SequentialImpulse
-        const Real steps = std::round(settings.duration / h);
         for (std::size_t i = 0; i < scene_.softBodies.size(); ++i) {
             const SoftBody& body = scene_.softBodies[i];
+            // Its space's step, substeps and integrator (a Space record may set its own); the one clock's
+            // Duration, TimeScale times over in simulated time
+            const std::uint32_t space = scene_.softBodySpace.empty() ? kDefaultSpace : scene_.softBodySpace[i];
+            const WorldSettings& settings = space == kDefaultSpace ? scene_.settings : scene_.spaces[space - 1].settings;
+            const Real timeScale = space == kDefaultSpace ? Real(1) : scene_.spaces[space - 1].timeScale;
+            const Real h = integrationStep(settings);  // the nodes move by the substep under SequentialImpulse
+            const Real steps = std::round(timeScale * scene_.settings.duration / h);
             const SoftStability s = analyseSoftBody(body, settings.integrator, h);
             if (s.growthPerStep <= 1 + kGrowthTolerance) continue;
             const Real growthOverRun = std::pow(s.growthPerStep, steps);
@@ -1440,12 +1436,14 @@ private:
         resolve(planeSpaceRefs_, scene_.planeSpace);
         resolve(attractorSpaceRefs_, scene_.attractorSpace);
         resolve(regionSpaceRefs_, scene_.regionSpace);
+        resolve(softBodySpaceRefs_, scene_.softBodySpace);
         if (scene_.spaces.empty()) {  // a scene of one simulation, as before spaces
             scene_.dynamicSpace.clear();
             scene_.kinematicSpace.clear();
             scene_.planeSpace.clear();
             scene_.attractorSpace.clear();
             scene_.regionSpace.clear();
+            scene_.softBodySpace.clear();
             return;
         }
         const auto spaceOfBody = [&](const std::string& name) -> std::optional<std::uint32_t> {
@@ -2025,7 +2023,7 @@ private:
     std::vector<BuoyancyLine> buoyancyLines_;     ///< Where each Buoyancy region was written.
     std::vector<PendingSpace> pendingSpaces_;     ///< Space records, resolved by finish().
     std::vector<SpaceRef> dynamicSpaceRefs_, kinematicSpaceRefs_, planeSpaceRefs_, attractorSpaceRefs_,
-        regionSpaceRefs_;                         ///< Each object's Space=, parallel to its list in scene_.
+        regionSpaceRefs_, softBodySpaceRefs_;     ///< Each object's Space=, parallel to its list in scene_.
     std::vector<PendingJoint> pendingJoints_;    ///< Parallel to scene_.joints.
     int worldLine_ = 0;                     ///< Line of the World record; 0 before one is seen.
     SceneReadOptions options_;              ///< What the loader may read besides the text.

@@ -356,6 +356,7 @@ constexpr FieldSpec kSoftBodyFields[] = {
     {"Friction",        FieldKind::Number,  kNamedOnly, Range::NonNegative, kFrictionHint},
     {"Elasticity",      FieldKind::Number,  kNamedOnly, Range::UnitInterval, kElasticityHint},
     {"Color",           FieldKind::Color,   kNamedOnly, Range::UnitInterval},
+    {"Space",           FieldKind::Name,    kNamedOnly, Range::Any},              // a Space record's Name
 };
 
 constexpr RecordSpec kRecords[] = {

@@ -11,6 +11,7 @@
 #include "forces/conveyor.hpp"
 #include "world/world.hpp"
 #include "world/object_name.hpp"
+#include "world/spaces.hpp"
 
 namespace stepwise {
 
@@ -78,7 +79,7 @@ void checkTraceObjects(const TraceOptions& options, const Scene& scene) {
         const auto named = [&](const auto& objects) {
             return std::any_of(objects.begin(), objects.end(), [&](const auto& o) { return o.name == name; });
         };
-        if (named(scene.dynamics) || named(scene.kinematics) || named(scene.planes)) continue;
+        if (named(scene.dynamics) || named(scene.kinematics) || named(scene.planes) || named(scene.softBodies)) continue;
         bool joint = false;
         for (const JointDef& j : scene.joints) joint = joint || j.name == name;
         if (joint) continue;
@@ -89,6 +90,7 @@ void checkTraceObjects(const TraceOptions& options, const Scene& scene) {
         list(scene.dynamics);
         list(scene.kinematics);
         list(scene.planes);
+        list(scene.softBodies);
         throw std::invalid_argument("--object: the scene has no object named '" + name + "' (objects: " +
                                     (known.empty() ? std::string("none") : known) + ")");
     }
@@ -461,10 +463,10 @@ void TraceObserver::writeSleep(const std::string& head, const World& world) {
     }
 }
 
-bool writeTrace(const Scene& scene, const TraceOptions& options, std::ostream& out,
-                const std::function<bool()>& stopNow) {
-    checkTraceObjects(options, scene);
-    World world(scene);
+namespace {
+
+/// Steps @p world up to the last selected step with a TraceObserver on it; false when stopped early.
+bool traceWorld(World& world, const TraceOptions& options, std::ostream& out, const std::function<bool()>& stopNow) {
     TraceObserver observer(out, options);
     world.setObserver(&observer);
     const std::uint64_t last = options.from - 1 + options.steps;
@@ -478,6 +480,25 @@ bool writeTrace(const Scene& scene, const TraceOptions& options, std::ostream& o
     }
     world.setObserver(nullptr);
     return finished;
+}
+
+}  // namespace
+
+bool writeTrace(const Scene& scene, const TraceOptions& options, std::ostream& out,
+                const std::function<bool()>& stopNow) {
+    checkTraceObjects(options, scene);
+    if (scene.spaces.empty()) {
+        World world(scene);
+        return traceWorld(world, options, out, stopNow);
+    }
+    // Spaces never touch (src/world/spaces.hpp): each is traced alone, in the order of `stepwise run`,
+    // its own steps counted from 1, under a line that names it.
+    for (auto& [space, part] : splitIntoSpaces(scene)) {
+        out << "=== Space " << space.name << "\n";
+        World world(std::move(part));
+        if (!traceWorld(world, options, out, stopNow)) return false;
+    }
+    return true;
 }
 
 }  // namespace stepwise

@@ -106,6 +106,7 @@ private:
 };
 
 /// @brief Simulates a copy of @p scene up to the last selected step, writing the trace to @p out.
+/// A scene with spaces is traced space by space, each under a line `=== Space NAME`.
 /// @param stopNow asked before every step; when it answers true the trace ends there (a time
 ///        budget, Ctrl-C). @return false when it stopped early.
 /// @throws std::invalid_argument for an object name the scene lacks; SimulationError when a step fails.

@@ -33,11 +33,13 @@ Vec3 softAngularVelocity(const SoftBody& body) {
     return glm::inverse(inertia) * angularMomentum;
 }
 
-void writeSoftRow(std::FILE* out, double time, const SoftBody& body) {
+void writeSoftRow(std::FILE* out, double time, const SoftBody& body, const std::string* space = nullptr) {
     const Vec3& p = body.position;
     const Vec3& v = body.velocity;
     const Vec3 w = softAngularVelocity(body);
-    std::fprintf(out, "%.17g,%s,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,1,0,0,0,%.17g,%.17g,%.17g,%.17g,%.17g\n", time,
+    if (space != nullptr) std::fprintf(out, "%.17g,%s,", time, space->c_str());
+    else std::fprintf(out, "%.17g,", time);
+    std::fprintf(out, "%s,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,1,0,0,0,%.17g,%.17g,%.17g,%.17g,%.17g\n",
                  body.name.c_str(), double(p.x), double(p.y), double(p.z), double(v.x), double(v.y), double(v.z),
                  double(w.x), double(w.y), double(w.z), double(body.volume), double(body.pressure));
 }
@@ -49,19 +51,31 @@ void writeTrajectoryHeader(std::FILE* out, bool withSpace, bool withSoftBodies) 
                  withSoftBodies ? kSoftBodyCsvColumns : "");
 }
 
-void writeNodeHeader(std::FILE* out) { std::fprintf(out, "%s\n", kNodeCsvHeader); }
+void writeNodeHeader(std::FILE* out, bool withSpace) {
+    std::fprintf(out, "%s\n", withSpace ? kSpacesNodeCsvHeader : kNodeCsvHeader);
+}
 
-void writeNodeRows(std::FILE* out, const World& world) {
+namespace {
+
+void writeNodes(std::FILE* out, const World& world, const std::string* space) {
     const double time = static_cast<double>(world.time());
     for (const SoftBody& body : world.softBodies()) {
         for (std::size_t i = 0; i < body.nodeCount(); ++i) {
             const Vec3& p = body.nodePositions[i];
             const Vec3& v = body.nodeVelocities[i];
-            std::fprintf(out, "%.17g,%s,%zu,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", time, body.name.c_str(), i, double(p.x),
+            if (space != nullptr) std::fprintf(out, "%.17g,%s,", time, space->c_str());
+            else std::fprintf(out, "%.17g,", time);
+            std::fprintf(out, "%s,%zu,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", body.name.c_str(), i, double(p.x),
                          double(p.y), double(p.z), double(v.x), double(v.y), double(v.z));
         }
     }
 }
+
+}  // namespace
+
+void writeNodeRows(std::FILE* out, const World& world) { writeNodes(out, world, nullptr); }
+
+void writeNodeRows(std::FILE* out, const World& world, const std::string& space) { writeNodes(out, world, &space); }
 
 void writeTrajectoryRows(std::FILE* out, const World& world) {
     const double time = static_cast<double>(world.time());
@@ -74,6 +88,7 @@ void writeTrajectoryRows(std::FILE* out, const World& world, const std::string& 
     const double time = static_cast<double>(world.time());
     for (const DynamicObject& body : world.dynamics()) writeRow(out, time, body, body.velocity, body.angularVelocity, &space);
     for (const KinematicsObject& b : world.kinematics()) writeRow(out, time, b, b.velocity, b.angularVelocity, &space);
+    for (const SoftBody& body : world.softBodies()) writeSoftRow(out, time, body, &space);
 }
 
 }  // namespace stepwise

@@ -19,6 +19,8 @@ inline constexpr const char* kSpacesTrajectoryCsvHeader = "time,space,name,px,py
 inline constexpr const char* kSoftBodyCsvColumns = ",volume,pressure";
 /// @brief The header of `--csv-nodes`: one row per node of every soft body per sample.
 inline constexpr const char* kNodeCsvHeader = "time,body,node,px,py,pz,vx,vy,vz";
+/// @brief The header of `--csv-nodes` for a scene with spaces: the space's name after the time.
+inline constexpr const char* kSpacesNodeCsvHeader = "time,space,body,node,px,py,pz,vx,vy,vz";
 
 /// @brief Writes the header line to @p out (kSpacesTrajectoryCsvHeader when @p withSpace), with
 /// kSoftBodyCsvColumns after it when @p withSoftBodies.
@@ -34,13 +36,16 @@ void writeTrajectoryHeader(std::FILE* out, bool withSpace = false, bool withSoft
 /// read back the exact double, so two runs can be compared bit for bit.
 void writeTrajectoryRows(std::FILE* out, const World& world);
 
-/// @brief The same rows for a scene with spaces, with the space's name after the time.
+/// @brief The same rows for a scene with spaces, with the space's name after the time (soft bodies' too).
 void writeTrajectoryRows(std::FILE* out, const World& world, const std::string& space);
 
-/// @brief Writes kNodeCsvHeader to @p out.
-void writeNodeHeader(std::FILE* out);
+/// @brief Writes kNodeCsvHeader to @p out (kSpacesNodeCsvHeader when @p withSpace).
+void writeNodeHeader(std::FILE* out, bool withSpace = false);
 
 /// @brief Writes one row per node of every soft body: time, the body's name, the node's index, position, velocity.
 void writeNodeRows(std::FILE* out, const World& world);
+
+/// @brief The same rows for a scene with spaces, with the space's name after the time.
+void writeNodeRows(std::FILE* out, const World& world, const std::string& space);
 
 }  // namespace stepwise

@@ -4,7 +4,8 @@
 /// A node collides as a sphere of radius `nodeRadius` (a fifth of the mean
 /// edge, soft_mesh.hpp), tested with the narrowphase's own sphere tests
 /// (src/collision/: sphere–plane, sphere–sphere, sphere–box, GJK for
-/// capsules, cylinders and hulls; a compound part by part). A node that
+/// capsules, cylinders and hulls; a compound part by part; a triangle mesh
+/// by its deepest triangle, node_mesh_contacts.cpp). A node that
 /// overlaps an object by the depth d along the object's outward normal n:
 ///
 /// 1. **moves out** by d along n: a position projection, as in
@@ -108,8 +109,9 @@ void respond(SoftBody& body, std::size_t i, const Vec3& normal, Real depth, cons
 /// Every node of @p body within @p bounds against @p shape (one geometry: a part of a compound counts alone).
 void collideWithShape(SoftBody& body, const Aabb& nodeBounds, const Geometry& shape, Obstacle& obstacle,
                       const ContactMaterials& materials, const Vec3& gravity, Real h) {
-    const PairTest test = pairTestFor(GeometryType::Sphere, shape.type);
-    if (test == nullptr || shape.type == GeometryType::Mesh) return;  // meshes: not yet (docs/soft-bodies.md)
+    const PairTest test =  // a mesh: its deepest triangle's overlap only (node_mesh_contacts.cpp)
+        shape.type == GeometryType::Mesh ? collideNodeMesh : pairTestFor(GeometryType::Sphere, shape.type);
+    if (test == nullptr) return;
     if (shape.type != GeometryType::Plane && !geometryAabb(shape).overlaps(nodeBounds)) return;
     const ContactCoefficients mixed = materials.mix(body.material, body.friction, body.elasticity, obstacle.material,
                                                     obstacle.friction, obstacle.elasticity);

@@ -8,12 +8,14 @@
 /// | pressure forces | `pressure_forces.cpp` | node positions, faces, nRT, V | P, node forces |
 /// | integrate | `integrate_nodes.cpp` | forces, gravity, h | node positions, velocities |
 /// | collide | `node_collisions.cpp` | nodes, the rigid objects, materials | node positions, velocities; a dynamic body's v and L |
+/// | … with a mesh | `node_mesh_contacts.cpp` | a node, a triangle mesh and its hierarchy | the node's deepest contact |
 /// | soft contacts | `soft_contacts.cpp` | every soft body's nodes and faces | node positions, velocities |
 #pragma once
 
 #include <cmath>
 #include <span>
 
+#include "collision/narrowphase.hpp"
 #include "core/types.hpp"
 #include "core/world_settings.hpp"
 #include "objects/body_set.hpp"
@@ -75,6 +77,13 @@ void integrateNodes(SoftBody& body, IntegratorKind integrator, Real h, const Vec
 /// @param gravity the World's, m/s²: a node approaching slower than gravity builds in two steps is resting
 /// @param h       the step the nodes were just moved by, s
 void collideNodes(SoftBody& body, const BodySet& rigid, const Vec3& gravity, Real h);
+
+/// @brief Node @p node (a sphere) against the triangle mesh @p mesh: the deepest overlap of all its
+/// triangles near the node, found through the mesh's hierarchy by the rigid bodies' sphere–mesh test
+/// (meshContacts(), within no gap), as a one-point manifold whose normal runs from the node into the
+/// mesh (node_mesh_contacts.cpp). A PairTest, so collideNodes() treats a mesh as any other shape.
+/// @return true when the node overlaps (or just touches) a triangle from its front
+bool collideNodeMesh(const Geometry& node, const Geometry& mesh, ContactManifold& out);
 
 /// @brief Every node of each soft body against the triangles of every other one it may touch, with the
 /// same projection, bounce and friction as collideNodes(), the impulses shared by the triangle's

@@ -187,7 +187,9 @@ std::string spaceLine(const Simulation& simulation, std::size_t k) {
                               double(world.stepCount()), double(s.timeStep)) +
                        toString(s.integrator) + ", " + toString(s.solver);
     if (space.timeScale != 1) line += format("  x%.3g", double(space.timeScale));
-    line += "  bodies " + std::to_string(world.dynamics().size()) + "  contacts " +
+    line += "  bodies " + std::to_string(world.dynamics().size());
+    if (!world.softBodies().empty()) line += "  soft " + std::to_string(world.softBodies().size());
+    line += "  contacts " +
             std::to_string(world.contacts().size()) + format("  energy %.6g J", double(energyOf(world).total()));
     if (space.paused) line += "  PAUSED";
     return line;

@@ -32,7 +32,7 @@ std::vector<std::string> helpLines();
 std::vector<std::string> hudLines(const Simulation& simulation, const OverlayState& state);
 
 /// @brief Space @p k's line of the heads-up display: its key, name, own time, step, h and
-/// integrator and solver, bodies, contacts and energy, and "PAUSED" when it is.
+/// integrator and solver, bodies (and soft bodies, when it has any), contacts and energy, and "PAUSED" when it is.
 std::string spaceLine(const Simulation& simulation, std::size_t k);
 
 /// @brief Draws the overlay in window pixels over whatever is in the colour buffer.

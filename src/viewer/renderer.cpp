@@ -258,13 +258,14 @@ void drawBody(const ShapeLook& look, const Vec3& position, const Quat& orientati
 }
 
 /// A soft body's surface as its nodes are now: each triangle lit by its own normal, then its
-/// edges (the springs) drawn darker over it, as a rigid body's wire frame is.
-void drawSoftBody(const SoftBody& body) {
+/// edges (the springs) drawn darker over it, as a rigid body's wire frame is. In @p own colour:
+/// the body's, or mixed with its space's when the spaces are overlaid.
+void drawSoftBody(const SoftBody& body, const Color& own) {
     const auto corners = [&](const SoftFace& f) {
         return std::array<Vec3, 3>{body.nodePositions[f.a], body.nodePositions[f.b], body.nodePositions[f.c]};
     };
     glEnable(GL_LIGHTING);
-    color(body.color);
+    color(own);
     glBegin(GL_TRIANGLES);
     for (const SoftFace& f : body.faces) {
         const std::array<Vec3, 3> p = corners(f);
@@ -275,7 +276,7 @@ void drawSoftBody(const SoftBody& body) {
     }
     glEnd();
     glDisable(GL_LIGHTING);
-    color(body.color, 0.45f);
+    color(own, 0.45f);
     glLineWidth(1.0f);
     glDepthFunc(GL_LEQUAL);
     for (const SoftFace& f : body.faces) {
@@ -560,7 +561,9 @@ void drawWorld(const Simulation& simulation, std::size_t space, const OrbitCamer
     for (const KinematicsObject& b : view.kinematics) {
         drawBody(lookOf(b), b.position, b.orientation, tinted(b.color, look.tint), true);
     }
-    for (const SoftBody& b : world.softBodies()) drawSoftBody(b);  // the live World's (the walk-through keeps no copy)
+    for (const SoftBody& b : world.softBodies()) {  // the live World's (the walk-through keeps no copy)
+        drawSoftBody(b, tinted(b.color, look.tint));
+    }
 
     glDisable(GL_LIGHTING);
     drawJoints(world, view.dynamics);

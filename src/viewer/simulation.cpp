@@ -27,8 +27,11 @@ void sweepAhead(Scene scene, SpaceLayout& layout) {
     Spaces ahead(std::move(scene));
     for (Space& space : ahead.all()) space.paused = false;
     const Real tick = ahead.finestTick();
-    std::uint64_t bodies = 1;  // every space's dynamic bodies: what a tick costs, at most
-    for (const Space& space : ahead.all()) bodies += space.world.dynamics().size();
+    std::uint64_t bodies = 1;  // every space's dynamic bodies and soft bodies' nodes: what a tick costs, at most
+    for (const Space& space : ahead.all()) {
+        bodies += space.world.dynamics().size();
+        for (const SoftBody& soft : space.world.softBodies()) bodies += soft.nodeCount();
+    }
     const auto ticks = std::min(static_cast<std::uint64_t>(std::llround(duration / tick)),
                                 kLayoutLookaheadBodySteps / bodies);
     const auto grow = [&](std::size_t k) { layout.grow(k, ahead.all()[k].world); };

@@ -28,7 +28,8 @@
 namespace stepwise::viewer {
 
 /// @brief How much work the viewer spends, at most, running a copy of a scene with spaces ahead to
-/// sweep each space's box (SpaceLayout), in body-steps (ticks of the shared clock × dynamic bodies):
+/// sweep each space's box (SpaceLayout), in body-steps (ticks of the shared clock × dynamic bodies,
+/// a soft body counting as one per node):
 /// about a second in a Release build. Counted in work, not in wall-clock time, so the layout is the
 /// same on every machine and build; a bigger scene's layout may widen later.
 inline constexpr std::uint64_t kLayoutLookaheadBodySteps = 2'000'000;

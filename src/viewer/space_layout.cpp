@@ -48,6 +48,9 @@ void SpaceLayout::grow(std::size_t space, const World& world) {
     const Aabb before = box;
     for (const DynamicObject& b : world.dynamics()) add(shapeAabb(b));
     for (const KinematicsObject& b : world.kinematics()) add(shapeAabb(b));
+    for (const SoftBody& b : world.softBodies()) {  // every node's small sphere: the surface as it squashes
+        for (const Vec3& x : b.nodePositions) add(Aabb{x - Vec3(b.nodeRadius), x + Vec3(b.nodeRadius)});
+    }
     // Most steps move the bodies inside the box swept so far: nothing to place again.
     if (box.min != before.min || box.max != before.max) place();
 }

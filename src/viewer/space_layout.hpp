@@ -12,8 +12,8 @@
 ///     d_0 = 0,   d_k = (max_x,k−1 + d_k−1) + gap − min_x,k
 ///
 /// where [min_x,k, max_x,k] is the x extent of space k's *swept box*: the box
-/// around every dynamic and kinematic body's bounding box at every step seen
-/// so far. The viewer first runs a copy of the scene for its Duration to
+/// around every dynamic and kinematic body's bounding box, and every soft
+/// body's nodes, at every step seen so far. The viewer first runs a copy of the scene for its Duration to
 /// sweep the boxes (Simulation), so the layout of a run stays put: a ball
 /// thrown 10 m along x has its 10 m of room from the start, and the other
 /// spaces do not slide away as it flies. Past the Duration the boxes keep
@@ -72,7 +72,8 @@ public:
     /// @brief Forgets every box: @p spaces spaces, none seen yet.
     void reset(std::size_t spaces);
 
-    /// @brief Grows space @p space's swept box by the box of every dynamic and kinematic body of @p world.
+    /// @brief Grows space @p space's swept box by the box of every dynamic and kinematic body of @p world,
+    /// and of every soft body's nodes (each a sphere of its node radius).
     void grow(std::size_t space, const World& world);
 
     /// @brief Draws the spaces side by side or overlaid.

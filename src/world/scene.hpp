@@ -72,6 +72,7 @@ struct Scene {
     std::vector<Material> materials;         ///< `Material` records, in file order (objects' `material` indexes them).
     std::vector<MaterialPair> materialPairs; ///< `MaterialPair` records: pairs with their own μ or e.
     std::vector<SoftBody> softBodies;        ///< `SoftBody` records: pressure soft bodies (src/objects/soft_body.hpp).
+    std::vector<std::uint32_t> softBodySpace;  ///< With spaces: the space of each of `softBodies` (as `dynamicSpace`).
 };
 
 }  // namespace stepwise

@@ -49,9 +49,11 @@ std::vector<std::pair<SpaceDef, Scene>> splitIntoSpaces(Scene scene) {
         part.planes = ofSpace(scene.planes, scene.planeSpace, space);
         part.attractors = ofSpace(scene.attractors, scene.attractorSpace, space);
         part.regions = ofSpace(scene.regions, scene.regionSpace, space);
+        part.softBodies = ofSpace(scene.softBodies, scene.softBodySpace, space);
         part.materials = scene.materials;  // objects name materials by their index in the file's list
         part.materialPairs = scene.materialPairs;
-        const bool anything = !part.dynamics.empty() || !part.kinematics.empty() || !part.planes.empty();
+        const bool anything =
+            !part.dynamics.empty() || !part.kinematics.empty() || !part.planes.empty() || !part.softBodies.empty();
         if (space == kDefaultSpace && !anything) continue;  // every object named its space
         // Springs: body indices into the whole scene's dynamics → into this space's
         std::vector<std::size_t> index(scene.dynamics.size(), kFixedInWorld);
@@ -68,7 +70,9 @@ std::vector<std::pair<SpaceDef, Scene>> splitIntoSpaces(Scene scene) {
         }
         const auto inSpace = [&](const std::string& name) {
             return std::any_of(part.dynamics.begin(), part.dynamics.end(),
-                               [&](const DynamicObject& b) { return b.name == name; });
+                               [&](const DynamicObject& b) { return b.name == name; }) ||
+                   std::any_of(part.softBodies.begin(), part.softBodies.end(),
+                               [&](const SoftBody& b) { return b.name == name; });
         };
         for (const JointDef& joint : scene.joints) {
             if (inSpace(joint.bodyA)) part.joints.push_back(joint);

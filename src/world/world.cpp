@@ -71,7 +71,7 @@ World::World(Scene scene)
       materials_(settings_, scene.materials.size(), scene.materialPairs) {
     require(scene.spaces.empty(), "World",
             "the scene has Space records: each space is a World of its own (src/world/spaces.hpp, Spaces), "
-            "and only stepwise run and stepwise view step them together so far");
+            "and only stepwise run, trace and view step them together so far");
     require(isFinite(settings_.timeStep) && settings_.timeStep > 0, "World", "time step must be > 0 s");
     require(stepwise::isFinite(settings_.gravity), "World", "gravity must be finite");
     // The limits of core/limits.hpp, which the loader reports at their line and column
