@@ -23,6 +23,8 @@ struct SoftStepSettings {
 
 /// @brief Advances every soft body by one step of the World: in each of `substeps` substeps the
 /// springs, the volume, the gas, the move and the collisions with @p rigid (soft_stages.hpp).
+/// An asleep body is not moved; an awake one notes the bodies it touched (SoftBody::touchedDynamics,
+/// touchedSoftBodies, carried), for the islands.
 /// @throws SimulationError naming the body, the soft stage and the step when a node's position or
 ///         velocity stops being finite, or the surface turns inside out (V ≤ 0 with a gas inside).
 void stepSoftBodies(std::span<SoftBody> bodies, const BodySet& rigid, const SoftStepSettings& settings);

@@ -226,11 +226,12 @@ const GLubyte* stripes() {
 }
 
 /// I: one colour per awake island (from a small palette, by the island's
-/// lowest body index), kSleepingColor for a sleeping body.
-Color islandColor(const World& world, const DynamicObject& b, std::uint32_t body) {
+/// lowest body index; soft body k is index dynamics().size() + k, islands.hpp),
+/// kSleepingColor for a sleeping body or soft body.
+Color islandColor(const World& world, bool asleep, std::uint32_t body) {
     static constexpr Color kPalette[] = {{0.9f, 0.45f, 0.2f}, {0.3f, 0.75f, 0.35f}, {0.85f, 0.3f, 0.6f},
                                          {0.95f, 0.8f, 0.2f}, {0.35f, 0.8f, 0.8f},  {0.6f, 0.4f, 0.9f}};
-    if (b.asleep) return kSleepingColor;
+    if (asleep) return kSleepingColor;
     const std::uint32_t island = islandOf(world.islands(), body);
     return kPalette[island % (sizeof kPalette / sizeof kPalette[0])];
 }
@@ -257,14 +258,14 @@ void drawBody(const ShapeLook& look, const Vec3& position, const Quat& orientati
     glPopMatrix();
 }
 
-/// A soft body's surface as its nodes are now: each triangle lit by its own normal, then its
+/// A soft body's surface as its nodes are now, in @p c: each triangle lit by its own normal, then its
 /// edges (the springs) drawn darker over it, as a rigid body's wire frame is.
-void drawSoftBody(const SoftBody& body) {
+void drawSoftBody(const SoftBody& body, const Color& c) {
     const auto corners = [&](const SoftFace& f) {
         return std::array<Vec3, 3>{body.nodePositions[f.a], body.nodePositions[f.b], body.nodePositions[f.c]};
     };
     glEnable(GL_LIGHTING);
-    color(body.color);
+    color(c);
     glBegin(GL_TRIANGLES);
     for (const SoftFace& f : body.faces) {
         const std::array<Vec3, 3> p = corners(f);
@@ -275,7 +276,7 @@ void drawSoftBody(const SoftBody& body) {
     }
     glEnd();
     glDisable(GL_LIGHTING);
-    color(body.color, 0.45f);
+    color(c, 0.45f);
     glLineWidth(1.0f);
     glDepthFunc(GL_LEQUAL);
     for (const SoftFace& f : body.faces) {
@@ -554,13 +555,17 @@ void drawWorld(const Simulation& simulation, std::size_t space, const OrbitCamer
     }
     for (std::uint32_t i = 0; i < view.dynamics.size(); ++i) {
         const DynamicObject& b = view.dynamics[i];
-        const Color own = options.islands ? islandColor(world, b, i) : b.color;
+        const Color own = options.islands ? islandColor(world, b.asleep, i) : b.color;
         drawBody(lookOf(b), b.position, b.orientation, tinted(own, look.tint), false);
     }
     for (const KinematicsObject& b : view.kinematics) {
         drawBody(lookOf(b), b.position, b.orientation, tinted(b.color, look.tint), true);
     }
-    for (const SoftBody& b : world.softBodies()) drawSoftBody(b);  // the live World's (the walk-through keeps no copy)
+    for (std::uint32_t k = 0; k < world.softBodies().size(); ++k) {  // the live World's (the walk-through keeps no copy)
+        const SoftBody& b = world.softBodies()[k];
+        const auto unit = static_cast<std::uint32_t>(world.dynamics().size() + k);
+        drawSoftBody(b, options.islands ? islandColor(world, b.asleep, unit) : b.color);
+    }
 
     glDisable(GL_LIGHTING);
     drawJoints(world, view.dynamics);

@@ -166,12 +166,14 @@ void World::replan() {
     planStale_ = false;
 }
 
-/// Nothing can change this step: no dynamic body is awake (a sleeper is only
-/// woken by an awake body or a moving kinematic one), no kinematic body moves
-/// and there is no soft body.
+/// Nothing can change this step: no dynamic body and no soft body is awake (a
+/// sleeper is only woken by an awake body or a moving kinematic one), and no
+/// kinematic body moves.
 bool World::idle() const {
-    if (!softBodies_.empty()) return false;  // soft bodies do not sleep (docs/soft-bodies.md)
     for (const DynamicObject& body : dynamics_) {
+        if (!body.asleep) return false;
+    }
+    for (const SoftBody& body : softBodies_) {
         if (!body.asleep) return false;
     }
     for (const KinematicsObject& body : kinematics_) {
@@ -187,7 +189,9 @@ const DynamicObject* World::findDynamic(std::string_view name) const {
     return nullptr;
 }
 
-BodySet World::bodies() { return {dynamics_, kinematics_, planes_, &materials_}; }
+std::size_t World::wakeIsland(std::uint32_t body) { return stepwise::wakeIsland(dynamics_, body, softBodies_); }
+
+BodySet World::bodies() { return {dynamics_, kinematics_, planes_, &materials_, softBodies_}; }
 
 void World::step() {
     for (StageRecord& record : stageRecords_) {
@@ -584,6 +588,10 @@ void World::runFastPath(const AccelerationFunction& forces, const ContactSolverS
 /// The soft bodies' stage (src/soft/soft_step.hpp), after the rigid bodies' solve: a node meets the
 /// rigid objects where this step left them, and pushes a dynamic one with an equal and opposite impulse.
 /// The nodes take the rigid bodies' substeps: h/Substeps under the sequential impulse, h under Impulse.
+///
+/// An asleep soft body is not stepped, so it finds no contact of its own: first, every one that an
+/// awake object may reach in this step wakes with its island; after, every asleep rigid body that
+/// an awake soft body's nodes touched (and pushed) wakes with its island (src/dynamics/islands.hpp).
 void World::stepSoftBodies() {
     SoftStepSettings soft;
     soft.gravity = settings_.gravity;
@@ -591,7 +599,9 @@ void World::stepSoftBodies() {
     soft.timeStep = settings_.timeStep;
     soft.substeps = settings_.solver == SolverKind::SequentialImpulse ? settings_.substeps : 1;
     soft.where = {Stage::SoftBodies, stepCount_ + 1, static_cast<double>(time_)};
+    if (settings_.sleeping) wakeSoftBodiesInReach(bodies(), settings_.timeStep, settings_.gravity);
     stepwise::stepSoftBodies(softBodies_, bodies(), soft);
+    if (settings_.sleeping) wakeTouchedBySoftBodies(bodies());
 }
 
 FastPathCounts World::fastPathCounts() const { return fastWorkspace_->counts; }
