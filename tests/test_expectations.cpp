@@ -338,7 +338,7 @@ TEST_CASE("Asleep reads the body's sleep, and unknown names fail at the monitor"
     monitor.observe(world);
     const ExpectationResult r = monitor.results(world)[0];
     CHECK_FALSE(r.passed);
-    CHECK_THAT(r.reason, Contains("no DynamicObject named 'bal'"));
+    CHECK_THAT(r.reason, Contains("no DynamicObject or SoftBody named 'bal'"));
 }
 
 TEST_CASE("Watching a scene does not change its trajectory", "[expect]") {

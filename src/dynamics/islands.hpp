@@ -38,8 +38,8 @@
 /// threshold (a node has no spin): its fastest point is then that slow. The
 /// rigid equilibrium test is not asked of each node: over a hundred nodes it
 /// is far stricter than over one body, and a damped ball dropped on a floor
-/// (Resolution=1, Damping=2) passes it only 7 s after it was dropped, when its
-/// fastest node is below 1 mm/s, against 3 s for the speed. A slow breathing
+/// (Resolution=1, Damping=2) passes it only 8 s after it was dropped, when its
+/// fastest node is below 1 mm/s; every node is below 5 cm/s after 4 s. A slow breathing
 /// that turns at rest is guarded against by the time to sleep: every node
 /// slower than 5 cm/s for 0.5 s is a breathing of a few millimetres at most. An asleep soft body is not stepped (its nodes
 /// stay put); it wakes with its island, and when an awake body may reach it:
