@@ -5,11 +5,13 @@
 
 #include <cmath>
 #include <cstdint>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include "config/scene_loader.hpp"
 #include "expectation_runner.hpp"
+#include "io/trace_writer.hpp"
 #include "objects/soft_mesh.hpp"
 #include "soft/soft_stages.hpp"
 #include "test_support.hpp"
@@ -167,6 +169,41 @@ TEST_CASE("A soft ball resting on a heavy rigid block sleeps with it as one isla
     CHECK(world.wakeIsland(0) == 2);
     CHECK_FALSE(ball.asleep);
     CHECK_FALSE(block.asleep);
+}
+
+TEST_CASE("stepwise trace shows a soft body awake, falling asleep and asleep, as a rigid one", "[soft][sleep][trace]") {
+    // The ball on the block of the test above: find the step they fall asleep at, then trace the
+    // sleep stage of that step and the one before, and the soft stage of the step after.
+    Scene scene = floorScene();
+    scene.dynamics.push_back(test::dynamicBox("block", Vec3(0, 0.15, 0), Vec3(1.2, 0.3, 1.2), Real(10), Real(0.8)));
+    scene.softBodies.push_back(dampedBall("ball", Vec3(0, 0.88, 0)));
+    std::uint64_t asleepAt = 0;
+    {
+        World world{Scene(scene)};
+        while (world.stepCount() < 6 * kStepsPerSecond && !world.softBodies()[0].asleep) world.step();
+        REQUIRE(world.softBodies()[0].asleep);
+        asleepAt = world.stepCount();
+    }
+    TraceOptions options;
+    options.from = asleepAt - 1;
+    options.steps = 2;
+    options.stages = {Stage::Sleep};
+    std::ostringstream out;
+    REQUIRE(writeTrace(scene, options, out, {}));
+    const std::string step = "step " + std::to_string(asleepAt);
+    const std::string before = "step " + std::to_string(asleepAt - 1);
+    CHECK_THAT(out.str(), Contains(before + "  sleep  ball  awake  island 0  still ") &&
+                              Contains("fastest node |v| ") &&
+                              Contains(step + "  sleep  ball  falls asleep (its island was still for 0.5") &&
+                              Contains(step + "  sleep  block  falls asleep"));
+    // Asleep, it is left out of the soft stage, as an asleep rigid body is from integrate: the
+    // next step is idle and runs no stage at all
+    options.from = asleepAt + 1;
+    options.steps = 1;
+    options.stages = {Stage::SoftBodies};
+    std::ostringstream after;
+    REQUIRE(writeTrace(scene, options, after, {}));
+    CHECK_THAT(after.str(), !Contains("soft-bodies  ball"));
 }
 
 // ------------------------------------------------------------------ Expect
