@@ -142,7 +142,7 @@ TEST_CASE("Each rule of the Expect record is reported at its line and column", "
         {"Expect, Object=ball, Asleep=true, Tolerance=1", 45, "Tolerance", "no Tolerance for Asleep"},
         {"Expect, Object=ball, AtRest=true, Compare=AtMost", 43, "Compare", "no Compare for AtRest"},
         {"Expect, Object=ball, Position=(1, 2, 3), Compare=AtLeast, Tolerance=1", 50, "Compare", "no Compare"},
-        {"Expect, Speed=1, Tolerance=1", 1, "Object", "the name of the DynamicObject to check"},
+        {"Expect, Speed=1, Tolerance=1", 1, "Object", "the name of the DynamicObject or SoftBody to check"},
         {"Expect, Object=floor, Speed=1, Tolerance=1", 16, "Object", "the name of a DynamicObject"},
         {"Expect, Object=ball, NotThroughPlane=ball", 38, "NotThroughPlane", "the name of a CollisionPlane"},
         {"Expect, Object=ball, TiltDeg=-1, Tolerance=1", 30, "TiltDeg", "a number >= 0"},
@@ -338,7 +338,7 @@ TEST_CASE("Asleep reads the body's sleep, and unknown names fail at the monitor"
     monitor.observe(world);
     const ExpectationResult r = monitor.results(world)[0];
     CHECK_FALSE(r.passed);
-    CHECK_THAT(r.reason, Contains("no DynamicObject named 'bal'"));
+    CHECK_THAT(r.reason, Contains("no DynamicObject or SoftBody named 'bal'"));
 }
 
 TEST_CASE("Watching a scene does not change its trajectory", "[expect]") {

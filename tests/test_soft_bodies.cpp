@@ -360,7 +360,7 @@ TEST_CASE("A soft ball striking a free rigid ball conserves their total momentum
     CHECK(glm::length(after - before) < 1e-9 * glm::length(before));
 }
 
-TEST_CASE("The step plan runs the soft stage only with soft bodies, and never skips their steps", "[soft][plan]") {
+TEST_CASE("The step plan runs the soft stage only with soft bodies, and skips no step of an awake one", "[soft][plan]") {
     Scene scene = softScene(Vec3(0, -9.81, 0));
     scene.settings.sleeping = true;
     scene.planes.push_back(test::ground());
@@ -369,7 +369,7 @@ TEST_CASE("The step plan runs the soft stage only with soft bodies, and never sk
     World world(std::move(scene));
     CHECK(world.plan().runs(Stage::SoftBodies));
     CHECK(world.plan().softBodies.runs);
-    CHECK_FALSE(world.plan().idleSkip.runs);
+    CHECK(world.plan().idleSkip.runs);  // on, but an awake soft body makes no step idle (World::idle())
     CHECK_THAT(describeStepPlan(world.plan()), Catch::Matchers::Contains("soft bodies"));
     world.step();
     CHECK(world.softBodies()[0].position.y < 1);
@@ -433,6 +433,7 @@ TEST_CASE("A soft ball squashes on a floor: the patch shrinks as the pressure ri
         INFO("nRT " << nRT << " J");
         Scene scene = softScene(g);
         scene.settings.substeps = 16;
+        scene.settings.sleeping = false;  // the statics to 1 %: settled further than sleep's 5 cm/s asks
         scene.planes.push_back(test::ground());
         SoftBodyMaking making;
         making.resolution = 4;

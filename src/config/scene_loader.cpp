@@ -95,6 +95,7 @@ constexpr std::string_view kApexCountHint = "Apex=3 is the third time the body s
 /// Record names an Expect record's names must belong to.
 constexpr std::string_view kDynamicRecord = "DynamicObject";
 constexpr std::string_view kPlaneRecord = "CollisionPlane";
+constexpr std::string_view kSoftBodyRecord = "SoftBody";
 
 /// The quantity fields of an Expect record, and what each measures.
 struct ExpectQuantityField {
@@ -107,9 +108,11 @@ constexpr ExpectQuantityField kExpectQuantityFields[] = {
     {"TiltDeg", ExpectQuantity::TiltDeg},           {"EnergyChange", ExpectQuantity::EnergyChange},
     {"AtRest", ExpectQuantity::AtRest},             {"Asleep", ExpectQuantity::Asleep},
     {"NotThroughPlane", ExpectQuantity::NotThroughPlane},
+    {"Volume", ExpectQuantity::Volume},             {"Pressure", ExpectQuantity::Pressure},
 };
 const std::string kExpectQuantityList =
-    "Position[XYZ], Velocity[XYZ], Speed, AngularSpeed, TiltDeg, EnergyChange, AtRest, Asleep, NotThroughPlane";
+    "Position[XYZ], Velocity[XYZ], Speed, AngularSpeed, TiltDeg, EnergyChange, AtRest, Asleep, NotThroughPlane, "
+    "Volume, Pressure";
 /// A spring without Damping= has none: it oscillates for ever (with a symplectic integrator).
 constexpr Real kDefaultDamping = 0;
 /// An unstable spring is warned about once its swing would grow by more than
@@ -1066,9 +1069,10 @@ private:
         if (const std::optional<std::string> object = values.text("Object")) {
             e.object = *object;
             pendingNames_.push_back({line.number, values.valueColumn("Object"), "Object", *object,
-                                     kDynamicRecord, scene_.expectations.size()});
+                                     kDynamicRecord, scene_.expectations.size(), parts.quantity->column,
+                                     quantityLabel(values, parts)});
         } else if (e.quantity != ExpectQuantity::EnergyChange && !values.isSet("Object")) {
-            sink_.report(line.number, recordName.column, "Object", "the name of the DynamicObject to check", written,
+            sink_.report(line.number, recordName.column, "Object", "the name of the DynamicObject or SoftBody to check", written,
                          "every Expect except EnergyChange names its body, e.g. Object=ball");
         }
         if (e.quantity == ExpectQuantity::NotThroughPlane && values.text(quantity)) {
@@ -1136,12 +1140,37 @@ private:
         return text;
     }
 
-    /// The Expect records' Object and NotThroughPlane must name a body and a
-    /// plane of the file; the name is replaced by the object's own spelling.
+    /// The Expect records' Object and NotThroughPlane must name a body (a DynamicObject or a
+    /// SoftBody) and a plane of the file; the name is replaced by the object's own spelling. A
+    /// quantity only one kind of body has is refused for the other: Volume and Pressure are a soft
+    /// body's, AngularSpeed and TiltDeg a rigid body's (a soft body has no single rotation).
     void resolveExpectNames() {
+        // An Expect record's quantity must be one its body has
+        const auto refuseQuantityOfOtherKind = [&](const PendingName& pending, ExpectQuantity quantity,
+                                                   const NameUse& body) {
+            const bool soft = body.record == kSoftBodyRecord;
+            const bool softOnly = quantity == ExpectQuantity::Volume || quantity == ExpectQuantity::Pressure;
+            const bool rigidOnly = quantity == ExpectQuantity::AngularSpeed || quantity == ExpectQuantity::TiltDeg;
+            const std::string whose = "'" + body.name + "' is the " + std::string(body.record) + " on line " +
+                                      std::to_string(body.line);
+            if (soft && rigidOnly) {
+                sink_.report(pending.line, pending.quantityColumn, pending.quantity,
+                             "a quantity a SoftBody has (Position[XYZ], Velocity[XYZ], Speed, EnergyChange, AtRest, "
+                             "Asleep, NotThroughPlane, Volume, Pressure)",
+                             pending.quantity, whose + ": a soft body has no single rotation to measure");
+            } else if (!soft && softOnly) {
+                sink_.report(pending.line, pending.quantityColumn, pending.quantity,
+                             "a quantity a DynamicObject has (every one but Volume and Pressure)", pending.quantity,
+                             whose + ": Volume and Pressure are a SoftBody's (the gas inside it)");
+            }
+        };
         for (const PendingName& pending : pendingNames_) {
+            const bool object = pending.field == "Object";
+            const auto accepts = [&](std::string_view record) {
+                return record == pending.record || (object && record == kSoftBodyRecord);
+            };
             const auto found = names_.find(toLower(pending.name));
-            if (found == names_.end() || found->second.record != pending.record) {
+            if (found == names_.end() || !accepts(found->second.record)) {
                 std::string hint;
                 if (found != names_.end()) {
                     hint = "'" + found->second.name + "' is the " + std::string(found->second.record) + " on line " +
@@ -1149,18 +1178,20 @@ private:
                 } else {
                     std::vector<std::string> known;
                     for (const auto& [key, use] : names_) {
-                        if (use.record == pending.record) known.push_back(use.name);
+                        if (accepts(use.record)) known.push_back(use.name);
                     }
                     if (const auto suggestion = closestMatch(pending.name, known)) {
                         hint = "did you mean '" + *suggestion + "'?";
                     }
                 }
-                sink_.report(pending.line, pending.column, pending.field,
-                             "the name of a " + std::string(pending.record) + " in this file", pending.name, hint);
+                const std::string kinds = std::string(pending.record) + (object ? " or SoftBody" : "");
+                sink_.report(pending.line, pending.column, pending.field, "the name of a " + kinds + " in this file",
+                             pending.name, hint);
                 continue;
             }
             Expectation& e = scene_.expectations[pending.expectation];
-            (pending.field == "Object" ? e.object : e.plane) = found->second.name;
+            (object ? e.object : e.plane) = found->second.name;
+            if (object) refuseQuantityOfOtherKind(pending, e.quantity, found->second);
         }
     }
 
@@ -1987,8 +2018,10 @@ private:
         int column = 0;               ///< Column of the name.
         std::string field;            ///< "Object" or "NotThroughPlane".
         std::string name;             ///< As written.
-        std::string_view record;      ///< The record type it must name.
+        std::string_view record;      ///< The record type it must name (Object: or a SoftBody).
         std::size_t expectation = 0;  ///< Index into Scene::expectations.
+        int quantityColumn = 0;       ///< Object: column of the record's quantity field.
+        std::string quantity{};       ///< Object: the quantity's name ("TiltDeg"), for a message.
     };
 
     /// A MayChange record as read from its line, before its object is looked up by name.

@@ -198,7 +198,7 @@ constexpr auto kSpaceFields = joined(kSpaceOwnFields, kWorldFields);
 /// Exactly one quantity field (Position … NotThroughPlane) per record; at most
 /// one of Time, Apex, or a From/Until window; the loader checks these rules.
 constexpr FieldSpec kExpectFields[] = {
-    {"Object",          FieldKind::Name,       kNamedOnly, Range::Any},              // a DynamicObject's name
+    {"Object",          FieldKind::Name,       kNamedOnly, Range::Any},              // a DynamicObject's or SoftBody's name
     {"Time",            FieldKind::Number,     kNamedOnly, Range::NonNegative, kMomentHint}, // s
     {"Apex",            FieldKind::Number,     kNamedOnly, Range::Positive, kApexHint},      // 1, 2, 3, …
     {"From",            FieldKind::Number,     kNamedOnly, Range::NonNegative, kMomentHint}, // s
@@ -210,8 +210,10 @@ constexpr FieldSpec kExpectFields[] = {
     {"TiltDeg",         FieldKind::Number,     kNamedOnly, Range::NonNegative},      // degrees
     {"EnergyChange",    FieldKind::Number,     kNamedOnly, Range::Any},              // fraction of |E0|
     {"AtRest",          FieldKind::Boolean,    kNamedOnly, Range::Any},
-    {"Asleep",          FieldKind::Boolean,    kNamedOnly, Range::Any},              // not measurable yet
+    {"Asleep",          FieldKind::Boolean,    kNamedOnly, Range::Any},              // needs Sleep=true
     {"NotThroughPlane", FieldKind::Name,       kNamedOnly, Range::Any},              // a CollisionPlane's name
+    {"Volume",          FieldKind::Number,     kNamedOnly, Range::NonNegative},      // m³, a SoftBody's
+    {"Pressure",        FieldKind::Number,     kNamedOnly, Range::NonNegative},      // Pa, a SoftBody's
     {"Tolerance",       FieldKind::Number,     kNamedOnly, Range::NonNegative, kToleranceHint},
     {"Compare",         FieldKind::Compare,    kNamedOnly, Range::Any},
 };

@@ -3,7 +3,10 @@
 #include "dynamics/islands.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
+
+#include "collision/aabb.hpp"
 
 namespace stepwise {
 
@@ -30,6 +33,35 @@ bool isMovingKinematic(const BodySet& bodies, const BodyRef& ref) {
     return k.velocity != Vec3(0) || k.angularVelocity != Vec3(0);
 }
 
+/// The box of a soft body's nodes, each a sphere of the node radius.
+Aabb nodeBounds(const SoftBody& body) {
+    Aabb box{body.nodePositions[0], body.nodePositions[0]};
+    for (const Vec3& x : body.nodePositions) box = {glm::min(box.min, x), glm::max(box.max, x)};
+    return {box.min - Vec3(body.nodeRadius), box.max + Vec3(body.nodeRadius)};
+}
+
+Aabb widened(const Aabb& box, Real by) { return {box.min - Vec3(by), box.max + Vec3(by)}; }
+
+/// Wakes every body and soft body asleep in island @p island.
+std::size_t wakeSleepIsland(std::span<DynamicObject> bodies, std::span<SoftBody> softBodies, std::uint32_t island) {
+    std::size_t woken = 0;
+    for (DynamicObject& other : bodies) {
+        if (other.asleep && other.sleepIsland == island) {
+            other.asleep = false;
+            other.stillTime = 0;
+            ++woken;
+        }
+    }
+    for (SoftBody& soft : softBodies) {
+        if (soft.asleep && soft.sleepIsland == island) {
+            soft.asleep = false;
+            soft.stillTime = 0;
+            ++woken;
+        }
+    }
+    return woken;
+}
+
 }  // namespace
 
 std::uint32_t islandOf(const IslandWorkspace& workspace, std::uint32_t body) {
@@ -46,15 +78,52 @@ void dropSleepingPairs(const BodySet& bodies, std::vector<CandidatePair>& pairs)
     });
 }
 
-std::size_t wakeIsland(std::span<DynamicObject> bodies, std::uint32_t body) {
+std::size_t wakeIsland(std::span<DynamicObject> bodies, std::uint32_t body, std::span<SoftBody> softBodies) {
     if (!bodies[body].asleep) return 0;
-    const std::uint32_t island = bodies[body].sleepIsland;
+    return wakeSleepIsland(bodies, softBodies, bodies[body].sleepIsland);
+}
+
+std::size_t wakeSoftIsland(std::span<DynamicObject> bodies, std::span<SoftBody> softBodies, std::uint32_t body) {
+    if (!softBodies[body].asleep) return 0;
+    return wakeSleepIsland(bodies, softBodies, softBodies[body].sleepIsland);
+}
+
+std::size_t wakeSoftBodiesInReach(const BodySet& bodies, Real h, const Vec3& gravity) {
     std::size_t woken = 0;
-    for (DynamicObject& other : bodies) {
-        if (other.asleep && other.sleepIsland == island) {
-            other.asleep = false;
-            other.stillTime = 0;
-            ++woken;
+    const Real fall = Real(0.5) * glm::length(gravity) * h * h;
+    for (std::uint32_t k = 0; k < bodies.softBodies.size(); ++k) {
+        const SoftBody& sleeper = bodies.softBodies[k];
+        if (!sleeper.asleep || sleeper.nodeCount() == 0) continue;
+        const Aabb box = nodeBounds(sleeper);
+        bool reached = false;
+        for (const DynamicObject& body : bodies.dynamics) {
+            if (!body.asleep && shapeAabb(body).overlaps(box)) reached = true;
+            if (reached) break;
+        }
+        for (const KinematicsObject& mover : bodies.kinematics) {
+            if (reached) break;
+            if (mover.velocity == Vec3(0) && mover.angularVelocity == Vec3(0)) continue;
+            const Real sweep = (glm::length(mover.velocity) + glm::length(mover.angularVelocity) * shapeReach(mover)) * h;
+            reached = widened(shapeAabb(mover), sweep).overlaps(box);
+        }
+        for (std::uint32_t j = 0; j < bodies.softBodies.size() && !reached; ++j) {
+            const SoftBody& other = bodies.softBodies[j];
+            if (j == k || other.asleep || other.nodeCount() == 0) continue;
+            Real fastest2 = 0;
+            for (const Vec3& v : other.nodeVelocities) fastest2 = std::max(fastest2, glm::dot(v, v));
+            reached = widened(nodeBounds(other), std::sqrt(fastest2) * h + fall).overlaps(box);
+        }
+        if (reached) woken += wakeSoftIsland(bodies.dynamics, bodies.softBodies, k);
+    }
+    return woken;
+}
+
+std::size_t wakeTouchedBySoftBodies(const BodySet& bodies) {
+    std::size_t woken = 0;
+    for (const SoftBody& soft : bodies.softBodies) {
+        if (soft.asleep) continue;
+        for (const std::uint32_t touched : soft.touchedDynamics) {
+            woken += wakeIsland(bodies.dynamics, touched, bodies.softBodies);
         }
     }
     return woken;
@@ -66,10 +135,10 @@ std::size_t wakeTouchedIslands(const BodySet& bodies, std::span<const Contact> c
         const bool aAsleep = bodies.dynamics[a].asleep;
         if (b.kind == BodyKind::Dynamic) {
             const bool bAsleep = bodies.dynamics[b.index].asleep;
-            if (aAsleep && !bAsleep) woken += wakeIsland(bodies.dynamics, a);
-            if (bAsleep && !aAsleep) woken += wakeIsland(bodies.dynamics, b.index);
+            if (aAsleep && !bAsleep) woken += wakeIsland(bodies.dynamics, a, bodies.softBodies);
+            if (bAsleep && !aAsleep) woken += wakeIsland(bodies.dynamics, b.index, bodies.softBodies);
         } else if (aAsleep && isMovingKinematic(bodies, b)) {
-            woken += wakeIsland(bodies.dynamics, a);
+            woken += wakeIsland(bodies.dynamics, a, bodies.softBodies);
         }
     };
     for (const Contact& contact : contacts) wakePair(contact.a, contact.b);
@@ -82,7 +151,9 @@ std::size_t wakeTouchedIslands(const BodySet& bodies, std::span<const Contact> c
 std::size_t updateSleep(const BodySet& bodies, std::span<const Contact> contacts, std::span<const BodyLink> links,
                         const WorldSettings& settings, IslandWorkspace& workspace) {
     std::span<DynamicObject> dynamics = bodies.dynamics;
+    std::span<SoftBody> softBodies = bodies.softBodies;
     const std::size_t n = dynamics.size();
+    const std::size_t units = n + softBodies.size();  // union–find elements: the dynamic bodies, then the soft ones
     const Real h = settings.timeStep;
     const Real linear2 = settings.sleepLinearSpeed * settings.sleepLinearSpeed;
     const Real angular2 = settings.sleepAngularSpeed * settings.sleepAngularSpeed;
@@ -90,8 +161,8 @@ std::size_t updateSleep(const BodySet& bodies, std::span<const Contact> contacts
     // 1. Islands: union–find over dynamic–dynamic contacts and joints. (First, so that the
     //    bodies are walked once for 2, not once for their still times and again for their islands:
     //    with 64k bodies each walk reads megabytes of objects for a few numbers of each.)
-    workspace.parent.resize(n);
-    for (std::uint32_t i = 0; i < n; ++i) workspace.parent[i] = i;
+    workspace.parent.resize(units);
+    for (std::uint32_t i = 0; i < units; ++i) workspace.parent[i] = i;
     workspace.carried.clear();
     for (const Contact& contact : contacts) {
         if (contact.b.kind == BodyKind::Dynamic) join(workspace.parent, contact.a, contact.b.index);
@@ -99,6 +170,13 @@ std::size_t updateSleep(const BodySet& bodies, std::span<const Contact> contacts
     }
     for (const BodyLink& link : links) {
         if (link.b != kWorldAnchor) join(workspace.parent, link.a, link.b);
+    }
+    for (std::uint32_t k = 0; k < softBodies.size(); ++k) {  // what each soft body's nodes touched (src/soft/)
+        const auto unit = static_cast<std::uint32_t>(n + k);
+        for (const std::uint32_t body : softBodies[k].touchedDynamics) join(workspace.parent, unit, body);
+        for (const std::uint32_t other : softBodies[k].touchedSoftBodies) {
+            join(workspace.parent, unit, static_cast<std::uint32_t>(n + other));
+        }
     }
 
     // 2. Still times (squared speeds: no square root per body), and each island's least. Still is
@@ -111,7 +189,7 @@ std::size_t updateSleep(const BodySet& bodies, std::span<const Contact> contacts
     workspace.angularAcceleration.resize(n, Real(0));
     const Real change2 = settings.sleepLinearAcceleration * h * settings.sleepLinearAcceleration * h;
     const Real turnChange2 = settings.sleepAngularAcceleration * h * settings.sleepAngularAcceleration * h;
-    workspace.islandStillTime.assign(n, std::numeric_limits<Real>::max());
+    workspace.islandStillTime.assign(units, std::numeric_limits<Real>::max());
     std::size_t asleep = 0;
     for (std::uint32_t i = 0; i < n; ++i) {
         DynamicObject& body = dynamics[i];
@@ -139,6 +217,20 @@ std::size_t updateSleep(const BodySet& bodies, std::span<const Contact> contacts
         dynamics[a].stillTime = 0;
         if (!dynamics[a].asleep) workspace.islandStillTime[findRoot(workspace.parent, a)] = 0;
     }
+    // A soft body is still when every node is slower than the linear sleep speed (a node has no
+    // spin); one node on a moving kinematic body makes it carried, never still.
+    workspace.softNodeSpeed.resize(softBodies.size(), Real(0));
+    for (std::uint32_t k = 0; k < softBodies.size(); ++k) {
+        SoftBody& soft = softBodies[k];
+        if (soft.asleep) continue;
+        Real fastest2 = 0;
+        for (const Vec3& v : soft.nodeVelocities) fastest2 = std::max(fastest2, glm::dot(v, v));
+        workspace.softNodeSpeed[k] = std::sqrt(fastest2);
+        const bool still = !soft.carried && fastest2 < linear2;
+        soft.stillTime = still ? soft.stillTime + h : Real(0);
+        Real& least = workspace.islandStillTime[findRoot(workspace.parent, static_cast<std::uint32_t>(n + k))];
+        least = std::min(least, soft.stillTime);
+    }
 
     // 3. An island sleeps when its least still body has been still long enough. Most steps no
     //    island has (a pile with one body still rolling is one island, awake): then the bodies
@@ -160,7 +252,18 @@ std::size_t updateSleep(const BodySet& bodies, std::span<const Contact> contacts
             ++asleep;
         }
     }
-    workspace.nextSleepIsland += static_cast<std::uint32_t>(n);  // fresh ids for later islands
+    for (std::uint32_t k = 0; k < softBodies.size(); ++k) {
+        SoftBody& soft = softBodies[k];
+        if (soft.asleep) continue;
+        const std::uint32_t root = findRoot(workspace.parent, static_cast<std::uint32_t>(n + k));
+        if (workspace.islandStillTime[root] >= settings.timeToSleep) {
+            soft.asleep = true;
+            soft.sleepIsland = workspace.nextSleepIsland + root;
+            std::fill(soft.nodeVelocities.begin(), soft.nodeVelocities.end(), Vec3(0));
+            soft.velocity = Vec3(0);
+        }
+    }
+    workspace.nextSleepIsland += static_cast<std::uint32_t>(units);  // fresh ids for later islands
     return asleep;
 }
 

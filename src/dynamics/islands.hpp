@@ -29,6 +29,24 @@
 /// wakes a body. Sleeping bodies remember the island they fell asleep with
 /// (DynamicObject::sleepIsland) so that they wake together.
 ///
+/// **A soft body is one unit of an island** (src/objects/soft_body.hpp). Its
+/// edges are the dynamic bodies its nodes touched in the step and the soft
+/// bodies it touched (SoftBody::touchedDynamics, touchedSoftBodies, noted by
+/// src/soft/); planes and kinematic bodies join nothing, as for rigid bodies,
+/// and a node on a moving kinematic body keeps it from being still. It is
+/// still when every node is slower than `SleepLinearSpeed`, the rigid bodies'
+/// threshold (a node has no spin): its fastest point is then that slow. The
+/// rigid equilibrium test is not asked of each node: over a hundred nodes it
+/// is far stricter than over one body, and a damped ball dropped on a floor
+/// (Resolution=1, Damping=2) passes it only 8 s after it was dropped, when its
+/// fastest node is below 1 mm/s; every node is below 5 cm/s after 4 s. A slow breathing
+/// that turns at rest is guarded against by the time to sleep: every node
+/// slower than 5 cm/s for 0.5 s is a breathing of a few millimetres at most. An asleep soft body is not stepped (its nodes
+/// stay put); it wakes with its island, and when an awake body may reach it:
+/// wakeSoftBodiesInReach(), before the soft step, since an unstepped body finds
+/// no contact of its own. In the union–find, soft body k is element
+/// dynamics.size() + k.
+///
 /// References: Catto, Box2D `b2_island.c`/`solver_set.c`; Ericson §6.
 #pragma once
 
@@ -64,11 +82,14 @@ struct IslandWorkspace {
     std::vector<std::uint32_t> parent;   ///< Union–find forest over dynamic bodies.
     std::vector<Real> islandStillTime;   ///< Per root: the least still time of its bodies, s.
     std::vector<std::uint32_t> carried;  ///< Bodies resting on a moving kinematic body this step (never still).
+    /// Per soft body: its fastest node's speed at the end of the last step, m/s (for the trace).
+    std::vector<Real> softNodeSpeed;
     std::uint32_t nextSleepIsland = 1;   ///< Id for the next island that falls asleep (0 = never slept).
 };
 
 /// @brief The island of awake body @p body after the last updateSleep(): the lowest body
 /// index of its island (a body alone is its own island). For display (the viewer's I key).
+/// Soft body k is element dynamics.size() + k, so an island with a dynamic body in it is named by one.
 std::uint32_t islandOf(const IslandWorkspace& workspace, std::uint32_t body);
 
 /// @brief Drops candidate pairs that cannot change anything: a sleeping body
@@ -80,12 +101,33 @@ void dropSleepingPairs(const BodySet& bodies, std::vector<CandidatePair>& pairs)
 /// @return the number of bodies woken.
 std::size_t wakeTouchedIslands(const BodySet& bodies, std::span<const Contact> contacts, std::span<const BodyLink> links);
 
-/// @brief Wakes @p body and every body that fell asleep in the same island.
-std::size_t wakeIsland(std::span<DynamicObject> bodies, std::uint32_t body);
+/// @brief Wakes @p body and every body and soft body that fell asleep in the same island.
+/// @return the number of bodies and soft bodies woken.
+std::size_t wakeIsland(std::span<DynamicObject> bodies, std::uint32_t body, std::span<SoftBody> softBodies = {});
 
-/// @brief After a step: updates still times, builds islands from @p contacts and
-/// @p links, and puts every island that has been still for settings.timeToSleep to sleep.
-/// @return the number of bodies asleep after the update.
+/// @brief Wakes soft body @p body and every body and soft body that fell asleep in its island.
+std::size_t wakeSoftIsland(std::span<DynamicObject> bodies, std::span<SoftBody> softBodies, std::uint32_t body);
+
+/// @brief Before the soft step: wakes the island of every asleep soft body that an awake object
+/// may reach in this step, since the soft step does not move, and so does not collide, an asleep one.
+///
+/// The test is on boxes, as a broadphase's: the sleeper's nodes' box, widened by its node radius,
+/// against an awake dynamic body's box where the step's solve left it, a moving kinematic body's
+/// box widened by what it moves in the step, and an awake soft body's box widened by its node
+/// radius and what its fastest node can move in the step, |v|·h + ½|g|·h². A box that overlaps
+/// may not touch: the sleeper then wakes a little early, and falls asleep again once still.
+/// @return the number of bodies and soft bodies woken.
+std::size_t wakeSoftBodiesInReach(const BodySet& bodies, Real h, const Vec3& gravity);
+
+/// @brief After the soft step: wakes the island of every asleep dynamic body that an awake soft
+/// body's nodes touched (its touchedDynamics): the body took the nodes' impulses and must move.
+/// @return the number of bodies and soft bodies woken.
+std::size_t wakeTouchedBySoftBodies(const BodySet& bodies);
+
+/// @brief After a step: updates still times, builds islands from @p contacts, @p links and the
+/// soft bodies' touches, and puts every island that has been still for settings.timeToSleep to
+/// sleep (a soft body that falls asleep has its node velocities zeroed, as a rigid body's).
+/// @return the number of dynamic bodies asleep after the update.
 std::size_t updateSleep(const BodySet& bodies, std::span<const Contact> contacts, std::span<const BodyLink> links,
                         const WorldSettings& settings, IslandWorkspace& workspace);
 

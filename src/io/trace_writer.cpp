@@ -150,6 +150,8 @@ void TraceObserver::beforeStage(const StageEvent& event, const World& world) {
     for (std::size_t i = 0; i < world.kinematics().size(); ++i) kinematicBefore_[i] = world.kinematics()[i].position;
     jointBrokenBefore_.resize(world.joints().size());
     for (std::size_t i = 0; i < world.joints().size(); ++i) jointBrokenBefore_[i] = world.joints()[i].broken;
+    softAsleepBefore_.resize(world.softBodies().size());
+    for (std::size_t i = 0; i < world.softBodies().size(); ++i) softAsleepBefore_[i] = world.softBodies()[i].asleep;
 }
 
 void TraceObserver::afterStage(const StageEvent& event, const World& world) {
@@ -192,13 +194,7 @@ void TraceObserver::writeStage(const StageEvent& event, const World& world) {
         case Stage::Continuous:
             line(head, "fast bodies", "stopped at their time of impact: " + std::to_string(world.bodiesStoppedAtImpact()));
             break;
-        case Stage::SoftBodies:  // the pressure stage: each body's gas after this substep of it (src/soft/)
-            for (const SoftBody& b : world.softBodies()) {
-                if (!objectSelected(b.name)) continue;
-                line(head, b.name, "V " + num(b.volume) + " m^3  P = nRT/V " + num(b.pressure) + " Pa  centre " +
-                                       vec(b.position) + " m  v " + vec(b.velocity) + " m/s");
-            }
-            break;
+        case Stage::SoftBodies: writeSoftBodies(head, world); break;
         case Stage::Count: break;
     }
 }
@@ -434,6 +430,25 @@ void TraceObserver::writeRestitution(const std::string& head, const World& world
     }
 }
 
+/// The pressure stage: each awake soft body's gas after this substep of it (src/soft/); an asleep one
+/// is not moved, and is left out as an asleep rigid body is from the integrate stage. A soft body
+/// that an awake object could reach, or a rigid body that a soft body's nodes touched, wakes here.
+void TraceObserver::writeSoftBodies(const std::string& head, const World& world) {
+    for (std::size_t i = 0; i < world.softBodies().size(); ++i) {
+        const SoftBody& b = world.softBodies()[i];
+        if (b.asleep || !objectSelected(b.name)) continue;
+        if (softAsleepBefore_[i]) line(head, b.name, "wakes (an awake object may reach it, or its island woke)");
+        line(head, b.name, "V " + num(b.volume) + " m^3  P = nRT/V " + num(b.pressure) + " Pa  centre " +
+                               vec(b.position) + " m  v " + vec(b.velocity) + " m/s");
+    }
+    const auto& bodies = world.dynamics();
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+        if (asleepBefore_[i] && !bodies[i].asleep && objectSelected(bodies[i].name)) {
+            line(head, bodies[i].name, "wakes (a soft body's nodes touched its island)");
+        }
+    }
+}
+
 /// Per body: asleep or awake after the stage, and why.
 void TraceObserver::writeSleep(const std::string& head, const World& world) {
     const WorldSettings& s = world.settings();
@@ -459,6 +474,25 @@ void TraceObserver::writeSleep(const std::string& head, const World& world) {
                           " rad/s^2 (still when < " + num(s.sleepAngularAcceleration) + ")";
             }
         }
+        line(head, b.name, fields);
+    }
+    // A soft body is still when every node is slow: its fastest node's speed (islands.hpp)
+    const IslandWorkspace& islands = world.islands();
+    for (std::size_t k = 0; k < world.softBodies().size(); ++k) {
+        const SoftBody& b = world.softBodies()[k];
+        if (!objectSelected(b.name)) continue;
+        if (b.asleep) {
+            line(head, b.name, softAsleepBefore_[k] ? "asleep"
+                                                    : "falls asleep (its island was still for " + num(s.timeToSleep) + " s)");
+            continue;
+        }
+        std::string fields = "awake  island " + std::to_string(islandOf(islands, std::uint32_t(bodies.size() + k))) +
+                             "  still " + num(b.stillTime) + " s of " + num(s.timeToSleep) + " s";
+        if (k < islands.softNodeSpeed.size()) {
+            fields += "  fastest node |v| " + num(islands.softNodeSpeed[k]) + " m/s (still when < " +
+                      num(s.sleepLinearSpeed) + " m/s)";
+        }
+        if (b.carried) fields += "  carried by a moving kinematic body";
         line(head, b.name, fields);
     }
 }

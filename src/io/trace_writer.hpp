@@ -88,6 +88,7 @@ private:
     void writeJoints(const std::string& head, const World& world);
     void writeRestitution(const std::string& head, const World& world);
     void writeSleep(const std::string& head, const World& world);
+    void writeSoftBodies(const std::string& head, const World& world);
     void line(const std::string& head, const std::string& object, const std::string& fields);
     std::string num(Real value) const;
     std::string vec(const Vec3& value) const;
@@ -101,6 +102,7 @@ private:
     std::vector<Vec3> angularBefore_;     ///< Per dynamic body, rad/s.
     std::vector<Quat> orientationBefore_; ///< Per dynamic body, before the stage.
     std::vector<char> asleepBefore_;      ///< Per dynamic body: asleep before the stage.
+    std::vector<char> softAsleepBefore_;  ///< Per soft body: asleep before the stage.
     std::vector<Vec3> kinematicBefore_;   ///< Per kinematic body, position before the stage, m.
     std::vector<char> jointBrokenBefore_; ///< Per joint: broken before the stage.
 };

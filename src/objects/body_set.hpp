@@ -6,10 +6,11 @@
 
 #include "objects/game_object.hpp"
 #include "objects/materials.hpp"
+#include "objects/soft_body.hpp"
 
 namespace stepwise {
 
-/// @brief Views of the World's three contiguous object arrays.
+/// @brief Views of the World's contiguous object arrays.
 ///
 /// Stages receive this instead of the World so that each stage declares,
 /// by its signature, that it only works on bodies: it cannot reach the
@@ -20,6 +21,9 @@ struct BodySet {
     std::span<const CollisionPlane> planes;        ///< Infinite planes (read-only).
     /// How contacts mix their sides' friction and elasticity; nullptr: by product, as ContactMaterials() does.
     const ContactMaterials* materials = nullptr;
+    /// Pressure soft bodies: each is one unit of an island (src/dynamics/islands.hpp). The soft step
+    /// gets them apart from this set (src/soft/soft_step.hpp), and the rigid stages do not read them.
+    std::span<SoftBody> softBodies{};
 };
 
 }  // namespace stepwise

@@ -79,6 +79,17 @@ public:
     Real volume = 0;         ///< V, m³: the volume the surface encloses (divergence theorem).
     Real pressure = 0;       ///< P = nRT / V, Pa.
 
+    // Islands and sleep (src/dynamics/islands.hpp): the body is one unit of an island, as a DynamicObject is.
+    bool asleep = false;            ///< Sleeping: its nodes are not moved, until something wakes its island.
+    Real stillTime = 0;             ///< How long every node has been slower than the World's SleepLinearSpeed, s.
+    std::uint32_t sleepIsland = 0;  ///< Island it fell asleep with (the bodies of one island wake together).
+    /// Indices into the World's dynamic bodies of those its nodes touched in this step, each once
+    /// (node_collisions.cpp): they are in its island. Cleared each step; the capacity stays.
+    std::vector<std::uint32_t> touchedDynamics;
+    /// Indices into the World's soft bodies of those it touched in this step, each once (soft_contacts.cpp).
+    std::vector<std::uint32_t> touchedSoftBodies;
+    bool carried = false;  ///< A node touched a moving kinematic body in this step: not still, as a carried rigid body.
+
     /// @brief Number of nodes.
     std::size_t nodeCount() const { return nodePositions.size(); }
 };

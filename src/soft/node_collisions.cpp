@@ -35,7 +35,9 @@
 ///
 /// Each node is met alone, in node order: a node pressed between two
 /// objects is pushed out of the later one last. A dynamic body that a node
-/// touches is woken, but not the rest of its island.
+/// touches is noted in SoftBody::touchedDynamics (a moving kinematic one sets
+/// SoftBody::carried): the World wakes its island if it slept, and the sleep
+/// stage puts it in the soft body's island (src/dynamics/islands.hpp).
 #include <algorithm>
 #include <cmath>
 
@@ -51,6 +53,8 @@ namespace {
 /// The side a node touches: a dynamic body (which takes the opposite impulse), or something that does not give.
 struct Obstacle {
     DynamicObject* dynamic = nullptr;   ///< The body, or nullptr for a plane or a kinematic body.
+    std::uint32_t index = 0;            ///< The dynamic body's index in BodySet::dynamics, for the island.
+    bool moving = false;                ///< A kinematic body with a velocity or an angular velocity.
     Vec3 velocity{0, 0, 0};             ///< A kinematic body's prescribed v, m/s.
     Vec3 angularVelocity{0, 0, 0};      ///< Its ω, rad/s.
     Vec3 centre{0, 0, 0};               ///< Its centre, m.
@@ -129,10 +133,8 @@ void collideWithShape(SoftBody& body, const Aabb& nodeBounds, const Geometry& sh
             if (manifold.points[k].depth > deepest->depth) deepest = &manifold.points[k];
         }
         respond(body, i, -manifold.normal, deepest->depth, deepest->position, obstacle, mixed, gravity, h);
-        if (obstacle.dynamic != nullptr && obstacle.dynamic->asleep) {
-            obstacle.dynamic->asleep = false;
-            obstacle.dynamic->stillTime = 0;
-        }
+        if (obstacle.dynamic != nullptr) noteTouched(body.touchedDynamics, obstacle.index);
+        body.carried = body.carried || obstacle.moving;
     }
 }
 
@@ -173,6 +175,7 @@ void collideNodes(SoftBody& body, const BodySet& rigid, const Vec3& gravity, Rea
         obstacle.velocity = mover.velocity;
         obstacle.angularVelocity = mover.angularVelocity;
         obstacle.centre = mover.position;
+        obstacle.moving = mover.velocity != Vec3(0) || mover.angularVelocity != Vec3(0);
         obstacle.friction = mover.friction;
         obstacle.elasticity = mover.elasticity;
         obstacle.material = mover.material;
@@ -181,6 +184,7 @@ void collideNodes(SoftBody& body, const BodySet& rigid, const Vec3& gravity, Rea
     for (DynamicObject& other : rigid.dynamics) {
         Obstacle obstacle;
         obstacle.dynamic = &other;
+        obstacle.index = static_cast<std::uint32_t>(&other - rigid.dynamics.data());
         obstacle.friction = other.friction;
         obstacle.elasticity = other.elasticity;
         obstacle.material = other.material;

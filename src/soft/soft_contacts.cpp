@@ -24,7 +24,10 @@
 /// A's), so neither body's mesh needs to be finer than the other's. Nothing
 /// stops a node that has gone further in than r_A + r_B: it is not found
 /// again (a thin-shell contact), and a body does not collide with itself.
-/// The cost is nodes × faces per pair whose boxes overlap.
+/// The cost is nodes × faces per pair whose boxes overlap. Two bodies that
+/// touch note each other in SoftBody::touchedSoftBodies, which makes them one
+/// island (src/dynamics/islands.hpp); a pair with a sleeper in it is not met
+/// (the World has woken every sleeper an awake body could reach this step).
 #include <algorithm>
 #include <cmath>
 
@@ -44,8 +47,9 @@ Aabb boundsOf(const SoftBody& body) {
     return box;
 }
 
-/// The nodes of @p a against the faces of @p b.
-void collideNodesWithFaces(SoftBody& a, SoftBody& b, const ContactMaterials& materials, const Vec3& gravity, Real h) {
+/// The nodes of @p a against the faces of @p b; true when some node touched.
+bool collideNodesWithFaces(SoftBody& a, SoftBody& b, const ContactMaterials& materials, const Vec3& gravity, Real h) {
+    bool touched = false;
     const Real reach = a.nodeRadius + b.nodeRadius;
     Aabb faceBounds = boundsOf(b);
     faceBounds.min -= Vec3(a.nodeRadius);
@@ -70,6 +74,7 @@ void collideNodesWithFaces(SoftBody& a, SoftBody& b, const ContactMaterials& mat
             const Vec3 across = glm::cross(pb - pa, pc - pa);
             const Real area2 = glm::length(across);
             if (area2 == 0) continue;
+            touched = true;
             const Vec3 faceNormal = across / area2;  // out of b
             const bool crossed = glm::dot(apart, faceNormal) < 0 || distance == 0;
             const Vec3 n = crossed ? faceNormal : apart / distance;
@@ -116,6 +121,7 @@ void collideNodesWithFaces(SoftBody& a, SoftBody& b, const ContactMaterials& mat
             push(-frictionImpulse / slidingSpeed * sliding);
         }
     }
+    return touched;
 }
 
 }  // namespace
@@ -125,9 +131,14 @@ void collideSoftBodies(std::span<SoftBody> bodies, const ContactMaterials& mater
         for (std::size_t j = i + 1; j < bodies.size(); ++j) {
             SoftBody& a = bodies[i];
             SoftBody& b = bodies[j];
+            if (a.asleep || b.asleep) continue;  // a sleeper an awake body may reach was woken first (World::stepSoftBodies())
             if (a.nodeCount() == 0 || b.nodeCount() == 0 || !boundsOf(a).overlaps(boundsOf(b))) continue;
-            collideNodesWithFaces(a, b, materials, gravity, h);
-            collideNodesWithFaces(b, a, materials, gravity, h);
+            const bool aOnB = collideNodesWithFaces(a, b, materials, gravity, h);
+            const bool bOnA = collideNodesWithFaces(b, a, materials, gravity, h);
+            if (aOnB || bOnA) {  // one island (src/dynamics/islands.hpp)
+                noteTouched(a.touchedSoftBodies, static_cast<std::uint32_t>(j));
+                noteTouched(b.touchedSoftBodies, static_cast<std::uint32_t>(i));
+            }
         }
     }
 }

@@ -13,7 +13,9 @@
 #pragma once
 
 #include <cmath>
+#include <cstdint>
 #include <span>
+#include <vector>
 
 #include "collision/narrowphase.hpp"
 #include "core/types.hpp"
@@ -46,6 +48,15 @@ inline Real separationPayingFor(Real bounce, Real inverseMass, Real work) {
     return paid > 0 ? std::sqrt(paid) : Real(0);
 }
 
+/// @brief Adds @p index to @p touched unless it is there: the bodies a soft body touched this step,
+/// each once (a linear search: a soft body touches few bodies in a step).
+inline void noteTouched(std::vector<std::uint32_t>& touched, std::uint32_t index) {
+    for (const std::uint32_t seen : touched) {
+        if (seen == index) return;
+    }
+    touched.push_back(index);
+}
+
 /// @brief Sets every node's force to zero: the start of a force evaluation.
 void clearNodeForces(SoftBody& body);
 
@@ -72,7 +83,8 @@ void integrateNodes(SoftBody& body, IntegratorKind integrator, Real h, const Vec
 
 /// @brief Pushes every node out of the planes, kinematic and dynamic bodies of @p rigid, and turns its
 /// approach into a bounce with restitution and Coulomb friction (node_collisions.cpp). A dynamic
-/// body gets the opposite impulse at the same point.
+/// body gets the opposite impulse at the same point, and is noted in body.touchedDynamics; a
+/// moving kinematic body sets body.carried.
 /// @param rigid   the World's rigid objects; the dynamic ones' velocity and angular momentum change
 /// @param gravity the World's, m/s²: a node approaching slower than gravity builds in two steps is resting
 /// @param h       the step the nodes were just moved by, s
@@ -87,7 +99,8 @@ bool collideNodeMesh(const Geometry& node, const Geometry& mesh, ContactManifold
 
 /// @brief Every node of each soft body against the triangles of every other one it may touch, with the
 /// same projection, bounce and friction as collideNodes(), the impulses shared by the triangle's
-/// corners (soft_contacts.cpp). A body does not collide with itself.
+/// corners (soft_contacts.cpp). A body does not collide with itself, nor with an asleep one (the
+/// World wakes a sleeper that an awake body may reach, first); each notes the other in touchedSoftBodies.
 void collideSoftBodies(std::span<SoftBody> bodies, const ContactMaterials& materials, const Vec3& gravity, Real h);
 
 /// @brief Sets body.position and body.velocity to the nodes' centre of mass and its velocity.

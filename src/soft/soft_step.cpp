@@ -18,6 +18,11 @@
 /// (h_s = h/Substeps under the sequential impulse, h under Impulse):
 /// springs on light nodes are stiff, and the explicit stability limit
 /// h·ω < 2 (soft_stability.hpp) is met by a short step.
+///
+/// An asleep body (src/dynamics/islands.hpp) is not stepped at all: its nodes
+/// stay where they are, as an asleep rigid body is not integrated. An awake
+/// one starts the step with empty lists of the bodies it touched; the
+/// collisions fill them, and the sleep stage reads them as the island's edges.
 #include "soft/soft_step.hpp"
 
 #include <cmath>
@@ -91,8 +96,15 @@ void stepSoftBodies(std::span<SoftBody> bodies, const BodySet& rigid, const Soft
     const StageAtStep& where = settings.where;
     const ContactMaterials byProduct{};
     const ContactMaterials& materials = rigid.materials != nullptr ? *rigid.materials : byProduct;
+    for (SoftBody& body : bodies) {
+        if (!settings.startsStep) break;  // a later substep of the World's step adds to the step's lists
+        body.touchedDynamics.clear();  // keeps the capacity: no allocation once warm
+        body.touchedSoftBodies.clear();
+        body.carried = false;
+    }
     for (int substep = 0; substep < settings.substeps; ++substep) {
         for (SoftBody& body : bodies) {
+            if (body.asleep) continue;  // not moved while asleep, as a sleeping rigid body is not integrated
             // 1–3. Springs, then the volume and the gas's push (spring_forces.cpp, enclosed_volume.cpp,
             //      pressure_forces.cpp)
             clearNodeForces(body);
@@ -114,7 +126,9 @@ void stepSoftBodies(std::span<SoftBody> bodies, const BodySet& rigid, const Soft
             for (const SoftBody& body : bodies) requireFiniteNodes(body, "soft-soft contacts", where);
         }
     }
-    for (SoftBody& body : bodies) measureCentreOfMass(body);
+    for (SoftBody& body : bodies) {
+        if (!body.asleep) measureCentreOfMass(body);
+    }
 }
 
 }  // namespace stepwise

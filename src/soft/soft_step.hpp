@@ -18,11 +18,14 @@ struct SoftStepSettings {
     IntegratorKind integrator = IntegratorKind::SymplecticEuler; ///< The scene's `Integrator`.
     Real timeStep = 0;                                        ///< h, s: the World's step.
     int substeps = 1;                                         ///< The nodes move h/substeps at a time.
+    bool startsStep = true;                                   ///< The World's step starts here: the touch lists start empty.
     StageAtStep where;                                        ///< The stage and step, to name them in an error.
 };
 
 /// @brief Advances every soft body by one step of the World: in each of `substeps` substeps the
 /// springs, the volume, the gas, the move and the collisions with @p rigid (soft_stages.hpp).
+/// An asleep body is not moved; an awake one notes the bodies it touched (SoftBody::touchedDynamics,
+/// touchedSoftBodies, carried), for the islands.
 /// @throws SimulationError naming the body, the soft stage and the step when a node's position or
 ///         velocity stops being finite, or the surface turns inside out (V ≤ 0 with a gas inside).
 void stepSoftBodies(std::span<SoftBody> bodies, const BodySet& rigid, const SoftStepSettings& settings);

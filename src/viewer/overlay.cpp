@@ -227,9 +227,16 @@ std::vector<std::string> hudLines(const Simulation& simulation, const OverlaySta
 
     const auto asleep = static_cast<std::size_t>(std::count_if(
         world.dynamics().begin(), world.dynamics().end(), [](const DynamicObject& b) { return b.asleep; }));
+    std::string soft;  // soft bodies sleep as rigid ones do (src/dynamics/islands.hpp)
+    if (!world.softBodies().empty()) {
+        const auto softAsleep = static_cast<std::size_t>(std::count_if(
+            world.softBodies().begin(), world.softBodies().end(), [](const SoftBody& b) { return b.asleep; }));
+        soft = "; soft: " + std::to_string(world.softBodies().size() - softAsleep) + " awake, " +
+               std::to_string(softAsleep) + " asleep";
+    }
     lines.push_back("bodies: " + std::to_string(world.dynamics().size() - asleep) + " awake, " +
                     std::to_string(asleep) + " asleep; " + std::to_string(world.kinematics().size()) +
-                    " kinematic, " + std::to_string(world.planes().size()) + " planes");
+                    " kinematic, " + std::to_string(world.planes().size()) + " planes" + soft);
     lines.push_back("contacts " + std::to_string(world.contacts().size()) + "   candidate pairs " +
                     std::to_string(world.candidatePairs().size()));
 

@@ -226,11 +226,12 @@ const GLubyte* stripes() {
 }
 
 /// I: one colour per awake island (from a small palette, by the island's
-/// lowest body index), kSleepingColor for a sleeping body.
-Color islandColor(const World& world, const DynamicObject& b, std::uint32_t body) {
+/// lowest body index; soft body k is index dynamics().size() + k, islands.hpp),
+/// kSleepingColor for a sleeping body or soft body.
+Color islandColor(const World& world, bool asleep, std::uint32_t body) {
     static constexpr Color kPalette[] = {{0.9f, 0.45f, 0.2f}, {0.3f, 0.75f, 0.35f}, {0.85f, 0.3f, 0.6f},
                                          {0.95f, 0.8f, 0.2f}, {0.35f, 0.8f, 0.8f},  {0.6f, 0.4f, 0.9f}};
-    if (b.asleep) return kSleepingColor;
+    if (asleep) return kSleepingColor;
     const std::uint32_t island = islandOf(world.islands(), body);
     return kPalette[island % (sizeof kPalette / sizeof kPalette[0])];
 }
@@ -555,14 +556,16 @@ void drawWorld(const Simulation& simulation, std::size_t space, const OrbitCamer
     }
     for (std::uint32_t i = 0; i < view.dynamics.size(); ++i) {
         const DynamicObject& b = view.dynamics[i];
-        const Color own = options.islands ? islandColor(world, b, i) : b.color;
+        const Color own = options.islands ? islandColor(world, b.asleep, i) : b.color;
         drawBody(lookOf(b), b.position, b.orientation, tinted(own, look.tint), false);
     }
     for (const KinematicsObject& b : view.kinematics) {
         drawBody(lookOf(b), b.position, b.orientation, tinted(b.color, look.tint), true);
     }
-    for (const SoftBody& b : world.softBodies()) {  // the live World's (the walk-through keeps no copy)
-        drawSoftBody(b, tinted(b.color, look.tint));
+    for (std::uint32_t k = 0; k < world.softBodies().size(); ++k) {  // the live World's (the walk-through keeps no copy)
+        const SoftBody& b = world.softBodies()[k];
+        const auto unit = static_cast<std::uint32_t>(world.dynamics().size() + k);
+        drawSoftBody(b, options.islands ? islandColor(world, b.asleep, unit) : tinted(b.color, look.tint));
     }
 
     glDisable(GL_LIGHTING);

@@ -2,8 +2,6 @@
 /// @brief The viewer's World or Spaces: loading and reloading, fixed steps, the S key's recorded steps, picking forces.
 #include "viewer/simulation.hpp"
 
-#include "dynamics/islands.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -107,7 +105,7 @@ void Simulation::pushHeld(World& world) {
                    static_cast<unsigned long long>(world.stepCount() + 1), EventLog::vec(grabPoint()).c_str(),
                    EventLog::vec(grabForce()).c_str());
     }
-    wakeIsland(world.dynamics(), grab_->body);  // a sleeping body must feel the push
+    world.wakeIsland(grab_->body);  // a sleeping body must feel the push, and its island with it
     applyGrab(body, *grab_, world.settings().gravity, world.settings().timeStep);
 }
 

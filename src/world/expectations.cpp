@@ -16,6 +16,15 @@
 /// | EnergyChange      | \f$(E - E_0)/|E_0|\f$, E = ½m|v|² + ½ω·L − m(g + a)·x        | —     |
 /// | AtRest            | \f$|v| + |\omega|\,r_\text{max}\f$: no point of a rigid body moves faster | m/s |
 /// | NotThroughPlane   | \f$(x - p)\cdot n\f$, the centre's signed distance from the plane | m |
+/// | Volume            | V, the volume a soft body's surface encloses                | m³    |
+/// | Pressure          | P = nRT/V of a soft body's gas                              | Pa    |
+///
+/// A SoftBody is measured at its centre of mass (SoftBody::position, its
+/// velocity SoftBody::velocity); AtRest is its fastest node's speed, the
+/// largest speed of any point of its surface; its energy is the nodes'
+/// ½m|v|² and −m·g·x, the springs' ½k(l − L₀)² and the gas's −nRT·ln(V/1 m³)
+/// (energyOf(const SoftBody&, const Vec3&)). It has no single rotation, so
+/// no AngularSpeed or TiltDeg (the loader refuses them).
 ///
 /// The fastest point of a rigid body moving with (v, ω) is at most
 /// |v| + |ω|·r_max from the centre, r_max being the distance of its farthest
@@ -93,6 +102,27 @@ Verdict judge(const Expectation& e, Real value) {
     return {off <= e.tolerance, off};
 }
 
+/// A soft body's quantity @p e, at its centre of mass (the table above); @p plane for NotThroughPlane.
+Real measureSoft(const SoftBody& body, const Expectation& e, const CollisionPlane* plane) {
+    switch (e.quantity) {
+        case ExpectQuantity::Position:
+            return e.component >= 0 ? body.position[e.component] : glm::length(body.position - e.targetVector);
+        case ExpectQuantity::Velocity:
+            return e.component >= 0 ? body.velocity[e.component] : glm::length(body.velocity - e.targetVector);
+        case ExpectQuantity::Speed: return glm::length(body.velocity);
+        case ExpectQuantity::AtRest: {  // the fastest point of the surface is a node
+            Real fastest2 = 0;
+            for (const Vec3& v : body.nodeVelocities) fastest2 = std::max(fastest2, glm::dot(v, v));
+            return std::sqrt(fastest2);
+        }
+        case ExpectQuantity::NotThroughPlane: return plane != nullptr ? plane->signedDistance(body.position) : Real(0);
+        case ExpectQuantity::Asleep: return body.asleep ? Real(1) : Real(0);
+        case ExpectQuantity::Volume: return body.volume;
+        case ExpectQuantity::Pressure: return body.pressure;
+        default: return 0;  // AngularSpeed, TiltDeg: refused by the loader and by the monitor's constructor
+    }
+}
+
 std::string number(Real value) {
     char text[48];
     std::snprintf(text, sizeof text, "%.6g", double(value));
@@ -114,6 +144,8 @@ std::string quantityName(const Expectation& e) {
         case ExpectQuantity::AtRest: return "AtRest";
         case ExpectQuantity::Asleep: return "Asleep";
         case ExpectQuantity::NotThroughPlane: return "NotThroughPlane";
+        case ExpectQuantity::Volume: return "Volume";
+        case ExpectQuantity::Pressure: return "Pressure";
     }
     return "?";
 }
@@ -142,6 +174,8 @@ const char* unitOf(const Expectation& e) {
         case ExpectQuantity::AtRest: return "m/s";
         case ExpectQuantity::Asleep: return "";
         case ExpectQuantity::NotThroughPlane: return "m";
+        case ExpectQuantity::Volume: return "m^3";
+        case ExpectQuantity::Pressure: return "Pa";
     }
     return "";
 }
@@ -202,13 +236,23 @@ ExpectationMonitor::ExpectationMonitor(const World& world, std::vector<Expectati
         Track& track = tracks_[i];
         if (!e.object.empty()) {
             const auto& bodies = world.dynamics();
+            const auto& softBodies = world.softBodies();
             const auto found = std::find_if(bodies.begin(), bodies.end(),
                                             [&](const DynamicObject& b) { return sameName(b.name, e.object); });
-            if (found == bodies.end()) {
-                track.problem = "not measurable: the scene has no DynamicObject named '" + e.object + "'";
+            const auto foundSoft = std::find_if(softBodies.begin(), softBodies.end(),
+                                                [&](const SoftBody& b) { return sameName(b.name, e.object); });
+            const bool softOnly = e.quantity == ExpectQuantity::Volume || e.quantity == ExpectQuantity::Pressure;
+            const bool rigidOnly = e.quantity == ExpectQuantity::AngularSpeed || e.quantity == ExpectQuantity::TiltDeg;
+            if (found != bodies.end() && !softOnly) {
+                track.body = static_cast<int>(found - bodies.begin());
+            } else if (foundSoft != softBodies.end() && !rigidOnly) {
+                track.soft = static_cast<int>(foundSoft - softBodies.begin());
+            } else {
+                track.problem = "not measurable: the scene has no " +
+                                std::string(softOnly ? "SoftBody" : rigidOnly ? "DynamicObject" : "DynamicObject or SoftBody") +
+                                " named '" + e.object + "'";
                 continue;
             }
-            track.body = static_cast<int>(found - bodies.begin());
         } else if (e.quantity != ExpectQuantity::EnergyChange) {
             track.problem = "not measurable: " + quantityName(e) + " needs Object=<name>";
             continue;
@@ -228,9 +272,7 @@ ExpectationMonitor::ExpectationMonitor(const World& world, std::vector<Expectati
             continue;
         }
         if (e.quantity == ExpectQuantity::EnergyChange) {
-            const Energy energy = track.body >= 0 ? energyOf(world.dynamics()[track.body], world.settings().gravity)
-                                                  : energyOf(world);
-            track.startEnergy = energy.total();
+            track.startEnergy = energyOfTrack(world, track);
             if (std::abs(track.startEnergy) < kMinStartEnergy) {
                 track.problem = "not measurable: the starting energy is 0 J, so it has no relative change "
                                 "(move the body, or the potential's zero at the origin, away from it)";
@@ -239,11 +281,19 @@ ExpectationMonitor::ExpectationMonitor(const World& world, std::vector<Expectati
     }
 }
 
+/// The energy an EnergyChange watches: of its body, its soft body, or the whole World, J.
+Real ExpectationMonitor::energyOfTrack(const World& world, const Track& track) const {
+    const Vec3& g = world.settings().gravity;
+    if (track.soft >= 0) return energyOf(world.softBodies()[track.soft], g).total();
+    return (track.body >= 0 ? energyOf(world.dynamics()[track.body], g) : energyOf(world)).total();
+}
+
 Real ExpectationMonitor::measure(const World& world, const Expectation& e, const Track& track) const {
     if (e.quantity == ExpectQuantity::EnergyChange) {
-        const Energy energy = track.body >= 0 ? energyOf(world.dynamics()[track.body], world.settings().gravity)
-                                              : energyOf(world);
-        return (energy.total() - track.startEnergy) / std::abs(track.startEnergy);
+        return (energyOfTrack(world, track) - track.startEnergy) / std::abs(track.startEnergy);
+    }
+    if (track.soft >= 0) {
+        return measureSoft(world.softBodies()[track.soft], e, track.plane >= 0 ? &world.planes()[track.plane] : nullptr);
     }
     const DynamicObject& body = world.dynamics()[track.body];
     switch (e.quantity) {
@@ -298,9 +348,12 @@ void ExpectationMonitor::observe(const World& world) {
                 break;
             case ExpectWhen::Apex: {
                 if (track.apexesSeen >= e.apex) break;
-                const DynamicObject& body = world.dynamics()[track.body];
+                const bool soft = track.soft >= 0;
+                const GameObject& body = soft ? static_cast<const GameObject&>(world.softBodies()[track.soft])
+                                              : world.dynamics()[track.body];
+                const Vec3& velocity = soft ? world.softBodies()[track.soft].velocity : world.dynamics()[track.body].velocity;
                 const Real height = glm::dot(body.position, up_);
-                const Real upward = glm::dot(body.velocity, up_);
+                const Real upward = glm::dot(velocity, up_);
                 const Real value = measure(world, e, track);
                 if (!track.havePrevious) {
                     track.lowestSinceApex = height;

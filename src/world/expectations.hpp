@@ -34,10 +34,12 @@ enum class ExpectQuantity : std::uint8_t {
     Speed,            ///< |v| of the centre, m/s.
     AngularSpeed,     ///< |ω|, rad/s.
     TiltDeg,          ///< Angle between the body's own y axis and the world's up, degrees (0 = upright).
-    EnergyChange,     ///< (E − E₀)/|E₀|, E = kinetic + potential of the body (or of all dynamic bodies).
-    AtRest,           ///< Fastest point speed |v| + |ω|·r_max ≤ Tolerance (default kDefaultRestSpeed).
-    Asleep,           ///< Not measurable yet: bodies do not sleep (the solver work brings sleep).
+    EnergyChange,     ///< (E − E₀)/|E₀|, E = kinetic + potential of the body (or of all bodies and soft bodies).
+    AtRest,           ///< Fastest point speed |v| + |ω|·r_max (a soft body: fastest node) ≤ Tolerance (default kDefaultRestSpeed).
+    Asleep,           ///< Is the body asleep (its island still for the World's TimeToSleep)? Needs Sleep=true.
     NotThroughPlane,  ///< Signed distance of the centre from a named plane stays ≥ −Tolerance (default 0).
+    Volume,           ///< A soft body's enclosed volume V, m³ (SoftBody::volume).
+    Pressure,         ///< A soft body's gas pressure P = nRT/V, Pa (SoftBody::pressure).
 };
 
 /// @brief How a measured value is compared with the target.
@@ -70,7 +72,7 @@ inline constexpr const char* kAllBodies = "";
 /// @brief One Expect record: a quantity of one body, a target, and when it must hold.
 struct Expectation {
     int line = 0;                             ///< Line of the record in its file (0 when built in code).
-    std::string object = kAllBodies;          ///< The DynamicObject it is about; "" = all of them (EnergyChange).
+    std::string object = kAllBodies;          ///< The DynamicObject or SoftBody it is about; "" = all of them (EnergyChange).
     ExpectQuantity quantity = ExpectQuantity::Position; ///< What is measured.
     int component = -1;                       ///< Position and Velocity: 0, 1, 2 for X, Y, Z; −1 for the whole vector.
     Real target = 0;                          ///< Target of a single number (or of the chosen component).
@@ -130,7 +132,8 @@ public:
 private:
     /// What the monitor remembers about one expectation between observations.
     struct Track {
-        int body = -1;                 ///< Index into World::dynamics(); −1 = all bodies.
+        int body = -1;                 ///< Index into World::dynamics(); −1 = all bodies, or a soft body.
+        int soft = -1;                 ///< Index into World::softBodies(), or −1.
         int plane = -1;                ///< Index into World::planes() (NotThroughPlane).
         std::string problem;           ///< Set when the expectation cannot be measured at all.
         Real startEnergy = 0;          ///< E₀, J (EnergyChange).
@@ -149,6 +152,7 @@ private:
     };
 
     Real measure(const World& world, const Expectation& e, const Track& track) const;
+    Real energyOfTrack(const World& world, const Track& track) const;
     void sample(const Expectation& e, Track& track, Real value, Real time) const;
 
     std::vector<Expectation> expectations_;

@@ -4,6 +4,8 @@
 
 #include <cmath>
 
+#include "soft/soft_stages.hpp"  // enclosedVolume()
+
 namespace stepwise {
 
 Energy energyOf(const DynamicObject& body, const Vec3& gravity) {
@@ -29,18 +31,29 @@ Energy energyOf(const World& world) {
     }
     for (const Spring& spring : world.springs()) energy.potential += springPotentialEnergy(spring, world.dynamics());
     for (const SoftBody& body : world.softBodies()) {
-        for (std::size_t i = 0; i < body.nodeCount(); ++i) {
-            const Real m = Real(1) / body.nodeInverseMasses[i];
-            energy.translational += Real(0.5) * m * glm::dot(body.nodeVelocities[i], body.nodeVelocities[i]);
-            energy.potential -= m * glm::dot(world.settings().gravity, body.nodePositions[i]);
-        }
-        for (const SoftSpring& s : body.springs) {
-            const Real stretch = glm::length(body.nodePositions[s.b] - body.nodePositions[s.a]) - s.restLength;
-            energy.potential += Real(0.5) * s.stiffness * stretch * stretch;
-        }
-        if (body.nRT > 0 && body.volume > 0) energy.potential -= body.nRT * std::log(body.volume);
+        const Energy own = energyOf(body, world.settings().gravity);
+        energy.translational += own.translational;
+        energy.potential += own.potential;
     }
     energy.kinetic = energy.translational + energy.rotational;
+    return energy;
+}
+
+Energy energyOf(const SoftBody& body, const Vec3& gravity) {
+    Energy energy;
+    for (std::size_t i = 0; i < body.nodeCount(); ++i) {
+        const Real m = Real(1) / body.nodeInverseMasses[i];
+        energy.translational += Real(0.5) * m * glm::dot(body.nodeVelocities[i], body.nodeVelocities[i]);
+        energy.potential -= m * glm::dot(gravity, body.nodePositions[i]);
+    }
+    for (const SoftSpring& s : body.springs) {
+        const Real stretch = glm::length(body.nodePositions[s.b] - body.nodePositions[s.a]) - s.restLength;
+        energy.potential += Real(0.5) * s.stiffness * stretch * stretch;
+    }
+    // The volume where the nodes are now: body.volume is the pressure stage's, from before the last move
+    const Real volume = enclosedVolume(body.nodePositions, body.faces);
+    if (body.nRT > 0 && volume > 0) energy.potential -= body.nRT * std::log(volume);
+    energy.kinetic = energy.translational;
     return energy;
 }
 

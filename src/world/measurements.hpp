@@ -34,6 +34,14 @@ Energy energyOf(const World& world);
 /// @brief The same energies for one body in a uniform field @p gravity (energyOf(world) sums these).
 Energy energyOf(const DynamicObject& body, const Vec3& gravity);
 
+/// @brief A soft body's energies in a uniform field @p gravity, J (energyOf(world) adds these).
+///
+/// The nodes' Σ ½·m·|v|² (translational: a node has no spin), and as potential their
+/// Σ −m·g·x, the springs' Σ ½·k·(l − L₀)², and the gas's −nRT·ln(V / 1 m³). The gas's force on
+/// the nodes is −∂/∂x of that (pressure_forces.cpp), so springs, gas and gravity together
+/// conserve the total in free flight, up to the integrator's error; only its changes mean anything.
+Energy energyOf(const SoftBody& body, const Vec3& gravity);
+
 /// @brief The energy that belongs to the dynamic body number @p index alone, J.
 ///
 /// Its kinetic energy and its potential energy in the uniform fields (energyOf(body, gravity)),

@@ -267,12 +267,11 @@ PlanDecision softBodiesOf(const PlanInputs& in) {
 }
 
 PlanDecision idleSkipOf(const PlanInputs& in) {
-    if (!in.softBodies.empty()) return skip("off: soft bodies never sleep, so no step is idle");
     if (in.settings.solver == SolverKind::Impulse) {
         return run("on, rarely: the Impulse solver lets no body sleep, so only a world without an awake body is idle");
     }
     if (!in.settings.sleeping) return skip("off: Sleep=false, so bodies never fall asleep and every step is solved");
-    return run("on: a step with no dynamic body awake and no kinematic body moving returns at once");
+    return run("on: a step with no dynamic or soft body awake and no kinematic body moving returns at once");
 }
 
 static_assert(kAutoBruteForceBelow == 64, "the reason below quotes kAutoBruteForceBelow: update it");
@@ -318,7 +317,9 @@ void planStages(const PlanInputs& in, StepPlan& plan) {
     if (in.dynamics.empty()) {
         set(Stage::ApplyForces, skip("skipped: no dynamic body to push"));
         set(Stage::Integrate, skip("skipped: no dynamic body to move"));
-        if (sequential && in.settings.sleeping) set(Stage::Sleep, skip("skipped: no dynamic body to fall asleep"));
+        if (sequential && in.settings.sleeping && in.softBodies.empty()) {
+            set(Stage::Sleep, skip("skipped: no dynamic or soft body to fall asleep"));
+        }
     }
     if (!anyKinematicMoves(in)) {
         set(Stage::MoveKinematics, in.kinematics.empty()

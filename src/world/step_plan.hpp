@@ -153,10 +153,12 @@ struct PlanInputs {
 /// - **Joint solver**: with no joints, every joint call loops over nothing.
 /// - **Moving kinematic bodies**: a kinematic body with zero velocity and
 ///   angular velocity moves by h·0 and turns by a zero rotation, so the stage is skipped.
-/// - **Idle steps** (`Sleep=true`): when no dynamic body is awake and no
-///   kinematic body moves, nothing can wake a sleeper (only an awake body or
-///   a moving kinematic body does), so the whole step is skipped; the clock
-///   still advances. Checked every step, since bodies wake and fall asleep.
+/// - **Idle steps** (`Sleep=true`): when no dynamic body and no soft body is
+///   awake and no kinematic body moves, nothing can wake a sleeper (only an
+///   awake body or a moving kinematic body does), so the whole step is
+///   skipped; the clock still advances. An asleep soft body's nodes are not
+///   moved (src/dynamics/islands.hpp), so the skipped soft stage would have
+///   left them as they are. Checked every step, since bodies wake and fall asleep.
 /// - **Fast path** (sequential impulse): not a skip but another road to the
 ///   same numbers. The substeps run on the fast path (src/fast/fast_path.hpp:
 ///   contacts four at a time in SIMD lanes) when the plan is on,
@@ -184,8 +186,8 @@ struct PlanInputs {
 /// - **Soft bodies**: their stage runs when the scene has one; without, it
 ///   would loop over nothing. It runs at the start of every substep, so a
 ///   scene with one takes the plain substeps: no fast path, and every island
-///   the full `Substeps`. A soft body never sleeps, so a scene with one
-///   is never idle.
+///   the full `Substeps`. A soft body sleeps with its island, as a rigid
+///   one does, and a scene whose soft bodies are all asleep can be idle.
 /// - **Conveyors**: only a scene with a Conveyor region works out each body's
 ///   belt velocity (after the regions find their bodies) and hands it to the
 ///   contact preparation; without one, the preparation is given none, and

@@ -166,12 +166,14 @@ void World::replan() {
     planStale_ = false;
 }
 
-/// Nothing can change this step: no dynamic body is awake (a sleeper is only
-/// woken by an awake body or a moving kinematic one), no kinematic body moves
-/// and there is no soft body.
+/// Nothing can change this step: no dynamic body and no soft body is awake (a
+/// sleeper is only woken by an awake body or a moving kinematic one), and no
+/// kinematic body moves.
 bool World::idle() const {
-    if (!softBodies_.empty()) return false;  // soft bodies do not sleep (docs/soft-bodies.md)
     for (const DynamicObject& body : dynamics_) {
+        if (!body.asleep) return false;
+    }
+    for (const SoftBody& body : softBodies_) {
         if (!body.asleep) return false;
     }
     for (const KinematicsObject& body : kinematics_) {
@@ -187,7 +189,9 @@ const DynamicObject* World::findDynamic(std::string_view name) const {
     return nullptr;
 }
 
-BodySet World::bodies() { return {dynamics_, kinematics_, planes_, &materials_}; }
+std::size_t World::wakeIsland(std::uint32_t body) { return stepwise::wakeIsland(dynamics_, body, softBodies_); }
+
+BodySet World::bodies() { return {dynamics_, kinematics_, planes_, &materials_, softBodies_}; }
 
 void World::step() {
     for (StageRecord& record : stageRecords_) {
@@ -262,7 +266,7 @@ void World::stepWithImpulses() {
     runStage(Stage::CorrectPositions, [&] { correctPositions(bodies(), contacts_, h, supportStep, contactWorkspace_); });
 
     // 7b. Soft bodies: springs, gas, nodes moved and pushed out of the rigid objects (src/soft/soft_step.cpp)
-    runStage(Stage::SoftBodies, [&] { stepSoftBodies(settings_.timeStep, 1); });
+    runStage(Stage::SoftBodies, [&] { stepSoftBodies(settings_.timeStep, 1, true); });
 
     // 8. Bodies that ended the step in a Kill region leave the world (src/world/world_regions.cpp)
     if (plan_.killRegions.runs) removeKilledBodies();
@@ -408,7 +412,7 @@ void World::stepWithSequentialImpulses() {
             //     moved and pushed out of the rigid objects. A node's push on a dynamic body is a velocity,
             //     like a kick of the integrator: the body moves with it in this substep, and the solve holds
             //     it against the body's own contacts, so a box on a ball and a box under one both end at rest.
-            runStage(Stage::SoftBodies, [&] { stepSoftBodies(hs, 1); });
+            runStage(Stage::SoftBodies, [&] { stepSoftBodies(hs, 1, substep == 0); });
             runStage(Stage::Integrate, [&] {
                 recordPoses(bodies(), solverWorkspace_);  // the solve measures separations from before the flight
                 integrateBodies(settings_.integrator, dynamics_, hs, forces);
@@ -586,16 +590,23 @@ void World::runFastPath(const AccelerationFunction& forces, const ContactSolverS
 /// The soft bodies' stage (src/soft/soft_step.hpp) for @p substeps substeps of @p h / @p substeps each.
 /// Under the sequential impulse it runs once at the start of every substep (stage 5a), so that the
 /// rigid bodies move with the nodes' pushes and their solve holds them; under Impulse, once after
-/// the step's collisions are repaired. A node pushes a dynamic body with an
-/// equal and opposite impulse.
-void World::stepSoftBodies(Real h, int substeps) {
+/// the step's collisions are repaired. A node pushes a dynamic body with an equal and opposite impulse.
+///
+/// An asleep soft body is not stepped, so it finds no contact of its own: at the step's first call
+/// (@p startsStep), every one that an awake object may reach in this step wakes with its island; after
+/// each call, every asleep rigid body that an awake soft body's nodes touched (and pushed) wakes with
+/// its island (src/dynamics/islands.hpp).
+void World::stepSoftBodies(Real h, int substeps, bool startsStep) {
     SoftStepSettings soft;
     soft.gravity = settings_.gravity;
     soft.integrator = settings_.integrator;
     soft.timeStep = h;
     soft.substeps = substeps;
+    soft.startsStep = startsStep;
     soft.where = {Stage::SoftBodies, stepCount_ + 1, static_cast<double>(time_)};
+    if (settings_.sleeping && startsStep) wakeSoftBodiesInReach(bodies(), settings_.timeStep, settings_.gravity);
     stepwise::stepSoftBodies(softBodies_, bodies(), soft);
+    if (settings_.sleeping) wakeTouchedBySoftBodies(bodies());
 }
 
 FastPathCounts World::fastPathCounts() const { return fastWorkspace_->counts; }

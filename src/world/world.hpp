@@ -90,6 +90,11 @@ public:
     /// @brief The dynamic body called @p name, or nullptr.
     const DynamicObject* findDynamic(std::string_view name) const;
 
+    /// @brief Wakes dynamic body @p body and everything that fell asleep in its island, soft bodies
+    /// included (src/dynamics/islands.hpp): what a tool that pushes a body does first (the viewer's mouse).
+    /// @return the number of bodies and soft bodies woken.
+    std::size_t wakeIsland(std::uint32_t body);
+
     const std::vector<CandidatePair>& candidatePairs() const { return pairs_; }  ///< Last broadphase output.
     const std::vector<Contact>& contacts() const { return contacts_; }           ///< Last narrowphase output.
     const std::vector<ImpulseReport>& impulses() const { return impulses_; }     ///< One per contact, last step.
@@ -153,7 +158,7 @@ private:
     void findRegionMembers(bool throughBroadphase);  // world_regions.cpp
     RegionForces regionForces(Real substepTime) const;  // world_regions.cpp
     void removeKilledBodies();                       // world_regions.cpp
-    void stepSoftBodies(Real h, int substeps);
+    void stepSoftBodies(Real h, int substeps, bool startsStep);
     BodySet bodies();
 
     WorldSettings settings_;
