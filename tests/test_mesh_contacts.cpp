@@ -17,6 +17,7 @@
 #include "collision/mesh_contacts.hpp"
 #include "config/scene_loader.hpp"
 #include "expectation_runner.hpp"
+#include "mesh_fixtures.hpp"
 #include "collision/mesh_query.hpp"
 #include "objects/inertia.hpp"
 #include "objects/triangle_mesh.hpp"
@@ -33,22 +34,9 @@ namespace {
 constexpr Real kRoundOff = 1e-9;
 
 /// A flat grid of n × n square cells of side @p cell in the plane y = 0, from the origin
-/// towards +x and +z, each cell two triangles counter-clockwise seen from above: 2n² triangles.
+/// towards +x and +z (test::heightGrid(), mesh_fixtures.hpp): 2n² triangles.
 TriangleMesh flatGrid(std::uint32_t n, Real cell) {
-    std::vector<Vec3> vertices;
-    for (std::uint32_t i = 0; i <= n; ++i) {
-        for (std::uint32_t k = 0; k <= n; ++k) vertices.emplace_back(Real(i) * cell, 0, Real(k) * cell);
-    }
-    std::vector<std::array<std::uint32_t, 3>> triangles;
-    const auto at = [n](std::uint32_t i, std::uint32_t k) { return i * (n + 1) + k; };
-    for (std::uint32_t i = 0; i < n; ++i) {
-        for (std::uint32_t k = 0; k < n; ++k) {
-            // Seen from above (+y), x then z runs clockwise: (x, z) → (x, z + 1) → (x + 1, z) is counter-clockwise.
-            triangles.push_back({at(i, k), at(i, k + 1), at(i + 1, k)});
-            triangles.push_back({at(i + 1, k), at(i, k + 1), at(i + 1, k + 1)});
-        }
-    }
-    return buildTriangleMesh(vertices, triangles);
+    return test::heightGrid(n, cell, 0, 0, [](Real, Real) { return Real(0); });
 }
 
 Geometry meshGeometry(const TriangleMesh& mesh, Vec3 centre = Vec3(0), Quat orientation = Quat(1, 0, 0, 0)) {

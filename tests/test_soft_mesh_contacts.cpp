@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "objects/soft_mesh.hpp"
+#include "mesh_fixtures.hpp"
 #include "objects/triangle_mesh.hpp"
 #include "soft/soft_stages.hpp"
 #include "test_support.hpp"
@@ -26,28 +27,12 @@ namespace {
 /// Closest points and a clip are a few products and sums: round-off only, m.
 constexpr Real kRoundOff = 1e-12;
 
-/// A grid of n × n square cells of side @p cell in the plane y = height(x, z), centred on the
-/// origin, each cell two triangles counter-clockwise seen from above (+y): 2n² triangles.
+/// A grid of n × n square cells of side @p cell over y = height(x, z), centred on the origin
+/// (test::heightGrid(), mesh_fixtures.hpp): 2n² triangles.
 template <class Height>
 TriangleMesh grid(std::uint32_t n, Real cell, Height height) {
-    std::vector<Vec3> vertices;
     const Real half = Real(n) * cell / 2;
-    for (std::uint32_t i = 0; i <= n; ++i) {
-        for (std::uint32_t k = 0; k <= n; ++k) {
-            const Real x = Real(i) * cell - half;
-            const Real z = Real(k) * cell - half;
-            vertices.emplace_back(x, height(x, z), z);
-        }
-    }
-    std::vector<std::array<std::uint32_t, 3>> triangles;
-    const auto at = [n](std::uint32_t i, std::uint32_t k) { return i * (n + 1) + k; };
-    for (std::uint32_t i = 0; i < n; ++i) {
-        for (std::uint32_t k = 0; k < n; ++k) {
-            triangles.push_back({at(i, k), at(i, k + 1), at(i + 1, k)});
-            triangles.push_back({at(i + 1, k), at(i, k + 1), at(i + 1, k + 1)});
-        }
-    }
-    return buildTriangleMesh(vertices, triangles);
+    return test::heightGrid(n, cell, -half, -half, height);
 }
 
 TriangleMesh flatGrid(std::uint32_t n, Real cell) {

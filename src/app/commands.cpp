@@ -349,14 +349,16 @@ void reportWarnings(const RunWatch& watch, const std::vector<std::string>& warni
     }
 }
 
-/// Opens --csv's file when one is asked for; false (and the reason on stderr) when it cannot be.
-static bool openTrajectory(const RunOptions& options, std::optional<OutputFile>& csvFile) {
-    if (!options.csvPath) return true;
-    csvFile.emplace(*options.csvPath);
-    if (csvFile->ok()) return true;
-    std::fprintf(stderr, "stepwise: error: %s\n", csvFile->error().c_str());
+/// Opens an output file (--csv, --csv-nodes) when one is asked for; false (and the reason on stderr)
+/// when it cannot be.
+static bool openOutput(const std::optional<std::string>& path, std::optional<OutputFile>& file) {
+    if (!path) return true;
+    file.emplace(*path);
+    if (file->ok()) return true;
+    std::fprintf(stderr, "stepwise: error: %s\n", file->error().c_str());
     return false;
 }
+
 
 /// `stepwise run` of a scene with spaces (src/world/spaces.hpp): every space on one clock, one CSV
 /// with a space column, and a summary of each space in turn.
@@ -398,19 +400,15 @@ int runSpaces(const RunOptions& options, Scene scene) {
     const std::uint64_t ticks = options.steps.value_or(static_cast<std::uint64_t>(std::llround(duration / double(tick))));
 
     std::optional<OutputFile> csvFile;
-    if (!openTrajectory(options, csvFile)) return kExitUsageError;
+    if (!openOutput(options.csvPath, csvFile)) return kExitUsageError;
     std::FILE* csv = csvFile ? csvFile->file() : nullptr;
     if (csv) {
         writeTrajectoryHeader(csv, true, anySoft);
         for (const Space& space : spaces.all()) writeTrajectoryRows(csv, space.world, space.name);
     }
     std::optional<OutputFile> nodesFile;
-    if (options.nodesCsvPath) {
-        nodesFile.emplace(*options.nodesCsvPath);
-        if (!nodesFile->ok()) {
-            std::fprintf(stderr, "stepwise: error: %s\n", nodesFile->error().c_str());
-            return kExitUsageError;
-        }
+    if (!openOutput(options.nodesCsvPath, nodesFile)) return kExitUsageError;
+    if (nodesFile) {
         writeNodeHeader(nodesFile->file(), true);
         for (const Space& space : spaces.all()) writeNodeRows(nodesFile->file(), space.world, space.name);
     }
@@ -518,19 +516,15 @@ int runCommand(const RunOptions& options) {
     const std::uint64_t steps = options.steps.value_or(static_cast<std::uint64_t>(std::llround(duration / h)));
 
     std::optional<OutputFile> csvFile;
-    if (!openTrajectory(options, csvFile)) return kExitUsageError;
+    if (!openOutput(options.csvPath, csvFile)) return kExitUsageError;
     std::FILE* csv = csvFile ? csvFile->file() : nullptr;
     if (csv) {
         writeTrajectoryHeader(csv, false, !world.softBodies().empty());
         writeTrajectoryRows(csv, world);
     }
     std::optional<OutputFile> nodesFile;
-    if (options.nodesCsvPath) {
-        nodesFile.emplace(*options.nodesCsvPath);
-        if (!nodesFile->ok()) {
-            std::fprintf(stderr, "stepwise: error: %s\n", nodesFile->error().c_str());
-            return kExitUsageError;
-        }
+    if (!openOutput(options.nodesCsvPath, nodesFile)) return kExitUsageError;
+    if (nodesFile) {
         writeNodeHeader(nodesFile->file());
         writeNodeRows(nodesFile->file(), world);
     }

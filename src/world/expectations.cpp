@@ -44,6 +44,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 #include "collision/aabb.hpp"
 #include "world/measurements.hpp"
@@ -102,14 +103,23 @@ Verdict judge(const Expectation& e, Real value) {
     return {off <= e.tolerance, off};
 }
 
-/// A soft body's quantity @p e, at its centre of mass (the table above); @p plane for NotThroughPlane.
-Real measureSoft(const SoftBody& body, const Expectation& e, const CollisionPlane* plane) {
+/// Position, Velocity or Speed of a centre at @p position moving at @p velocity, the same for a rigid
+/// body and a soft body's centre of mass; nothing for the other quantities.
+std::optional<Real> measureCentre(const Vec3& position, const Vec3& velocity, const Expectation& e) {
     switch (e.quantity) {
         case ExpectQuantity::Position:
-            return e.component >= 0 ? body.position[e.component] : glm::length(body.position - e.targetVector);
+            return e.component >= 0 ? position[e.component] : glm::length(position - e.targetVector);
         case ExpectQuantity::Velocity:
-            return e.component >= 0 ? body.velocity[e.component] : glm::length(body.velocity - e.targetVector);
-        case ExpectQuantity::Speed: return glm::length(body.velocity);
+            return e.component >= 0 ? velocity[e.component] : glm::length(velocity - e.targetVector);
+        case ExpectQuantity::Speed: return glm::length(velocity);
+        default: return std::nullopt;
+    }
+}
+
+/// A soft body's quantity @p e, at its centre of mass (the table above); @p plane for NotThroughPlane.
+Real measureSoft(const SoftBody& body, const Expectation& e, const CollisionPlane* plane) {
+    if (const std::optional<Real> centre = measureCentre(body.position, body.velocity, e)) return *centre;
+    switch (e.quantity) {
         case ExpectQuantity::AtRest: {  // the fastest point of the surface is a node
             Real fastest2 = 0;
             for (const Vec3& v : body.nodeVelocities) fastest2 = std::max(fastest2, glm::dot(v, v));
@@ -296,12 +306,8 @@ Real ExpectationMonitor::measure(const World& world, const Expectation& e, const
         return measureSoft(world.softBodies()[track.soft], e, track.plane >= 0 ? &world.planes()[track.plane] : nullptr);
     }
     const DynamicObject& body = world.dynamics()[track.body];
+    if (const std::optional<Real> centre = measureCentre(body.position, body.velocity, e)) return *centre;
     switch (e.quantity) {
-        case ExpectQuantity::Position:
-            return e.component >= 0 ? body.position[e.component] : glm::length(body.position - e.targetVector);
-        case ExpectQuantity::Velocity:
-            return e.component >= 0 ? body.velocity[e.component] : glm::length(body.velocity - e.targetVector);
-        case ExpectQuantity::Speed: return glm::length(body.velocity);
         case ExpectQuantity::AngularSpeed: return glm::length(body.angularVelocity);
         case ExpectQuantity::TiltDeg: {
             const Vec3 bodyUp = body.orientation * Vec3(0, 1, 0);
