@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "config/obj_file.hpp"
+#include "mesh_fixtures.hpp"
 #include "objects/triangle_mesh.hpp"
 
 using namespace stepwise;
@@ -21,21 +22,10 @@ namespace {
 
 using Triangles = std::vector<std::array<std::uint32_t, 3>>;
 
-/// A flat n × n grid of unit squares in the y = 0 plane, two triangles each, facing up.
+/// A flat n × n grid of unit squares in the y = 0 plane, two triangles each, facing up
+/// (test::heightGrid(), mesh_fixtures.hpp).
 TriangleMesh grid(std::uint32_t n) {
-    std::vector<Vec3> vertices;
-    for (std::uint32_t i = 0; i <= n; ++i) {
-        for (std::uint32_t j = 0; j <= n; ++j) vertices.emplace_back(Real(i), 0, Real(j));
-    }
-    Triangles triangles;
-    const auto at = [n](std::uint32_t i, std::uint32_t j) { return i * (n + 1) + j; };
-    for (std::uint32_t i = 0; i < n; ++i) {
-        for (std::uint32_t j = 0; j < n; ++j) {
-            triangles.push_back({at(i, j), at(i, j + 1), at(i + 1, j)});
-            triangles.push_back({at(i + 1, j), at(i, j + 1), at(i + 1, j + 1)});
-        }
-    }
-    return buildTriangleMesh(vertices, triangles);
+    return test::heightGrid(n, 1, 0, 0, [](Real, Real) { return Real(0); });
 }
 
 /// Two triangles folded along the z axis edge (0,0,0)–(0,0,1), the second's far corner at
