@@ -129,10 +129,19 @@ TEST_CASE("A 0.1 m cube at 100 m/s stays in front of the wall and bounces at e·
     const double tolerance = solver == SolverKind::SequentialImpulse ? 0.05 : 0.01;
     CHECK(box.velocity.x == Approx(-kRestitution * kSpeed).epsilon(tolerance));
 
-    SECTION("and passes through it without the stage, whichever the solver") {
+    SECTION("without the stage: through it under the impulse solver, held by the sequential-impulse one's reach") {
+        // Solver=Impulse integrates, then looks: one step carries the cube through. The
+        // sequential-impulse solver looks for a box's contacts with another box as far ahead as
+        // the two can close in the step (boxReachOf(), narrowphase.cpp; uncapped without the
+        // stage), so its speculative contact stops the cube in front of the wall even so.
         World off(fastScene("stress_fast_box_wall.scene", solver, false));
         off.step();
-        CHECK(off.dynamics()[0].position.x - off.dynamics()[0].halfExtents().x > kWallFarFace);
+        const DynamicObject& cube = off.dynamics()[0];
+        if (solver == SolverKind::Impulse) {
+            CHECK(cube.position.x - cube.halfExtents().x > kWallFarFace);
+        } else {
+            CHECK(reachPastNearFace(cube) < Real(0.005));
+        }
     }
 }
 

@@ -14,9 +14,13 @@
 /// 9 cross products a_i × b_j of an edge direction of each. If every one of
 /// them overlaps, the boxes intersect; and the axis with the *largest*
 /// separation (least overlap) is the direction to push them apart, with
-/// the overlap as the depth. Here an axis separates when
-/// s > kSpeculativeDistance, so boxes up to 1 cm apart still report
-/// speculative contact points (contact.hpp says why).
+/// the overlap as the depth. Here an axis separates when s > g, the
+/// *reach* of the test: boxes up to g apart still report speculative
+/// contact points (contact.hpp says why). collideBoxBox() reaches
+/// kSpeculativeDistance (1 cm); the sequential-impulse solver's narrowphase
+/// asks collideBoxBoxWithin() for as far as the two boxes can close this
+/// step (findContacts(), narrowphase.hpp), so a box falling onto another
+/// meets a contact before it sinks in rather than after.
 ///
 /// The normal reported is ±L, signed so that it points from A towards B
 /// (the sign of t·L).
@@ -41,6 +45,10 @@
 /// size. Edges get the bias as well because an edge axis from two nearly
 /// parallel edges has a normal that swings with tiny rotations, and a
 /// single edge point is a poor support compared with a face's clipped points.
+/// For boxes still apart (s > 0: a speculative contact, section 3a) the bar
+/// is 1.05·s + tolerance instead: again the challenger must be better by 5 %,
+/// now of the gap (0.95·s would let a *worse* axis win, and two boxes above
+/// each other would get one edge point instead of their faces' four).
 ///
 /// ### 3a. Face contact: clip the incident face (Catto, GDC 2007; Ericson §5 and §8.3.4)
 /// The *reference face* is the face of the chosen box whose outward normal
@@ -48,7 +56,7 @@
 /// anti-parallel to it (largest |u_j·n|). Its four corners, clipped by the
 /// four side planes of the reference face (clip_polygon.cpp), are the part
 /// of the incident face lying over the reference face. Of these, the points
-/// behind the reference face plane or less than kSpeculativeDistance in front
+/// behind the reference face plane or at most the reach g in front
 /// of it are contacts: depth −d (negative for a speculative gap), position midway between the point and the face,
 /// p − n_ref·d/2.
 ///
@@ -127,13 +135,13 @@ Real projectedRadius(const OrientedBox& box, const Vec3& axis) {
            box.halfExtents.z * std::abs(glm::dot(box.axes[2], axis));
 }
 
-/// Tests one unit axis. Returns false when it separates the boxes;
-/// otherwise keeps it in @p best if it separates them least so far.
+/// Tests one unit axis. Returns false when it separates the boxes by more
+/// than @p reach (m); otherwise keeps it in @p best if it separates them least so far.
 bool testAxis(const OrientedBox& a, const OrientedBox& b, const Vec3& between, const Vec3& axis, int axisOfA,
-              int axisOfB, AxisQuery& best) {
+              int axisOfB, Real reach, AxisQuery& best) {
     const Real distance = glm::dot(between, axis);
     const Real separation = std::abs(distance) - (projectedRadius(a, axis) + projectedRadius(b, axis));
-    if (separation > kSpeculativeDistance) return false;
+    if (separation > reach) return false;
     if (separation > best.separation) {
         best.separation = separation;
         best.axisOfA = axisOfA;
@@ -141,6 +149,14 @@ bool testAxis(const OrientedBox& a, const OrientedBox& b, const Vec3& between, c
         best.normal = distance < 0 ? -axis : axis;
     }
     return true;
+}
+
+/// Section 2: does an axis of separation @p challenger replace the incumbent's @p incumbent? Only
+/// if it is better by 5 % of the incumbent's overlap or gap (kFaceBiasRelative) plus @p tolerance:
+/// for an overlap (s ≤ 0) the bar is 0.95·s + tolerance, for a gap 1.05·s + tolerance.
+bool beats(Real challenger, Real incumbent, Real tolerance) {
+    const Real bar = incumbent <= 0 ? kFaceBiasRelative * incumbent : (2 - kFaceBiasRelative) * incumbent;
+    return challenger > bar + tolerance;
 }
 
 Real smallestHalfExtent(const OrientedBox& box) {
@@ -179,9 +195,10 @@ int bestCandidate(int count, const bool* taken, Score score) {
 /// 5. (only if more than 4 are wanted) again the point farthest from those kept.
 /// With kMaxManifoldPoints = 4 that is steps 1–4; a smaller limit stops
 /// early (1 keeps only the deepest point). The kept points stay in their
-/// original order, so the manifold is repeatable.
+/// original order, so the manifold is repeatable. @p reach is the test's
+/// (no point's gap is larger: every depth is at least −reach).
 /// @return the number kept, min(count, keep)
-int keepSpreadPoints(Candidate* points, int count, const Vec3& normal, int keep) {
+int keepSpreadPoints(Candidate* points, int count, const Vec3& normal, Real reach, int keep) {
     if (count <= keep) return count;
     bool taken[kMaxClipVertices] = {};
     int kept[kMaxClipVertices] = {};
@@ -200,9 +217,9 @@ int keepSpreadPoints(Candidate* points, int count, const Vec3& normal, int keep)
         for (int k = 0; k < keptCount; ++k) nearest = std::min(nearest, distanceSquared(i, kept[k]));
         return nearest;
     };
-    // Depth is negative for speculative points (down to −kSpeculativeDistance):
+    // Depth is negative for speculative points (down to −reach):
     // shift it so every score is ≥ 0 and the deepest is always found.
-    take(bestCandidate(count, taken, [&](int i) { return points[i].depth + kSpeculativeDistance; }));
+    take(bestCandidate(count, taken, [&](int i) { return points[i].depth + reach; }));
     if (keptCount < keep) take(bestCandidate(count, taken, [&](int i) { return distanceSquared(i, kept[0]); }));
     if (keptCount < keep) {
         const Vec3 p1 = points[kept[0]].position;
@@ -236,7 +253,7 @@ int keepSpreadPoints(Candidate* points, int count, const Vec3& normal, int keep)
 /// normal (it points at the incident box); @p manifoldNormal is the same or
 /// its opposite, whichever points from A to B.
 bool faceContact(const OrientedBox& reference, int referenceAxis, const Vec3& referenceNormal,
-                 const OrientedBox& incident, BoxContactKind kind, const Vec3& manifoldNormal,
+                 const OrientedBox& incident, BoxContactKind kind, const Vec3& manifoldNormal, Real reach,
                  ContactManifold& out) {
     const Real referenceSign = glm::dot(referenceNormal, reference.axes[referenceAxis]) < 0 ? Real(-1) : Real(1);
     const int referenceFace = faceIndex(referenceAxis, referenceSign);
@@ -291,13 +308,13 @@ bool faceContact(const OrientedBox& reference, int referenceAxis, const Vec3& re
     int foundCount = 0;
     for (int i = 0; i < count; ++i) {
         const Real distance = glm::dot(polygon[i].position - referenceCentre, referenceNormal);
-        if (distance > kSpeculativeDistance) continue;
+        if (distance > reach) continue;
         found[foundCount++] = {polygon[i].position - referenceNormal * (Real(0.5) * distance), -distance,
                                faceFeatureId(kind, referenceFace, incidentFace, polygon[i].inEdge,
                                              polygon[i].outEdge)};
     }
     if (foundCount == 0) return false;
-    foundCount = keepSpreadPoints(found, foundCount, referenceNormal, kMaxManifoldPoints);
+    foundCount = keepSpreadPoints(found, foundCount, referenceNormal, reach, kMaxManifoldPoints);
 
     out.normal = manifoldNormal;
     out.pointCount = 0;
@@ -334,38 +351,42 @@ bool edgeContact(const OrientedBox& a, const OrientedBox& b, const AxisQuery& ed
 }  // namespace
 
 bool collideBoxBox(const Geometry& boxA, const Geometry& boxB, ContactManifold& out) {
+    return collideBoxBoxWithin(boxA, boxB, kSpeculativeDistance, out);
+}
+
+bool collideBoxBoxWithin(const Geometry& boxA, const Geometry& boxB, Real reach, ContactManifold& out) {
     const OrientedBox a = orientedBoxOf(boxA);
     const OrientedBox b = orientedBoxOf(boxB);
     const Vec3 between = b.centre - a.centre;
 
-    // Section 1: the 15 axes. Any one that separates ends the test.
+    // Section 1: the 15 axes. Any one that separates by more than the reach ends the test.
     AxisQuery faceA, faceB, edge;
     for (int i = 0; i < 3; ++i) {
-        if (!testAxis(a, b, between, a.axes[i], i, -1, faceA)) return false;
+        if (!testAxis(a, b, between, a.axes[i], i, -1, reach, faceA)) return false;
     }
     for (int j = 0; j < 3; ++j) {
-        if (!testAxis(a, b, between, b.axes[j], -1, j, faceB)) return false;
+        if (!testAxis(a, b, between, b.axes[j], -1, j, reach, faceB)) return false;
     }
     for (int i = 0; i < 3; ++i) {
         for (int j = 0; j < 3; ++j) {
             const Vec3 cross = glm::cross(a.axes[i], b.axes[j]);
             const Real length = glm::length(cross);  // sin of the angle between the edges
             if (length < kParallelEdgeSine) continue;
-            if (!testAxis(a, b, between, cross / length, i, j, edge)) return false;
+            if (!testAxis(a, b, between, cross / length, i, j, reach, edge)) return false;
         }
     }
 
     // Section 2: biased choice.
     const Real tolerance = kFaceBiasAbsolute * std::min(smallestHalfExtent(a), smallestHalfExtent(b));
-    const bool useFaceOfB = faceB.separation > kFaceBiasRelative * faceA.separation + tolerance;
+    const bool useFaceOfB = beats(faceB.separation, faceA.separation, tolerance);
     const AxisQuery& face = useFaceOfB ? faceB : faceA;
-    if (edge.axisOfA >= 0 && edge.separation > kFaceBiasRelative * face.separation + tolerance) {
+    if (edge.axisOfA >= 0 && beats(edge.separation, face.separation, tolerance)) {
         return edgeContact(a, b, edge, out);
     }
 
     // Section 3a. B's reference face looks towards A, against the A → B normal.
-    if (useFaceOfB) return faceContact(b, face.axisOfB, -face.normal, a, BoxContactKind::FaceOfB, face.normal, out);
-    return faceContact(a, face.axisOfA, face.normal, b, BoxContactKind::FaceOfA, face.normal, out);
+    if (useFaceOfB) return faceContact(b, face.axisOfB, -face.normal, a, BoxContactKind::FaceOfB, face.normal, reach, out);
+    return faceContact(a, face.axisOfA, face.normal, b, BoxContactKind::FaceOfA, face.normal, reach, out);
 }
 
 }  // namespace stepwise

@@ -57,7 +57,11 @@
 /// (findContacts(), narrowphase.cpp) and this stage follows the rest of the
 /// path with the exact shapes; towards a plane the full sweep is kept, for a
 /// sphere and a box alike (a box's corners are tested against the plane
-/// moved towards it by the sweep).
+/// moved towards it by the sweep). Two boxes are tested as far apart as
+/// each can move before it counts as fast (boxReachOf(), narrowphase.cpp):
+/// each box's share of the reach is its sweep, capped at kFastMotionFraction
+/// × its inner radius, so a box this stage leaves alone is stopped at the
+/// other's face by its speculative contact, and a faster one is this stage's.
 ///
 /// **Cost.** One pass over the bodies comparing |Δ| with their size. In a
 /// step with a fast body, the bodies' boxes are sorted along one axis

@@ -69,6 +69,10 @@ bool collideBoxSphere(const Geometry& a, const Geometry& b, ContactManifold& out
 bool collideBoxPlane(const Geometry& a, const Geometry& b, ContactManifold& out);
 /// @brief Oriented box against oriented box: separating axes, then a clipped manifold (src/collision/box_box.cpp).
 bool collideBoxBox(const Geometry& a, const Geometry& b, ContactManifold& out);
+/// @brief collideBoxBox() with points reported for boxes up to @p reach apart (m, at least
+/// kSpeculativeDistance): what the narrowphase asks when the two boxes can close more than that
+/// this step (findContacts()). collideBoxBox() is this with reach = kSpeculativeDistance.
+bool collideBoxBoxWithin(const Geometry& a, const Geometry& b, Real reach, ContactManifold& out);
 
 /// @brief Capsule against plane: its two end spheres (src/collision/convex_plane.cpp).
 bool collideCapsulePlane(const Geometry& a, const Geometry& b, ContactManifold& out);
@@ -121,9 +125,11 @@ struct NarrowphaseWorkspace {
 /// @param contacts output, cleared first
 /// @param continuousCollision true when the World's continuous stage runs: a sphere's
 ///        contacts with another body are then looked for at most kFastMotionFraction × its radius
-///        ahead of it (src/collision/continuous.hpp explains why); planes keep the full sweep
+///        ahead of it, and each box's share of a box–box pair's reach is capped at
+///        kFastMotionFraction × its inner radius (src/collision/continuous.hpp explains why);
+///        planes keep the full sweep
 /// @param speculativeDistance how far apart, m, beyond what the two bodies' sweeps can close,
-///        a sphere's surfaces may be and still make a (speculative) contact. The
+///        a sphere's or a box's surfaces may be and still make a (speculative) contact. The
 ///        sequential-impulse solver passes kSpeculativeDistance: a body at rest at
 ///        the start of a step can be knocked, within the step, into a neighbour a
 ///        few millimetres away; without a contact between them nothing stops it

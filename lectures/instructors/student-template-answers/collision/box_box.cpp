@@ -6,7 +6,10 @@
 /// src/collision/narrowphase.hpp declares,
 ///
 ///     bool collideBoxBox(const Geometry& a, const Geometry& b, ContactManifold& out);
+///     bool collideBoxBoxWithin(const Geometry& a, const Geometry& b, Real reach, ContactManifold& out);
 ///
+/// (the second reports boxes up to `reach` apart: the sequential-impulse
+/// solver looks as far ahead as two boxes can close in a step),
 /// and you write its test of one axis, testAxis() (lecture 5, "1. The shadow
 /// of a box on a line" and "3. From whether to how far"). Box X has centre c,
 /// unit axes u_i (box.axes[i]) and half extents e_i (box.halfExtents[i]); its
@@ -79,13 +82,13 @@ Real projectedRadius(const OrientedBox& box, const Vec3& axis) {
            box.halfExtents.z * std::abs(glm::dot(box.axes[2], axis));
 }
 
-/// Tests one unit axis. Returns false when it separates the boxes;
-/// otherwise keeps it in @p best if it separates them least so far.
+/// Tests one unit axis. Returns false when it separates the boxes by more
+/// than @p reach (m); otherwise keeps it in @p best if it separates them least so far.
 bool testAxis(const OrientedBox& a, const OrientedBox& b, const Vec3& between, const Vec3& axis, int axisOfA,
-              int axisOfB, AxisQuery& best) {
+              int axisOfB, Real reach, AxisQuery& best) {
     const Real distance = glm::dot(between, axis);
     const Real separation = std::abs(distance) - (projectedRadius(a, axis) + projectedRadius(b, axis));
-    if (separation > kSpeculativeDistance) return false;
+    if (separation > reach) return false;
     if (separation > best.separation) {
         best.separation = separation;
         best.axisOfA = axisOfA;
@@ -95,6 +98,14 @@ bool testAxis(const OrientedBox& a, const OrientedBox& b, const Vec3& between, c
     return true;
 }
 // ==== YOUR CODE ENDS ====
+
+/// Section 2: does an axis of separation @p challenger replace the incumbent's @p incumbent? Only
+/// if it is better by 5 % of the incumbent's overlap or gap (kFaceBiasRelative) plus @p tolerance:
+/// for an overlap (s ≤ 0) the bar is 0.95·s + tolerance, for a gap 1.05·s + tolerance.
+bool beats(Real challenger, Real incumbent, Real tolerance) {
+    const Real bar = incumbent <= 0 ? kFaceBiasRelative * incumbent : (2 - kFaceBiasRelative) * incumbent;
+    return challenger > bar + tolerance;
+}
 
 Real smallestHalfExtent(const OrientedBox& box) {
     return std::min({box.halfExtents.x, box.halfExtents.y, box.halfExtents.z});
@@ -134,7 +145,7 @@ int bestCandidate(int count, const bool* taken, Score score) {
 /// early (1 keeps only the deepest point). The kept points stay in their
 /// original order, so the manifold is repeatable.
 /// @return the number kept, min(count, keep)
-int keepSpreadPoints(Candidate* points, int count, const Vec3& normal, int keep) {
+int keepSpreadPoints(Candidate* points, int count, const Vec3& normal, Real reach, int keep) {
     if (count <= keep) return count;
     bool taken[kMaxClipVertices] = {};
     int kept[kMaxClipVertices] = {};
@@ -153,9 +164,9 @@ int keepSpreadPoints(Candidate* points, int count, const Vec3& normal, int keep)
         for (int k = 0; k < keptCount; ++k) nearest = std::min(nearest, distanceSquared(i, kept[k]));
         return nearest;
     };
-    // Depth is negative for speculative points (down to −kSpeculativeDistance):
+    // Depth is negative for speculative points (down to −reach):
     // shift it so every score is ≥ 0 and the deepest is always found.
-    take(bestCandidate(count, taken, [&](int i) { return points[i].depth + kSpeculativeDistance; }));
+    take(bestCandidate(count, taken, [&](int i) { return points[i].depth + reach; }));
     if (keptCount < keep) take(bestCandidate(count, taken, [&](int i) { return distanceSquared(i, kept[0]); }));
     if (keptCount < keep) {
         const Vec3 p1 = points[kept[0]].position;
@@ -189,7 +200,7 @@ int keepSpreadPoints(Candidate* points, int count, const Vec3& normal, int keep)
 /// normal (it points at the incident box); @p manifoldNormal is the same or
 /// its opposite, whichever points from A to B.
 bool faceContact(const OrientedBox& reference, int referenceAxis, const Vec3& referenceNormal,
-                 const OrientedBox& incident, BoxContactKind kind, const Vec3& manifoldNormal,
+                 const OrientedBox& incident, BoxContactKind kind, const Vec3& manifoldNormal, Real reach,
                  ContactManifold& out) {
     const Real referenceSign = glm::dot(referenceNormal, reference.axes[referenceAxis]) < 0 ? Real(-1) : Real(1);
     const int referenceFace = faceIndex(referenceAxis, referenceSign);
@@ -244,13 +255,13 @@ bool faceContact(const OrientedBox& reference, int referenceAxis, const Vec3& re
     int foundCount = 0;
     for (int i = 0; i < count; ++i) {
         const Real distance = glm::dot(polygon[i].position - referenceCentre, referenceNormal);
-        if (distance > kSpeculativeDistance) continue;
+        if (distance > reach) continue;
         found[foundCount++] = {polygon[i].position - referenceNormal * (Real(0.5) * distance), -distance,
                                faceFeatureId(kind, referenceFace, incidentFace, polygon[i].inEdge,
                                              polygon[i].outEdge)};
     }
     if (foundCount == 0) return false;
-    foundCount = keepSpreadPoints(found, foundCount, referenceNormal, kMaxManifoldPoints);
+    foundCount = keepSpreadPoints(found, foundCount, referenceNormal, reach, kMaxManifoldPoints);
 
     out.normal = manifoldNormal;
     out.pointCount = 0;
@@ -287,38 +298,42 @@ bool edgeContact(const OrientedBox& a, const OrientedBox& b, const AxisQuery& ed
 }  // namespace
 
 bool collideBoxBox(const Geometry& boxA, const Geometry& boxB, ContactManifold& out) {
+    return collideBoxBoxWithin(boxA, boxB, kSpeculativeDistance, out);
+}
+
+bool collideBoxBoxWithin(const Geometry& boxA, const Geometry& boxB, Real reach, ContactManifold& out) {
     const OrientedBox a = orientedBoxOf(boxA);
     const OrientedBox b = orientedBoxOf(boxB);
     const Vec3 between = b.centre - a.centre;
 
-    // Section 1: the 15 axes. Any one that separates ends the test.
+    // Section 1: the 15 axes. Any one that separates by more than the reach ends the test.
     AxisQuery faceA, faceB, edge;
     for (int i = 0; i < 3; ++i) {
-        if (!testAxis(a, b, between, a.axes[i], i, -1, faceA)) return false;
+        if (!testAxis(a, b, between, a.axes[i], i, -1, reach, faceA)) return false;
     }
     for (int j = 0; j < 3; ++j) {
-        if (!testAxis(a, b, between, b.axes[j], -1, j, faceB)) return false;
+        if (!testAxis(a, b, between, b.axes[j], -1, j, reach, faceB)) return false;
     }
     for (int i = 0; i < 3; ++i) {
         for (int j = 0; j < 3; ++j) {
             const Vec3 cross = glm::cross(a.axes[i], b.axes[j]);
             const Real length = glm::length(cross);  // sin of the angle between the edges
             if (length < kParallelEdgeSine) continue;
-            if (!testAxis(a, b, between, cross / length, i, j, edge)) return false;
+            if (!testAxis(a, b, between, cross / length, i, j, reach, edge)) return false;
         }
     }
 
     // Section 2: biased choice.
     const Real tolerance = kFaceBiasAbsolute * std::min(smallestHalfExtent(a), smallestHalfExtent(b));
-    const bool useFaceOfB = faceB.separation > kFaceBiasRelative * faceA.separation + tolerance;
+    const bool useFaceOfB = beats(faceB.separation, faceA.separation, tolerance);
     const AxisQuery& face = useFaceOfB ? faceB : faceA;
-    if (edge.axisOfA >= 0 && edge.separation > kFaceBiasRelative * face.separation + tolerance) {
+    if (edge.axisOfA >= 0 && beats(edge.separation, face.separation, tolerance)) {
         return edgeContact(a, b, edge, out);
     }
 
     // Section 3a. B's reference face looks towards A, against the A → B normal.
-    if (useFaceOfB) return faceContact(b, face.axisOfB, -face.normal, a, BoxContactKind::FaceOfB, face.normal, out);
-    return faceContact(a, face.axisOfA, face.normal, b, BoxContactKind::FaceOfA, face.normal, out);
+    if (useFaceOfB) return faceContact(b, face.axisOfB, -face.normal, a, BoxContactKind::FaceOfB, face.normal, reach, out);
+    return faceContact(a, face.axisOfA, face.normal, b, BoxContactKind::FaceOfA, face.normal, reach, out);
 }
 
 }  // namespace stepwise
