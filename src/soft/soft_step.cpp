@@ -14,10 +14,12 @@
 /// then the centre of mass and its velocity, for output. After every
 /// stage the nodes it moved are checked: the first non-finite number stops
 /// the run naming the body, the stage and the step, as World::checkFinite()
-/// does for rigid bodies. The soft bodies take the World's substeps
-/// (h_s = h/Substeps under the sequential impulse, h under Impulse):
-/// springs on light nodes are stiff, and the explicit stability limit
-/// h·ω < 2 (soft_stability.hpp) is met by a short step.
+/// does for rigid bodies. One call is one soft substep: the World calls it
+/// at the start of each of its rigid substeps (h_s = h/Substeps under the
+/// sequential impulse; stage 5a of World::stepWithSequentialImpulses()),
+/// and once a step, for h, under Impulse. Springs on light nodes are stiff,
+/// and the explicit stability limit h·ω < 2 (soft_stability.hpp) is met by
+/// the short substep.
 ///
 /// An asleep body (src/dynamics/islands.hpp) is not stepped at all: its nodes
 /// stay where they are, as an asleep rigid body is not integrated. An awake
@@ -92,7 +94,7 @@ void measureSoftBody(SoftBody& body) {
 }
 
 void stepSoftBodies(std::span<SoftBody> bodies, const BodySet& rigid, const SoftStepSettings& settings) {
-    const Real hs = settings.timeStep / Real(settings.substeps);
+    const Real hs = settings.timeStep;
     const StageAtStep& where = settings.where;
     const ContactMaterials byProduct{};
     const ContactMaterials& materials = rigid.materials != nullptr ? *rigid.materials : byProduct;
@@ -102,29 +104,27 @@ void stepSoftBodies(std::span<SoftBody> bodies, const BodySet& rigid, const Soft
         body.touchedSoftBodies.clear();
         body.carried = false;
     }
-    for (int substep = 0; substep < settings.substeps; ++substep) {
-        for (SoftBody& body : bodies) {
-            if (body.asleep) continue;  // not moved while asleep, as a sleeping rigid body is not integrated
-            // 1–3. Springs, then the volume and the gas's push (spring_forces.cpp, enclosed_volume.cpp,
-            //      pressure_forces.cpp)
-            clearNodeForces(body);
-            addSpringForces(body);
-            addPressureForces(body);
-            requirePositiveVolume(body, where);
+    for (SoftBody& body : bodies) {
+        if (body.asleep) continue;  // not moved while asleep, as a sleeping rigid body is not integrated
+        // 1–3. Springs, then the volume and the gas's push (spring_forces.cpp, enclosed_volume.cpp,
+        //      pressure_forces.cpp)
+        clearNodeForces(body);
+        addSpringForces(body);
+        addPressureForces(body);
+        requirePositiveVolume(body, where);
 
-            // 4. Move the nodes (integrate_nodes.cpp; Verlet works 1–3 out again at the new positions)
-            integrateNodes(body, settings.integrator, hs, settings.gravity);
-            requireFiniteNodes(body, "integration of the nodes", where);
+        // 4. Move the nodes (integrate_nodes.cpp; Verlet works 1–3 out again at the new positions)
+        integrateNodes(body, settings.integrator, hs, settings.gravity);
+        requireFiniteNodes(body, "integration of the nodes", where);
 
-            // 5. Out of the rigid objects, with a bounce and friction (node_collisions.cpp)
-            collideNodes(body, rigid, settings.gravity, hs);
-            requireFiniteNodes(body, "node collisions", where);
-        }
-        // 6. Soft bodies against each other, once all have moved (soft_contacts.cpp)
-        if (bodies.size() > 1) {
-            collideSoftBodies(bodies, materials, settings.gravity, hs);
-            for (const SoftBody& body : bodies) requireFiniteNodes(body, "soft-soft contacts", where);
-        }
+        // 5. Out of the rigid objects, with a bounce and friction (node_collisions.cpp)
+        collideNodes(body, rigid, settings.gravity, hs);
+        requireFiniteNodes(body, "node collisions", where);
+    }
+    // 6. Soft bodies against each other, once all have moved (soft_contacts.cpp)
+    if (bodies.size() > 1) {
+        collideSoftBodies(bodies, materials, settings.gravity, hs);
+        for (const SoftBody& body : bodies) requireFiniteNodes(body, "soft-soft contacts", where);
     }
     for (SoftBody& body : bodies) {
         if (!body.asleep) measureCentreOfMass(body);

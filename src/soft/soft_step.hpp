@@ -16,14 +16,13 @@ namespace stepwise {
 struct SoftStepSettings {
     Vec3 gravity{0, 0, 0};                                    ///< m/s², on every node.
     IntegratorKind integrator = IntegratorKind::SymplecticEuler; ///< The scene's `Integrator`.
-    Real timeStep = 0;                                        ///< h, s: the World's step.
-    int substeps = 1;                                         ///< The nodes move h/substeps at a time.
+    Real timeStep = 0;                                        ///< h_s, s: how far this call moves the nodes (soft_step.cpp says which).
     bool startsStep = true;                                   ///< The World's step starts here: the touch lists start empty.
     StageAtStep where;                                        ///< The stage and step, to name them in an error.
 };
 
-/// @brief Advances every soft body by one step of the World: in each of `substeps` substeps the
-/// springs, the volume, the gas, the move and the collisions with @p rigid (soft_stages.hpp).
+/// @brief Advances every soft body by one substep of `timeStep`: the springs, the volume, the gas,
+/// the move and the collisions with @p rigid (soft_stages.hpp).
 /// An asleep body is not moved; an awake one notes the bodies it touched (SoftBody::touchedDynamics,
 /// touchedSoftBodies, carried), for the islands.
 /// @throws SimulationError naming the body, the soft stage and the step when a node's position or

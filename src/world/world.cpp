@@ -266,7 +266,7 @@ void World::stepWithImpulses() {
     runStage(Stage::CorrectPositions, [&] { correctPositions(bodies(), contacts_, h, supportStep, contactWorkspace_); });
 
     // 7b. Soft bodies: springs, gas, nodes moved and pushed out of the rigid objects (src/soft/soft_step.cpp)
-    runStage(Stage::SoftBodies, [&] { stepSoftBodies(settings_.timeStep, 1, true); });
+    runStage(Stage::SoftBodies, [&] { stepSoftBodies(settings_.timeStep, true); });
 
     // 8. Bodies that ended the step in a Kill region leave the world (src/world/world_regions.cpp)
     if (plan_.killRegions.runs) removeKilledBodies();
@@ -412,7 +412,7 @@ void World::stepWithSequentialImpulses() {
             //     moved and pushed out of the rigid objects. A node's push on a dynamic body is a velocity,
             //     like a kick of the integrator: the body moves with it in this substep, and the solve holds
             //     it against the body's own contacts, so a box on a ball and a box under one both end at rest.
-            runStage(Stage::SoftBodies, [&] { stepSoftBodies(hs, 1, substep == 0); });
+            runStage(Stage::SoftBodies, [&] { stepSoftBodies(hs, substep == 0); });
             runStage(Stage::Integrate, [&] {
                 recordPoses(bodies(), solverWorkspace_);  // the solve measures separations from before the flight
                 integrateBodies(settings_.integrator, dynamics_, hs, forces);
@@ -596,12 +596,11 @@ void World::runFastPath(const AccelerationFunction& forces, const ContactSolverS
 /// (@p startsStep), every one that an awake object may reach in this step wakes with its island; after
 /// each call, every asleep rigid body that an awake soft body's nodes touched (and pushed) wakes with
 /// its island (src/dynamics/islands.hpp).
-void World::stepSoftBodies(Real h, int substeps, bool startsStep) {
+void World::stepSoftBodies(Real h, bool startsStep) {
     SoftStepSettings soft;
     soft.gravity = settings_.gravity;
     soft.integrator = settings_.integrator;
     soft.timeStep = h;
-    soft.substeps = substeps;
     soft.startsStep = startsStep;
     soft.where = {Stage::SoftBodies, stepCount_ + 1, static_cast<double>(time_)};
     if (settings_.sleeping && startsStep) wakeSoftBodiesInReach(bodies(), settings_.timeStep, settings_.gravity);

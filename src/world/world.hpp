@@ -158,7 +158,7 @@ private:
     void findRegionMembers(bool throughBroadphase);  // world_regions.cpp
     RegionForces regionForces(Real substepTime) const;  // world_regions.cpp
     void removeKilledBodies();                       // world_regions.cpp
-    void stepSoftBodies(Real h, int substeps, bool startsStep);
+    void stepSoftBodies(Real h, bool startsStep);
     BodySet bodies();
 
     WorldSettings settings_;
