@@ -17,14 +17,12 @@ namespace stepwise {
 /// @brief Shorter than this, m, the direction between two anchors is undefined (a rod or rope of length ~0).
 inline constexpr Real kDegenerateJointLength = Real(1e-9);
 
-/// @brief A joint's geometry with its bodies at given poses (the world counts as a body at rest at the origin).
+/// @brief Where a joint's anchors are with its bodies at given poses (the world counts as a body at rest at the origin).
 struct JointFrame {
-    Quat orientationA{1, 0, 0, 0};  ///< q_A.
-    Quat orientationB{1, 0, 0, 0};  ///< q_B (identity for the world).
-    Vec3 rA{0, 0, 0};               ///< Lever arm of A's anchor, world frame: q_A·(local anchor), m.
-    Vec3 rB{0, 0, 0};               ///< The same for B (zero for the world), m.
-    Vec3 pA{0, 0, 0};               ///< A's anchor, x_A + r_A, m.
-    Vec3 pB{0, 0, 0};               ///< B's anchor, x_B + r_B (the fixed point for the world), m.
+    Vec3 rA{0, 0, 0};  ///< Lever arm of A's anchor, world frame: q_A·(local anchor), m.
+    Vec3 rB{0, 0, 0};  ///< The same for B (zero for the world), m.
+    Vec3 pA{0, 0, 0};  ///< A's anchor, x_A + r_A, m.
+    Vec3 pB{0, 0, 0};  ///< B's anchor, x_B + r_B (the fixed point for the world), m.
 };
 
 /// @brief The frame of @p joint with A at @p poseA and B at @p poseB (ignored when B is the world).
@@ -33,11 +31,60 @@ JointFrame frameAt(const Joint& joint, const Pose& poseA, const Pose& poseB);
 /// @brief The frame of a prepared joint at the recorded @p poses.
 JointFrame frameAt(const SolverJoint& j, std::span<const Pose> poses);
 
+/// @brief How a joint's two bodies are turned: what the hinge and the motor carry their axes by.
+///
+/// Apart from JointFrame because only those two need it: the point and
+/// axial rows use the lever arms alone.
+struct JointOrientations {
+    Quat a{1, 0, 0, 0};  ///< q_A.
+    Quat b{1, 0, 0, 0};  ///< q_B (identity for the world).
+};
+
+/// @brief The orientations of a prepared joint's bodies at the recorded @p poses.
+JointOrientations orientationsAt(const SolverJoint& j, std::span<const Pose> poses);
+
 /// @brief The unit axis @p n from p_A to p_B and their distance @p length (m); false when they coincide (no axis).
 bool jointAxis(const JointFrame& f, Vec3& n, Real& length);
 
 /// @brief [r]×, the matrix with [r]×·v = r × v.
 Mat3 skew(const Vec3& r);
+
+/// @brief A symmetric 3×3 matrix by its six distinct entries: an inverse inertia, a ball joint's K.
+///
+/// K = J·M⁻¹·Jᵀ is symmetric for any J, because M⁻¹ is: of its nine entries
+/// only six need computing, and K·x = b has a cheaper solve than a general
+/// matrix's inverse (solveSymmetric()).
+struct SymmetricMat3 {
+    Real xx = 0;  ///< Row x, column x.
+    Real yy = 0;  ///< Row y, column y.
+    Real zz = 0;  ///< Row z, column z.
+    Real xy = 0;  ///< Row x, column y (= row y, column x).
+    Real xz = 0;  ///< Row x, column z (= row z, column x).
+    Real yz = 0;  ///< Row y, column z (= row z, column y).
+};
+
+/// @brief The entries of @p m on and above its diagonal (@p m symmetric, as R·I⁻¹·Rᵀ is up to round-off).
+SymmetricMat3 symmetricPart(const Mat3& m);
+
+/// @brief The sum @p m + @p n.
+SymmetricMat3 operator+(const SymmetricMat3& m, const SymmetricMat3& n);
+
+/// @brief The product @p m · @p v.
+Vec3 operator*(const SymmetricMat3& m, const Vec3& v);
+
+/// @brief The quadratic form v·M·v (for M = I⁻¹ and a unit axis v: the inverse moment of inertia about v).
+Real quadraticForm(const SymmetricMat3& m, const Vec3& v);
+
+/// @brief [r]×ᵀ·M·[r]× = −[r]×·M·[r]× for a symmetric M (joint_parts.cpp has it entry by entry).
+///
+/// With M = I⁻¹ and r a lever arm, this is how much a point at r gives way
+/// by turning the body: an impulse P there changes its velocity by
+/// −r × (I⁻¹(r × P)) = [r]×ᵀ I⁻¹ [r]× · P. Symmetric, and positive semi-definite.
+SymmetricMat3 leverArmTerm(const SymmetricMat3& m, const Vec3& r);
+
+/// @brief Solves K·@p x = @p b for a symmetric @p K, by K⁻¹ = adj(K)/det(K).
+/// @return false, leaving @p x unchanged, when det(K) ≤ 0 (K is not positive definite: nothing to solve).
+bool solveSymmetric(const SymmetricMat3& K, const Vec3& b, Vec3& x);
 
 /// @brief Velocity of B's anchor minus A's anchor: (v_B + ω_B×r_B) − (v_A + ω_A×r_A), m/s.
 Vec3 relativeAnchorVelocity(const SolverJoint& j, const JointFrame& f);
@@ -55,8 +102,12 @@ void applyAngularImpulse(SolverJoint& j, const Vec3& impulse);
 /// 1 / (m_A⁻¹ + m_B⁻¹ + (r_A×n)·I_A⁻¹(r_A×n) + (r_B×n)·I_B⁻¹(r_B×n)), kg.
 Real axialMass(const SolverJoint& j, const JointFrame& f, const Vec3& n);
 
+/// @brief I_A⁻¹ + I_B⁻¹, by its six distinct entries: an angular impulse L on A and −L on B changes ω_A − ω_B by it times L.
+SymmetricMat3 relativeInverseInertia(const SolverJoint& j);
+
 /// @brief K⁻¹ of an angular row about unit axis @p a: 1 / (a·(I_A⁻¹ + I_B⁻¹)·a), kg·m².
-Real angularMass(const SolverJoint& j, const Vec3& a);
+/// @param inverseInertia I_A⁻¹ + I_B⁻¹ (relativeInverseInertia())
+Real angularMass(const SymmetricMat3& inverseInertia, const Vec3& a);
 
 /// @brief The soft terms of one row in one pass: Ċ is driven to −bias, the
 /// effective mass is scaled by massScale and impulseScale·λ_acc leaks (softness.hpp).
@@ -92,16 +143,18 @@ void warmStartBallJoint(SolverJoint& j, const JointFrame& f);
 /// @brief Ball joint: C = p_B − p_A = 0, a 3×3 block (ball_joint.cpp). The hinge reuses it for its point.
 void solveBallJoint(SolverJoint& j, const JointFrame& f, const JointSolverSettings& settings, bool useBias);
 /// @brief Hinge: point, alignment, limit and motor impulses (hinge_joint.cpp).
-void warmStartHingeJoint(SolverJoint& j, const JointFrame& f);
+void warmStartHingeJoint(SolverJoint& j, const JointFrame& f, const JointOrientations& q);
 /// @brief Hinge: motor, limits, axis alignment (2 rows), then the point (hinge_joint.cpp).
-void solveHingeJoint(SolverJoint& j, const JointFrame& f, const JointSolverSettings& settings, bool useBias);
+void solveHingeJoint(SolverJoint& j, const JointFrame& f, const JointOrientations& q, const JointSolverSettings& settings,
+                     bool useBias);
 /// @brief Angular motor: the accumulated motor impulse about the axis (angular_motor.cpp).
-void warmStartAngularMotor(SolverJoint& j, const JointFrame& f);
+void warmStartAngularMotor(SolverJoint& j, const JointOrientations& q);
 /// @brief Angular motor: (ω_A − ω_B)·a → target, |λ_acc| ≤ τ_max·h_s (angular_motor.cpp).
-void solveAngularMotor(SolverJoint& j, const JointFrame& f, const JointSolverSettings& settings);
+void solveAngularMotor(SolverJoint& j, const JointOrientations& q, const JointSolverSettings& settings);
 
 /// @brief One clamped motor row about unit axis @p a (shared by the hinge and the angular motor):
 /// λ = −K⁻¹((ω_A − ω_B)·a − target), accumulated impulse kept within ±maxMotorTorque·h_s.
-void solveMotorRow(SolverJoint& j, const Vec3& a, Real substep);
+/// @param mass K⁻¹ of the row, angularMass() about @p a, kg·m²
+void solveMotorRow(SolverJoint& j, const Vec3& a, Real mass, Real substep);
 
 }  // namespace stepwise
