@@ -4,11 +4,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
 #include "command_runner.hpp"
 #include "config/scene_loader.hpp"
+#include "dynamics/joints/joint_parts.hpp"
+#include "objects/inertia.hpp"
 #include "test_support.hpp"
 #include "world/measurements.hpp"
 
@@ -171,6 +174,44 @@ TEST_CASE("A rope pulls but never pushes: a body thrown towards the anchor passe
 }
 
 // ------------------------------------------------------------------ ball joint
+
+TEST_CASE("A ball joint's K built from its six entries is J M^-1 J^T, and its symmetric solve inverts it", "[joints]") {
+    // Two boxes' world inverse inertias R I^-1 R^T (turned, so that every entry is non-zero) and
+    // lever arms of both signs. The definition, with [r]x = skew(r) and E the identity:
+    //   K = (1/m_A + 1/m_B) E - [r_A]x I_A^-1 [r_A]x - [r_B]x I_B^-1 [r_B]x.
+    // leverArmTerm() writes each term out entry by entry, solveSymmetric() solves K x = b by the
+    // adjugate. Entries are of order 1 (1/kg, m), so both must agree with the matrix products to
+    // round-off: a few dozen operations, within 64 epsilon.
+    const Real tolerance = 64 * std::numeric_limits<Real>::epsilon();
+    const Mat3 inverseInertiaA = worldInverseInertia(glm::angleAxis(Real(0.7), glm::normalize(Vec3(1, 2, 3))),
+                                                     Vec3(Real(1) / 2, Real(1) / 3, Real(1) / 5));
+    const Mat3 inverseInertiaB = worldInverseInertia(glm::angleAxis(Real(-1.9), glm::normalize(Vec3(-2, 1, 1))),
+                                                     Vec3(Real(4), Real(1) / 7, Real(1) / 2));
+    const Vec3 rA(Real(0.3), Real(-0.7), Real(1.1));
+    const Vec3 rB(Real(-0.4), Real(0.2), Real(0.9));
+    const Real inverseMasses = Real(1) / 2 + Real(1) / 3;
+    const Mat3 expected = inverseMasses * Mat3(1) - skew(rA) * inverseInertiaA * skew(rA) -
+                          skew(rB) * inverseInertiaB * skew(rB);
+
+    SymmetricMat3 K = leverArmTerm(symmetricPart(inverseInertiaA), rA) + leverArmTerm(symmetricPart(inverseInertiaB), rB);
+    K.xx += inverseMasses;
+    K.yy += inverseMasses;
+    K.zz += inverseMasses;
+    const Real entries[3][3] = {{K.xx, K.xy, K.xz}, {K.xy, K.yy, K.yz}, {K.xz, K.yz, K.zz}};
+    for (int row = 0; row < 3; ++row) {
+        for (int column = 0; column < 3; ++column) {
+            INFO("row " << row << ", column " << column);
+            CHECK(std::abs(entries[row][column] - expected[column][row]) < tolerance);
+        }
+    }
+
+    const Vec3 b(1, -2, Real(0.5));
+    Vec3 x(0);
+    REQUIRE(solveSymmetric(K, b, x));
+    CHECK(glm::length(expected * x - b) < tolerance * glm::length(b));
+    // K of two bodies that cannot move (no mass, no inertia) is zero: there is nothing to solve.
+    CHECK_FALSE(solveSymmetric(SymmetricMat3{}, b, x));
+}
 
 TEST_CASE("A ball joint holds its anchor within 1 mm under a swinging, spinning load", "[joints]") {
     // A 5 kg cube of 0.4 m hangs by one corner from a fixed point, released

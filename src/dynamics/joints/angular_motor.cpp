@@ -25,12 +25,13 @@
 
 namespace stepwise {
 
-void warmStartAngularMotor(SolverJoint& j, const JointFrame& f) {
-    applyAngularImpulse(j, j.joint->motorImpulse * (f.orientationB * j.joint->localAxisB));
+void warmStartAngularMotor(SolverJoint& j, const JointOrientations& q) {
+    applyAngularImpulse(j, j.joint->motorImpulse * (q.b * j.joint->localAxisB));
 }
 
-void solveAngularMotor(SolverJoint& j, const JointFrame& f, const JointSolverSettings& settings) {
-    solveMotorRow(j, f.orientationB * j.joint->localAxisB, settings.substep);
+void solveAngularMotor(SolverJoint& j, const JointOrientations& q, const JointSolverSettings& settings) {
+    const Vec3 axis = q.b * j.joint->localAxisB;
+    solveMotorRow(j, axis, angularMass(relativeInverseInertia(j), axis), settings.substep);
 }
 
 }  // namespace stepwise

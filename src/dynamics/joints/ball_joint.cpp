@@ -25,6 +25,12 @@
 /// \f[ P = -s_m K^{-1}(\dot C + b\,C) - s_i P_\text{acc} . \f]
 /// K is rebuilt at every iteration from the lever arms at the current poses.
 ///
+/// **Computing it.** K is symmetric, so only its six distinct entries are
+/// built: each body's term [r]×ᵀ I⁻¹ [r]× entry by entry (leverArmTerm(),
+/// which writes them out), not as two products of 3×3 matrices. And K⁻¹ is
+/// never formed: K·x = Ċ + b·C is solved as x = adj(K)·(Ċ + b·C)/det(K), the
+/// adjugate of a symmetric matrix being symmetric too (solveSymmetric()).
+///
 /// References: Catto, "Modeling and Solving Constraints" (GDC 2009), the
 /// point-to-point constraint; Box2D v3 `revolute_joint.c` (its point part,
 /// there 2×2); Baraff, "Physically Based Modeling: Constrained Dynamics".
@@ -40,12 +46,16 @@ void solveBallJoint(SolverJoint& j, const JointFrame& f, const JointSolverSettin
     const Vec3 Cdot = relativeAnchorVelocity(j, f);  // m/s
     const RowSoftness soft = equalityRow(settings, useBias);
 
-    const Mat3 skewA = skew(f.rA);
-    const Mat3 skewB = skew(f.rB);
-    const Mat3 K = (j.inverseMassA + j.inverseMassB) * Mat3(1) - skewA * j.inverseInertiaA * skewA -
-                   skewB * j.inverseInertiaB * skewB;
-    const Vec3 impulse =
-        -soft.massScale * (glm::inverse(K) * (Cdot + soft.biasRate * C)) - soft.impulseScale * joint.linearImpulse;
+    // K = (m_A⁻¹ + m_B⁻¹) E + [r_A]×ᵀ I_A⁻¹ [r_A]× + [r_B]×ᵀ I_B⁻¹ [r_B]×
+    SymmetricMat3 K = leverArmTerm(symmetricPart(j.inverseInertiaA), f.rA);
+    if (j.b) K = K + leverArmTerm(symmetricPart(j.inverseInertiaB), f.rB);
+    const Real inverseMass = j.inverseMassA + j.inverseMassB;
+    K.xx += inverseMass;
+    K.yy += inverseMass;
+    K.zz += inverseMass;
+    Vec3 x;  // K⁻¹(Ċ + b·C), N·s
+    if (!solveSymmetric(K, Cdot + soft.biasRate * C, x)) return;  // K singular: no impulse moves the anchors
+    const Vec3 impulse = -soft.massScale * x - soft.impulseScale * joint.linearImpulse;
     joint.linearImpulse += impulse;
     applyLinearImpulse(j, f, impulse);
 }

@@ -57,29 +57,33 @@ namespace {
 /// Below this determinant, 1/(kg·m²)², the 2×2 alignment block is singular (axes at 90°): skip it this iteration.
 constexpr Real kSingularAlignment = Real(1e-12);
 
-/// The hinge's axes in the world at the joint's frame.
+/// The hinge's axes in the world at its bodies' orientations.
 struct HingeAxes {
-    Vec3 axisA{0, 0, 1};      ///< a_A.
-    Vec3 axisB{0, 0, 1};      ///< a_B.
-    Vec3 turnRow[2];          ///< d_i = a_A × p_i.
+    Vec3 axisA{0, 0, 1};    ///< a_A.
+    Vec3 axisB{0, 0, 1};    ///< a_B.
+    Vec3 perpendicular[2];  ///< p_i.
+    Vec3 turnRow[2];        ///< d_i = a_A × p_i.
 };
 
-HingeAxes axesAt(const Joint& joint, const JointFrame& f) {
+HingeAxes axesAt(const Joint& joint, const JointOrientations& q) {
     HingeAxes axes;
-    axes.axisA = f.orientationA * joint.localAxisA;
-    axes.axisB = f.orientationB * joint.localAxisB;  // identity for the world: the axis is fixed
-    for (int i = 0; i < 2; ++i) axes.turnRow[i] = glm::cross(axes.axisA, f.orientationB * joint.localPerpendicularB[i]);
+    axes.axisA = q.a * joint.localAxisA;
+    axes.axisB = q.b * joint.localAxisB;  // identity for the world: the axis is fixed
+    for (int i = 0; i < 2; ++i) {
+        axes.perpendicular[i] = q.b * joint.localPerpendicularB[i];
+        axes.turnRow[i] = glm::cross(axes.axisA, axes.perpendicular[i]);
+    }
     return axes;
 }
 
-/// One limit row: C ≥ 0 wanted, Ċ = sign·(ω_A − ω_B)·a_B, accumulated impulse ≥ 0.
-void solveLimitRow(SolverJoint& j, const Vec3& axis, Real sign, Real C, Real& accumulated,
+/// One limit row: C ≥ 0 wanted, Ċ = sign·(ω_A − ω_B)·a_B, accumulated impulse ≥ 0; @p mass is its K⁻¹.
+void solveLimitRow(SolverJoint& j, const Vec3& axis, Real mass, Real sign, Real C, Real& accumulated,
                    const JointSolverSettings& settings, bool useBias) {
     const Vec3 row = sign * axis;
     Real bias = 0;
     const RowSoftness soft = inequalityRow(C, settings, useBias, bias);
     const Real Cdot = glm::dot(relativeAngularVelocity(j), row);
-    const Real impulse = -soft.massScale * angularMass(j, axis) * (Cdot + bias) - soft.impulseScale * accumulated;
+    const Real impulse = -soft.massScale * mass * (Cdot + bias) - soft.impulseScale * accumulated;
     const Real total = std::max(accumulated + impulse, Real(0));
     applyAngularImpulse(j, (total - accumulated) * row);
     accumulated = total;
@@ -93,45 +97,50 @@ Real hingeAngle(const Joint& joint, const Quat& orientationA, const Quat& orient
     return Real(2) * std::atan2(glm::dot(Vec3(r.x, r.y, r.z), joint.localAxisB), r.w);
 }
 
-void warmStartHingeJoint(SolverJoint& j, const JointFrame& f) {
+void warmStartHingeJoint(SolverJoint& j, const JointFrame& f, const JointOrientations& q) {
     const Joint& joint = *j.joint;
-    const HingeAxes axes = axesAt(joint, f);
+    const HingeAxes axes = axesAt(joint, q);
     const Real aboutAxis = joint.motorImpulse + joint.lowerImpulse - joint.upperImpulse;
     applyAngularImpulse(j, joint.alignImpulse[0] * axes.turnRow[0] + joint.alignImpulse[1] * axes.turnRow[1] +
                                aboutAxis * axes.axisB);
     applyLinearImpulse(j, f, joint.linearImpulse);
 }
 
-void solveHingeJoint(SolverJoint& j, const JointFrame& f, const JointSolverSettings& settings, bool useBias) {
+void solveHingeJoint(SolverJoint& j, const JointFrame& f, const JointOrientations& q, const JointSolverSettings& settings,
+                     bool useBias) {
     Joint& joint = *j.joint;
-    const HingeAxes axes = axesAt(joint, f);
+    const HingeAxes axes = axesAt(joint, q);
+    const SymmetricMat3 W = relativeInverseInertia(j);  // I_A⁻¹ + I_B⁻¹, for every angular row
 
-    if (joint.motor) solveMotorRow(j, axes.axisB, settings.substep);
-
-    if (joint.hasLowerLimit || joint.hasUpperLimit) {
-        const Real angle = hingeAngle(joint, f.orientationA, f.orientationB);
-        if (joint.hasLowerLimit) {
-            solveLimitRow(j, axes.axisB, Real(1), angle - joint.lowerAngle, joint.lowerImpulse, settings, useBias);
-        }
-        if (joint.hasUpperLimit) {
-            solveLimitRow(j, axes.axisB, Real(-1), joint.upperAngle - angle, joint.upperImpulse, settings, useBias);
+    if (joint.motor || joint.hasLowerLimit || joint.hasUpperLimit) {
+        // The motor and both limits act about a_B: one K = a_B·W·a_B for the three.
+        const Real axialMass = angularMass(W, axes.axisB);
+        if (joint.motor) solveMotorRow(j, axes.axisB, axialMass, settings.substep);
+        if (joint.hasLowerLimit || joint.hasUpperLimit) {
+            const Real angle = hingeAngle(joint, q.a, q.b);
+            if (joint.hasLowerLimit) {
+                solveLimitRow(j, axes.axisB, axialMass, Real(1), angle - joint.lowerAngle, joint.lowerImpulse, settings,
+                              useBias);
+            }
+            if (joint.hasUpperLimit) {
+                solveLimitRow(j, axes.axisB, axialMass, Real(-1), joint.upperAngle - angle, joint.upperImpulse, settings,
+                              useBias);
+            }
         }
     }
 
     // The axis: two rows, one 2×2 block.
     const Vec3* d = axes.turnRow;
-    const Mat3 W = j.inverseInertiaA + j.inverseInertiaB;
-    const Real k00 = glm::dot(d[0], W * d[0]);
-    const Real k01 = glm::dot(d[0], W * d[1]);
-    const Real k11 = glm::dot(d[1], W * d[1]);
+    const Vec3 Wd1 = W * d[1];
+    const Real k00 = quadraticForm(W, d[0]);
+    const Real k01 = glm::dot(d[0], Wd1);
+    const Real k11 = glm::dot(d[1], Wd1);
     const Real det = k00 * k11 - k01 * k01;
     if (det > kSingularAlignment) {
         const RowSoftness soft = equalityRow(settings, useBias);
         const Vec3 w = relativeAngularVelocity(j);
-        const Vec3 perpendicular0 = f.orientationB * joint.localPerpendicularB[0];
-        const Vec3 perpendicular1 = f.orientationB * joint.localPerpendicularB[1];
-        const Real rhs0 = glm::dot(w, d[0]) + soft.biasRate * glm::dot(axes.axisA, perpendicular0);
-        const Real rhs1 = glm::dot(w, d[1]) + soft.biasRate * glm::dot(axes.axisA, perpendicular1);
+        const Real rhs0 = glm::dot(w, d[0]) + soft.biasRate * glm::dot(axes.axisA, axes.perpendicular[0]);
+        const Real rhs1 = glm::dot(w, d[1]) + soft.biasRate * glm::dot(axes.axisA, axes.perpendicular[1]);
         const Real x0 = (k11 * rhs0 - k01 * rhs1) / det;  // K⁻¹·rhs by Cramer's rule
         const Real x1 = (k00 * rhs1 - k01 * rhs0) / det;
         const Real impulse0 = -soft.massScale * x0 - soft.impulseScale * joint.alignImpulse[0];

@@ -191,14 +191,14 @@ void prepareJoints(const BodySet& bodies, std::span<Joint> joints, bool warmStar
 }
 
 void warmStartJoints(JointWorkspace& workspace, std::span<const Pose> poses) {
+    // Each type is handed what its rows read: the anchors (frameAt()), the orientations (orientationsAt()), or both.
     for (SolverJoint& j : workspace.joints) {
-        const JointFrame f = frameAt(j, poses);
         switch (j.joint->kind) {
             case JointKind::Distance:
-            case JointKind::Rope: warmStartAxial(j, f); break;
-            case JointKind::Ball: warmStartBallJoint(j, f); break;
-            case JointKind::Hinge: warmStartHingeJoint(j, f); break;
-            case JointKind::AngularMotor: warmStartAngularMotor(j, f); break;
+            case JointKind::Rope: warmStartAxial(j, frameAt(j, poses)); break;
+            case JointKind::Ball: warmStartBallJoint(j, frameAt(j, poses)); break;
+            case JointKind::Hinge: warmStartHingeJoint(j, frameAt(j, poses), orientationsAt(j, poses)); break;
+            case JointKind::AngularMotor: warmStartAngularMotor(j, orientationsAt(j, poses)); break;
         }
     }
 }
@@ -206,13 +206,14 @@ void warmStartJoints(JointWorkspace& workspace, std::span<const Pose> poses) {
 void solveJoints(JointWorkspace& workspace, std::span<const Pose> poses, const JointSolverSettings& settings,
                  bool useBias) {
     for (SolverJoint& j : workspace.joints) {
-        const JointFrame f = frameAt(j, poses);
         switch (j.joint->kind) {
-            case JointKind::Distance: solveDistanceJoint(j, f, settings, useBias); break;
-            case JointKind::Rope: solveRope(j, f, settings, useBias); break;
-            case JointKind::Ball: solveBallJoint(j, f, settings, useBias); break;
-            case JointKind::Hinge: solveHingeJoint(j, f, settings, useBias); break;
-            case JointKind::AngularMotor: solveAngularMotor(j, f, settings); break;
+            case JointKind::Distance: solveDistanceJoint(j, frameAt(j, poses), settings, useBias); break;
+            case JointKind::Rope: solveRope(j, frameAt(j, poses), settings, useBias); break;
+            case JointKind::Ball: solveBallJoint(j, frameAt(j, poses), settings, useBias); break;
+            case JointKind::Hinge:
+                solveHingeJoint(j, frameAt(j, poses), orientationsAt(j, poses), settings, useBias);
+                break;
+            case JointKind::AngularMotor: solveAngularMotor(j, orientationsAt(j, poses), settings); break;
         }
     }
 }
@@ -258,7 +259,8 @@ JointError measureJoint(const Joint& joint, std::span<const DynamicObject> bodie
     const DynamicObject& a = bodies[joint.bodyA];
     const DynamicObject* b = joint.bodyB == kWorldAnchor ? nullptr : &bodies[joint.bodyB];
     const JointFrame f = frameAt(joint, poseOf(a), b ? poseOf(*b) : poseOf(a));
-    const Vec3 axisB = f.orientationB * joint.localAxisB;
+    const Quat orientationB = b ? b->orientation : Quat(1, 0, 0, 0);  // the world's axis is fixed
+    const Vec3 axisB = orientationB * joint.localAxisB;
     const Real relativeSpeed = glm::dot(a.angularVelocity - (b ? b->angularVelocity : Vec3(0)), axisB);
     const Real distance = glm::length(f.pB - f.pA);
     JointError error;
@@ -268,9 +270,9 @@ JointError measureJoint(const Joint& joint, std::span<const DynamicObject> bodie
         case JointKind::Ball: error.distance = distance; break;
         case JointKind::Hinge: {
             error.distance = distance;
-            const Vec3 axisA = f.orientationA * joint.localAxisA;
+            const Vec3 axisA = a.orientation * joint.localAxisA;
             error.angle = std::acos(std::clamp(glm::dot(axisA, axisB), Real(-1), Real(1)));
-            const Real angle = hingeAngle(joint, f.orientationA, f.orientationB);
+            const Real angle = hingeAngle(joint, a.orientation, orientationB);
             if (joint.hasLowerLimit) error.angle += std::max(joint.lowerAngle - angle, Real(0));
             if (joint.hasUpperLimit) error.angle += std::max(angle - joint.upperAngle, Real(0));
             if (joint.motor) error.speed = relativeSpeed;
