@@ -47,6 +47,21 @@
 /// constant: its exact motion is one rotation by |ω|·h about ω, and that is
 /// what it gets (the sub-flows would approximate it with an O(h³) error).
 ///
+/// A *symmetric top*, two moments equal (I₁ = I₂ = I⊥ about a symmetry
+/// axis e₃ with moment I₃: a cylinder, a capsule, a square rod), has a
+/// closed form too. Split ω = I⁻¹Π in the body frame as
+/// \f[ \omega = \frac{\Pi}{I_\perp} + \Big(\frac{1}{I_3} - \frac{1}{I_\perp}\Big)\Pi_3\, e_3 : \f]
+/// in the world the first part is L/I⊥, fixed, and the second turns with
+/// the body about its own e₃, where Π₃ = e₃·Π does not change (a turn about
+/// e₃ leaves it, and so does one about L). So the motion is a turn about L
+/// by |L|·h/I⊥ on the left and a turn about e₃ by (1/I₃ − 1/I⊥)·Π₃·h on the
+/// right,
+/// \f[ q(h) = \mathrm{angleAxis}\big(|L| h / I_\perp,\ \hat L\big)\; q\;
+///           \mathrm{angleAxis}\big((1/I_3 - 1/I_\perp)\,\Pi_3\, h,\ e_3\big) , \f]
+/// exact for any h (the classic steady precession of the axis about L at
+/// the rate |L|/I⊥; Goldstein, *Classical Mechanics*, §5.6; Landau &
+/// Lifshitz, *Mechanics*, §33), with two turns where the splitting takes five.
+///
 /// References: R. I. McLachlan, "Explicit Lie–Poisson integration and the
 /// Euler equations", Phys. Rev. Lett. 71 (1993) 3043; A. Dullweber,
 /// B. Leimkuhler & R. McLachlan, "Symplectic splitting methods for rigid body
@@ -54,6 +69,7 @@
 /// Wanner, *Geometric Numerical Integration*, §VII.5.
 #include <algorithm>
 #include <array>
+#include <cmath>
 
 #include "integrators/integrators.hpp"
 
@@ -92,12 +108,38 @@ bool isIsotropic(const Vec3& inverseInertiaBody) {
     return largest - smallest <= kIsotropicTolerance * largest;
 }
 
+/// The symmetry axis (0, 1, 2) of a symmetric top, whose other two inverse moments are equal
+/// (within kIsotropicTolerance, relative), or −1 when no two are.
+int symmetryAxis(const Vec3& inverseInertiaBody) {
+    const auto same = [](Real a, Real b) { return std::abs(a - b) <= kIsotropicTolerance * std::max(a, b); };
+    for (int axis = 0; axis < 3; ++axis) {
+        if (same(inverseInertiaBody[(axis + 1) % 3], inverseInertiaBody[(axis + 2) % 3])) return axis;
+    }
+    return -1;
+}
+
+/// The exact turn of a symmetric top with symmetry axis @p axis (the file's header derives it).
+Quat rotateSymmetricTop(const Quat& orientation, const Vec3& angularMomentum, const Vec3& inverseInertiaBody,
+                        int axis, Real h) {
+    const auto i = static_cast<std::size_t>(axis);
+    const Real inversePerpendicular = inverseInertiaBody[(axis + 1) % 3];  // 1/I⊥, 1/(kg·m²)
+    const Real spin = (glm::conjugate(orientation) * angularMomentum)[axis];  // Π₃, kg·m²/s
+    // About L by |L|·h/I⊥ (world frame: on the left); rotateByAngularVelocity() turns by |ω|·h about ω.
+    const Quat precession = rotateByAngularVelocity(orientation, angularMomentum * inversePerpendicular, h);
+    // About e₃ by (1/I₃ − 1/I⊥)·Π₃·h (body frame: on the right)
+    const Quat q = precession * glm::angleAxis((inverseInertiaBody[axis] - inversePerpendicular) * spin * h, kBodyAxes[i]);
+    return glm::normalize(q);
+}
+
 }  // namespace
 
 Quat rotateTorqueFree(const Quat& orientation, const Vec3& angularMomentum, const Vec3& inverseInertiaBody, Real h) {
     if (isIsotropic(inverseInertiaBody)) {
         // ω = L/I is constant: the exact motion is one rotation by |ω|·h about ω.
         return rotateByAngularVelocity(orientation, angularMomentum * inverseInertiaBody.x, h);
+    }
+    if (const int axis = symmetryAxis(inverseInertiaBody); axis >= 0) {
+        return rotateSymmetricTop(orientation, angularMomentum, inverseInertiaBody, axis, h);
     }
     Quat q = orientation;
     for (const SubFlow& sub : kSplitting) {
