@@ -163,6 +163,7 @@ int runStageCosts(const StageCostOptions& options) {
     for (const std::size_t n : sizes) {
         Run run;
         run.world = std::make_unique<World>(onOneThread(parseScene(sphereRainSceneText(n, options.seed), "sphere-rain")));
+        run.world->timeStages(true);  // this benchmark reads the stage times
         run.bodies = run.world->dynamics().size();
         // As many body-steps a round as the largest size's one step: every size is timed for about as long
         run.stepsPerRound = std::max(1, int(std::lround(double(sizes.back()) / double(n))));

@@ -46,6 +46,28 @@ TEST_CASE("Every stage runs once per step and the clock advances by h", "[world]
     }
 }
 
+TEST_CASE("A World counts its stage runs always and times them only when asked", "[world]") {
+    // Untimed (the default) every stage's seconds stay exactly 0 while its runs are counted; timed,
+    // a stage that ran takes some time (the steady clock advances at least once over 60 steps of
+    // a whole solve, and never goes back, so its sum is positive).
+    Scene scene = test::emptyScene();
+    scene.dynamics.push_back(test::sphere("ball", Vec3(0, 2, 0)));
+    scene.planes.push_back(test::ground());
+    World world(scene);
+    for (int i = 0; i < 60; ++i) world.step();
+    const auto integrate = static_cast<std::size_t>(Stage::Integrate);
+    CHECK(world.stageRecords()[integrate].runs == 60 * static_cast<std::uint64_t>(scene.settings.substeps));
+    for (const StageRecord& record : world.stageRecords()) {
+        CHECK(record.totalSeconds == 0);
+        CHECK(record.lastSeconds == 0);
+    }
+    world.timeStages(true);
+    for (int i = 0; i < 60; ++i) world.step();
+    CHECK(world.stageRecords()[integrate].runs == 120 * static_cast<std::uint64_t>(scene.settings.substeps));
+    CHECK(world.stageRecords()[integrate].totalSeconds > 0);
+    for (const StageRecord& record : world.stageRecords()) CHECK(record.totalSeconds >= 0);
+}
+
 TEST_CASE("A non-finite state stops the step naming object, stage and step", "[world]") {
     // The impulse pipeline integrates first, so the runaway body is caught
     // there. (With sequential impulses its huge sweep would reach the calm

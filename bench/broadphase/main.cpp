@@ -56,6 +56,7 @@ struct Run {
 
 Run runScene(const GeneratorOptions& options, std::uint64_t steps, std::uint64_t checkEvery) {
     World world(parseScene(generateSceneText(options), toString(options.scene)));
+    world.timeStages(true);  // the other stages' time is read below
     const BodySet initial{world.dynamics(), world.kinematics(), world.planes()};
     Run run;
     run.bodies = world.dynamics().size();

@@ -496,6 +496,7 @@ int runCommand(const RunOptions& options) {
         firstStep->step();
     }
     World world(std::move(*scene));
+    world.timeStages(true);  // for the stage table at the end (printStageTimes())
     if (options.explain) {
         std::printf("\n%s", describeStepPlan(world.plan()).c_str());
         if (firstStep && world.plan().islandSubsteps.runs) {

@@ -38,12 +38,14 @@ const char* stageName(Stage stage);
 struct StageRecord {
     bool ranLastStep = false;    ///< Did the stage run in the most recent step?
     std::uint64_t runs = 0;      ///< Times it ran (a substep stage runs several times a step).
-    double lastSeconds = 0;      ///< Wall-clock time it took in the most recent step (all its runs), s.
-    double totalSeconds = 0;     ///< Wall-clock time summed over all runs, s.
+    double lastSeconds = 0;      ///< Wall-clock time it took in the most recent step (all its runs), s; 0 untimed.
+    double totalSeconds = 0;     ///< Wall-clock time summed over all runs, s; 0 untimed (World::timeStages()).
 };
 
-/// @brief One record per stage, indexed by Stage.
-using StageRecords = std::array<StageRecord, kStageCount>;
+/// @brief One record per stage, indexed by Stage, and whether their wall-clock times are measured.
+struct StageRecords : std::array<StageRecord, kStageCount> {
+    bool timed = false;  ///< Measure each run's time (World::timeStages()); false: only the runs are counted.
+};
 
 /// @brief Whether a timed piece of work is a run of its stage of its own, or more of the last one.
 enum class StageRun : std::uint8_t {
@@ -51,18 +53,25 @@ enum class StageRun : std::uint8_t {
     Continued,  ///< More work of the stage's last run (its time is added, no run is counted).
 };
 
-/// @brief Runs @p body and adds its wall-clock time to @p records[@p stage], marking the stage as run.
+/// @brief Runs @p body, marking the stage as run in @p records[@p stage], and, when @p records are
+/// timed, adds its wall-clock time. Timing reads the clock twice a run: in a scene of a few bodies,
+/// whose substep stages each take well under a microsecond, that is a large share of the step, so
+/// the World times its stages only when asked (World::timeStages()).
 template <class Body>
 void timeStage(StageRecords& records, Stage stage, Body&& body, StageRun run = StageRun::New) {
-    using Clock = std::chrono::steady_clock;
-    const auto start = Clock::now();
-    body();
-    const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
     StageRecord& record = records[static_cast<std::size_t>(stage)];
+    if (records.timed) {
+        using Clock = std::chrono::steady_clock;
+        const auto start = Clock::now();
+        body();
+        const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+        record.lastSeconds += seconds;
+        record.totalSeconds += seconds;
+    } else {
+        body();
+    }
     record.ranLastStep = true;
     if (run == StageRun::New) record.runs += 1;
-    record.lastSeconds += seconds;
-    record.totalSeconds += seconds;
 }
 
 }  // namespace stepwise

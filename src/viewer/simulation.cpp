@@ -49,10 +49,12 @@ Simulation::Loaded Simulation::load(const std::string& path) {
     Loaded loaded;
     if (scene.spaces.empty()) {
         loaded.world = std::make_unique<World>(std::move(scene));
+        loaded.world->timeStages(true);  // the overlay shows each stage's time
         return loaded;
     }
     Scene copy = scene;
     loaded.spaces = std::make_unique<Spaces>(std::move(scene));
+    for (Space& space : loaded.spaces->all()) space.world.timeStages(true);
     loaded.layout.reset(loaded.spaces->all().size());
     for (std::size_t k = 0; k < loaded.spaces->all().size(); ++k) loaded.layout.grow(k, loaded.spaces->all()[k].world);
     sweepAhead(std::move(copy), loaded.layout);

@@ -587,7 +587,7 @@ void World::runFastPath(const AccelerationFunction& forces, const ContactSolverS
     runFastSubsteps(step, *fastWorkspace_);
 }
 
-/// The soft bodies' stage (src/soft/soft_step.hpp) for @p substeps substeps of @p h / @p substeps each.
+/// The soft bodies' stage (src/soft/soft_step.hpp): one soft substep of @p h.
 /// Under the sequential impulse it runs once at the start of every substep (stage 5a), so that the
 /// rigid bodies move with the nodes' pushes and their solve holds them; under Impulse, once after
 /// the step's collisions are repaired. A node pushes a dynamic body with an equal and opposite impulse.

@@ -98,7 +98,12 @@ public:
     const std::vector<CandidatePair>& candidatePairs() const { return pairs_; }  ///< Last broadphase output.
     const std::vector<Contact>& contacts() const { return contacts_; }           ///< Last narrowphase output.
     const std::vector<ImpulseReport>& impulses() const { return impulses_; }     ///< One per contact, last step.
-    const StageRecords& stageRecords() const { return stageRecords_; }           ///< Per-stage timing.
+    const StageRecords& stageRecords() const { return stageRecords_; }           ///< Per-stage runs, and times when timed.
+    /// @brief Measure the wall-clock time of every stage run from now on (true), or only count the
+    /// runs (false, the default). Timing costs two clock reads a stage run, a large share of the
+    /// step of a scene of a few bodies: `stepwise run`'s stage table, the viewer's overlay and the
+    /// stage-cost benchmarks switch it on.
+    void timeStages(bool on) { stageRecords_.timed = on; }
     /// @brief The sequential-impulse solver's constraints of the last step (effective masses, accumulated impulses).
     ///
     /// Current between steps and in a StepObserver's afterStage() (with an observer the step takes
