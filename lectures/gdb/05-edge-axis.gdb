@@ -22,6 +22,7 @@ p fromB
 p toB
 finish
 finish
+finish
 p found
 frame function stepwise::World::step
 p stepCount_

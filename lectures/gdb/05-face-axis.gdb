@@ -13,6 +13,7 @@ p faceB
 p edge
 p faceA.separation - faceB.separation
 finish
+finish
 p found.normal
 p found.pointCount
 p found.points
