@@ -181,18 +181,20 @@ void prepareJoints(const BodySet& bodies, std::span<Joint> joints, bool warmStar
         j.a = &a;
         j.b = b;
         j.inverseMassA = a.inverseMass;
-        j.inverseInertiaA = worldInverseInertia(a.orientation, a.inverseInertiaBody);
-        if (b) {
-            j.inverseMassB = b->inverseMass;
-            j.inverseInertiaB = worldInverseInertia(b->orientation, b->inverseInertiaBody);
-        }
-        workspace.joints.push_back(j);
+        if (b) j.inverseMassB = b->inverseMass;
+        workspace.joints.push_back(j);  // the inverse inertias: each substep (warmStartJoints())
     }
 }
 
 void warmStartJoints(JointWorkspace& workspace, std::span<const Pose> poses) {
     // Each type is handed what its rows read: the anchors (frameAt()), the orientations (orientationsAt()), or both.
     for (SolverJoint& j : workspace.joints) {
+        // I⁻¹ = R·I_body⁻¹·Rᵀ at the orientation the substep starts from. Kept from the start of
+        // the step instead, a body turned by θ since then would answer an impulse with
+        // Δω = I⁻¹(q₀)·ΔL where ω = I⁻¹(q)·L holds: for a rod whose moments differ 8:1, up to
+        // 8 times the turn the joint asked for, fed back by every warm start (a chain's whip).
+        j.inverseInertiaA = worldInverseInertia(j.a->orientation, j.a->inverseInertiaBody);
+        if (j.b) j.inverseInertiaB = worldInverseInertia(j.b->orientation, j.b->inverseInertiaBody);
         switch (j.joint->kind) {
             case JointKind::Distance:
             case JointKind::Rope: warmStartAxial(j, frameAt(j, poses)); break;

@@ -116,7 +116,7 @@ struct SolverJoint {
     DynamicObject* b = nullptr;          ///< Body B, or nullptr for the world.
     Real inverseMassA = 0;               ///< 1/m_A, 1/kg.
     Real inverseMassB = 0;               ///< 1/m_B, or 0, 1/kg.
-    Mat3 inverseInertiaA{0};             ///< A's world inverse inertia at the start of the step, 1/(kg·m²).
+    Mat3 inverseInertiaA{0};             ///< A's world inverse inertia at the start of the substep (warmStartJoints()), 1/(kg·m²).
     Mat3 inverseInertiaB{0};             ///< B's, or zero.
 };
 
@@ -172,7 +172,8 @@ void dropJointedPairs(std::span<const Joint> joints, JointWorkspace& workspace, 
 /// @brief Prepares the acting joints (not broken, not asleep) for this step; without @p warmStart their impulses restart at 0.
 void prepareJoints(const BodySet& bodies, std::span<Joint> joints, bool warmStart, JointWorkspace& workspace);
 
-/// @brief Applies every joint's accumulated impulses, at the start of a substep (lever arms at @p poses).
+/// @brief Applies every joint's accumulated impulses, at the start of a substep (lever arms at @p poses),
+/// after taking each body's world inverse inertia at its orientation now (SolverJoint::inverseInertiaA).
 void warmStartJoints(JointWorkspace& workspace, std::span<const Pose> poses);
 
 /// @brief One Gauss–Seidel pass over the joints, measuring C at @p poses.

@@ -247,8 +247,8 @@ inline Vec3 relativeAngularVelocity(const SolverJoint& j) {
 }
 
 // Both impulse functions change v, L and ω together, ω through the inverse
-// inertia fixed at the start of the step (as the contact solver does);
-// finishJoints() makes ω = I⁻¹(q)·L exact again.
+// inertia taken at the start of the substep (warmStartJoints()); the body
+// turns by ω·h_s within it, and finishJoints() makes ω = I⁻¹(q)·L exact again.
 
 inline void applyLinearImpulse(SolverJoint& j, const JointFrame& f, const Vec3& impulse) {
     const Vec3 turnA = glm::cross(f.rA, impulse);
