@@ -89,19 +89,29 @@ void setAnchors(BoxAnchorBatch& anchors, int lane, const SolverContact& c, const
 }
 
 /// The positions and orientations of poses @p index, lane by lane: q = (w; x, y, z).
+///
+/// A Pose is seven Reals, the centre's x, y, z and the quaternion's x, y, z, w (GLM's order),
+/// so each pose is read as two overlapping runs of four, [c_x c_y c_z q_x] and [q_x q_y q_z q_w],
+/// and two 4×4 transposes turn the four poses' runs into lanes (as gather() does for the
+/// velocities, body_lanes.hpp). Written lane by lane into a scratch array and read back as
+/// Lanes instead, each read waited for four separate stores to reach the cache: a load wider
+/// than the stores before it cannot take its value from them.
 STEPWISE_LANES_INLINE void gatherPoses(const std::vector<Pose>& poses, const std::uint32_t (&index)[kLanes],
                                        Vec3Lanes& position, Lanes& w, Vec3Lanes& axis) {
-    constexpr int kPoseReals = 7;  // x, y, z of the centre; x, y, z, w of the quaternion
-    Real reals[kPoseReals][kLanes];
+    static_assert(sizeof(Pose) == 7 * sizeof(Real), "a Pose is the centre's 3 Reals, then the quaternion's 4");
+    static_assert(offsetof(Pose, orientation) == 3 * sizeof(Real), "the quaternion follows the centre");
+    Lanes centre[kLanes];      // [c_x c_y c_z q_x] of each pose
+    Lanes quaternion[kLanes];  // [q_x q_y q_z q_w]
     for (int lane = 0; lane < kLanes; ++lane) {
-        const Pose& pose = poses[index[lane]];
-        const Real values[kPoseReals] = {pose.position.x,    pose.position.y,    pose.position.z,   pose.orientation.x,
-                                         pose.orientation.y, pose.orientation.z, pose.orientation.w};
-        for (int k = 0; k < kPoseReals; ++k) reals[k][lane] = values[k];
+        const Real* reals = &poses[index[lane]].position.x;
+        centre[lane] = load(reals);
+        quaternion[lane] = load(reals + 3);
     }
-    position = {load(reals[0]), load(reals[1]), load(reals[2])};
-    axis = {load(reals[3]), load(reals[4]), load(reals[5])};
-    w = load(reals[6]);
+    transpose(centre[0], centre[1], centre[2], centre[3]);
+    transpose(quaternion[0], quaternion[1], quaternion[2], quaternion[3]);
+    position = {centre[0], centre[1], centre[2]};
+    axis = {quaternion[0], quaternion[1], quaternion[2]};
+    w = quaternion[3];
 }
 
 /// v turned by the unit quaternion (w; u): v + 2·(w·(u × v) + u × (u × v)), term by term as GLM's
