@@ -167,8 +167,24 @@ void dropJointedPairs(std::span<const Joint> joints, JointWorkspace& workspace, 
     });
 }
 
+namespace {
+
+/// The place of dynamic body @p index in @p workspace's bodies, given one if it has none yet.
+std::uint32_t placeOfBody(JointWorkspace& workspace, std::span<DynamicObject> dynamics, std::uint32_t index) {
+    std::uint32_t& place = workspace.placeOf[index];
+    if (place == kNoJointBody) {
+        place = static_cast<std::uint32_t>(workspace.bodies.size());
+        workspace.bodies.push_back(&dynamics[index]);
+    }
+    return place;
+}
+
+}  // namespace
+
 void prepareJoints(const BodySet& bodies, std::span<Joint> joints, bool warmStart, JointWorkspace& workspace) {
     workspace.joints.clear();
+    workspace.bodies.clear();
+    workspace.placeOf.assign(bodies.dynamics.size(), kNoJointBody);
     for (Joint& joint : joints) {
         if (joint.broken) continue;
         DynamicObject& a = bodies.dynamics[joint.bodyA];
@@ -180,21 +196,28 @@ void prepareJoints(const BodySet& bodies, std::span<Joint> joints, bool warmStar
         j.joint = &joint;
         j.a = &a;
         j.b = b;
+        j.bodyA = placeOfBody(workspace, bodies.dynamics, joint.bodyA);
+        if (b) j.bodyB = placeOfBody(workspace, bodies.dynamics, joint.bodyB);
         j.inverseMassA = a.inverseMass;
         if (b) j.inverseMassB = b->inverseMass;
         workspace.joints.push_back(j);  // the inverse inertias: each substep (warmStartJoints())
     }
+    workspace.inverseInertias.resize(workspace.bodies.size());
 }
 
 void warmStartJoints(JointWorkspace& workspace, std::span<const Pose> poses) {
+    // I⁻¹ = R·I_body⁻¹·Rᵀ at the orientation the substep starts from, once a body. Kept from the
+    // start of the step instead, a body turned by θ since then would answer an impulse with
+    // Δω = I⁻¹(q₀)·ΔL where ω = I⁻¹(q)·L holds: for a rod whose moments differ 8:1, up to
+    // 8 times the turn the joint asked for, fed back by every warm start (a chain's whip).
+    for (std::size_t k = 0; k < workspace.bodies.size(); ++k) {
+        const DynamicObject& body = *workspace.bodies[k];
+        workspace.inverseInertias[k] = worldInverseInertia(body.orientation, body.inverseInertiaBody);
+    }
     // Each type is handed what its rows read: the anchors (frameAt()), the orientations (orientationsAt()), or both.
     for (SolverJoint& j : workspace.joints) {
-        // I⁻¹ = R·I_body⁻¹·Rᵀ at the orientation the substep starts from. Kept from the start of
-        // the step instead, a body turned by θ since then would answer an impulse with
-        // Δω = I⁻¹(q₀)·ΔL where ω = I⁻¹(q)·L holds: for a rod whose moments differ 8:1, up to
-        // 8 times the turn the joint asked for, fed back by every warm start (a chain's whip).
-        j.inverseInertiaA = worldInverseInertia(j.a->orientation, j.a->inverseInertiaBody);
-        if (j.b) j.inverseInertiaB = worldInverseInertia(j.b->orientation, j.b->inverseInertiaBody);
+        j.inverseInertiaA = workspace.inverseInertias[j.bodyA];
+        if (j.b) j.inverseInertiaB = workspace.inverseInertias[j.bodyB];
         switch (j.joint->kind) {
             case JointKind::Distance:
             case JointKind::Rope: warmStartAxial(j, frameAt(j, poses)); break;

@@ -109,11 +109,16 @@ struct Joint {
     Real brokenForce = 0;                ///< The force that broke it, N.
 };
 
-/// @brief One joint prepared for a step: its bodies, their masses and (fixed for the step) inverse inertias.
+/// @brief JointWorkspace::bodies has no place for this body (the world, B of a joint to it).
+inline constexpr std::uint32_t kNoJointBody = 0xffffffffu;
+
+/// @brief One joint prepared for a step: its bodies, their masses and inverse inertias (taken each substep).
 struct SolverJoint {
     Joint* joint = nullptr;              ///< The joint (its accumulated impulses are updated in place).
     DynamicObject* a = nullptr;          ///< Body A.
     DynamicObject* b = nullptr;          ///< Body B, or nullptr for the world.
+    std::uint32_t bodyA = 0;             ///< A's place in JointWorkspace::bodies.
+    std::uint32_t bodyB = kNoJointBody;  ///< B's, or kNoJointBody for the world.
     Real inverseMassA = 0;               ///< 1/m_A, 1/kg.
     Real inverseMassB = 0;               ///< 1/m_B, or 0, 1/kg.
     Mat3 inverseInertiaA{0};             ///< A's world inverse inertia at the start of the substep (warmStartJoints()), 1/(kg·m²).
@@ -130,6 +135,9 @@ struct JointSolverSettings {
 /// @brief The joints prepared for this step, reused from step to step.
 struct JointWorkspace {
     std::vector<SolverJoint> joints;     ///< One per acting joint (not broken, not asleep).
+    std::vector<DynamicObject*> bodies;  ///< Each body an acting joint holds, once (a chain's link is in two joints).
+    std::vector<Mat3> inverseInertias;   ///< Theirs, in the same order, at the start of the substep (warmStartJoints()).
+    std::vector<std::uint32_t> placeOf;  ///< prepareJoints()' scratch: a dynamic body's place in `bodies`, or kNoJointBody.
     std::vector<std::uint64_t> jointedPairs; ///< Sorted keys of body pairs that must not collide (dropJointedPairs()), nor be swept (continuous.hpp).
 };
 
