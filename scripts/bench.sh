@@ -188,9 +188,9 @@ if [[ -f $bullet_data ]]; then
         /^\*\*Against the targets/ { inside = 1; next }
         /^\*\*/ { inside = 0 }
         # Issue #7: | target | measured | met? |. Issue #33: a row per scene,
-        # | scene | time | at least 2x? | figure | Stepwise / Bullet | better? |.
+        # | scene | time | at least 2x? | figure | Stepwise / Bullet | better? | where the step goes |.
         inside && /^\| / && !/^\| (target|scene) / {
-            if (NF == 8) { judge($4, $2 ": speed"); judge($7, $2 ": accuracy") }
+            if (NF == 9) { judge($4, $2 ": speed"); judge($7, $2 ": accuracy") }
             else judge($4, $2)
         }
         END { if (all) printf "%d of %d met%s", met, all, missed == "" ? "" : "; not met: " missed }' "$bullet_data")

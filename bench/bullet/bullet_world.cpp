@@ -249,4 +249,6 @@ int BulletWorld::manifoldCount() const { return dispatcher_->getNumManifolds(); 
 
 void BulletWorld::setSolverIterations(int iterations) { world_->getSolverInfo().m_numIterations = iterations; }
 
+int BulletWorld::solverIterations() const { return world_->getSolverInfo().m_numIterations; }
+
 }  // namespace stepwise::bench

@@ -82,6 +82,8 @@ public:
     int manifoldCount() const;
     /// @brief Sets the sequential-impulse solver's iterations per step (Bullet's default: 10).
     void setSolverIterations(int iterations);
+    /// @brief The sequential-impulse solver's iterations per step.
+    int solverIterations() const;
 
 private:
     /// Translates one joint record (the table above), or throws naming it.

@@ -71,7 +71,8 @@ Table wallRain(std::size_t count, int steps, bool quick, std::vector<SceneFigure
               double(theirMeter.escaped(theirEnd)));
     table.add("largest speed at the end (m/s)", "%.3f", double(largestSpeed(ourEnd)), double(largestSpeed(theirEnd)));
     figures.push_back({"wall rain " + std::to_string(count), ourSeconds.cpu, theirSeconds.cpu,
-                       "worst overlap (mm)", kMs * double(ourMeter.worstOverlap()), kMs * double(theirMeter.worstOverlap())});
+                       "worst overlap (mm)", kMs * double(ourMeter.worstOverlap()), kMs * double(theirMeter.worstOverlap()),
+                       whereTheStepGoes(scene, steps, ourSeconds.cpu, theirSeconds.cpu, theirs.solverIterations())});
     return table;
 }
 
@@ -112,7 +113,8 @@ Table boxPile(std::size_t count, bool quick, std::vector<SceneFigure>& figures) 
     const double ourWorst = double(std::max(ourMeter.worstBoxOverlap(), ourMeter.worstWallOverlap()));
     const double theirWorst = double(std::max(theirMeter.worstBoxOverlap(), theirMeter.worstWallOverlap()));
     figures.push_back({"box pile " + std::to_string(count), ourSeconds.cpu, theirSeconds.cpu, "worst overlap (mm)",
-                       kMs * ourWorst, kMs * theirWorst});
+                       kMs * ourWorst, kMs * theirWorst,
+                       whereTheStepGoes(scene, steps, ourSeconds.cpu, theirSeconds.cpu, theirs.solverIterations())});
     return table;
 }
 
@@ -158,7 +160,8 @@ Table chain(const std::string& path, bool quick, std::vector<SceneFigure>& figur
     table.addText("energy at the end, (E − E0) / (M·g·ℓ/2)", format("%+.2f %%", kPercent * drift(ourEnd)),
                   format("%+.2f %%", kPercent * drift(theirEnd)));
     figures.push_back({"chain", ourSeconds.cpu, theirSeconds.cpu, "worst joint gap (mm)",
-                       kMs * double(ourMeter.worstSeparation()), kMs * double(theirMeter.worstSeparation())});
+                       kMs * double(ourMeter.worstSeparation()), kMs * double(theirMeter.worstSeparation()),
+                       whereTheStepGoes(scene, steps, ourSeconds.cpu, theirSeconds.cpu, theirs.solverIterations())});
     return table;
 }
 
@@ -206,8 +209,38 @@ Table ragdoll(const std::string& path, bool quick, std::vector<SceneFigure>& fig
     table.addText("at rest at the end (every centre under 1 cm/s)", restText(largestSpeed(ourEnd)),
                   restText(largestSpeed(theirEnd)));
     figures.push_back({"ragdoll", ourSeconds.cpu, theirSeconds.cpu, "worst joint gap (mm)",
-                       kMs * double(ourJoints.worstSeparation()), kMs * double(theirJoints.worstSeparation())});
+                       kMs * double(ourJoints.worstSeparation()), kMs * double(theirJoints.worstSeparation()),
+                       whereTheStepGoes(scene, steps, ourSeconds.cpu, theirSeconds.cpu, theirs.solverIterations())});
     return table;
+}
+
+std::string whereTheStepGoes(const Scene& scene, int steps, double ourCpu, double theirCpu, int bulletIterations) {
+    if (theirCpu >= kSpeedTarget * ourCpu) return "";
+    World world(onOneThread(scene));
+    world.timeStages(true);
+    for (int i = 0; i < steps; ++i) world.step();
+    const StageRecords& records = world.stageRecords();
+    std::vector<std::pair<double, Stage>> stages;
+    double total = 0;
+    for (std::size_t k = 0; k < records.size(); ++k) {
+        total += records[k].totalSeconds;
+        stages.emplace_back(records[k].totalSeconds, static_cast<Stage>(k));
+    }
+    std::sort(stages.begin(), stages.end(), [](const auto& x, const auto& y) { return x.first > y.first; });
+    constexpr std::size_t kLargest = 3;
+    std::string text;
+    for (std::size_t k = 0; k < kLargest && k < stages.size() && total > 0; ++k) {
+        text += (k == 0 ? "" : ", ") + std::string(stageName(stages[k].second)) + " " +
+                format("%.0f %%", kPercent * stages[k].first / total);
+    }
+    const WorldSettings& s = scene.settings;
+    if (s.solver == SolverKind::SequentialImpulse) {
+        const int passes = s.substeps * (s.velocityIterations + s.relaxIterations);
+        text += "; " + std::to_string(passes) + " passes a step (" + std::to_string(s.substeps) + " substeps × " +
+                std::to_string(s.velocityIterations + s.relaxIterations) + "), Bullet " +
+                std::to_string(bulletIterations) + " iterations";
+    }
+    return text;
 }
 
 Table threadScaling(const std::vector<std::pair<std::string, Scene>>& scenes, int steps,

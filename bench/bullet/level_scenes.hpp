@@ -32,7 +32,17 @@ struct SceneFigure {
     std::string accuracy;      ///< The accuracy figure's name and unit, e.g. "worst overlap (mm)".
     double ours = 0;           ///< Stepwise's accuracy figure, in that unit (smaller is better).
     double theirs = 0;         ///< Bullet's.
+    std::string whereTimeGoes; ///< For a missed speed target: whereTheStepGoes(); empty when met.
 };
+
+/// @brief Stepwise at least this many times Bullet's speed (issues #7 and #33).
+inline constexpr double kSpeedTarget = 2;
+
+/// @brief Why a scene misses the speed target, in figures of this run: the three largest stages'
+/// shares of Stepwise's step over @p steps steps of @p scene on one thread, timed stage by stage
+/// (World::timeStages()), and the Gauss–Seidel passes a step against Bullet's @p bulletIterations.
+/// Empty when Bullet's @p theirCpu ÷ Stepwise's @p ourCpu meets kSpeedTarget (nothing is run then).
+std::string whereTheStepGoes(const Scene& scene, int steps, double ourCpu, double theirCpu, int bulletIterations);
 
 /// @brief Wall-clock time per step of one scene on one thread and on two, stepped in turn.
 struct ThreadFigure {
