@@ -102,18 +102,20 @@ const std::array<Vec3, 3> kBodyAxes = {Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 
 /// spread of 1e-12 as none changes ω by at most 1e-12 relative.
 constexpr Real kIsotropicTolerance = Real(1e-12);
 
+/// Two inverse moments that differ by at most kIsotropicTolerance of the larger count as equal.
+bool sameMoment(Real a, Real b) { return std::abs(a - b) <= kIsotropicTolerance * std::max(a, b); }
+
 bool isIsotropic(const Vec3& inverseInertiaBody) {
     const Real largest = std::max({inverseInertiaBody.x, inverseInertiaBody.y, inverseInertiaBody.z});
     const Real smallest = std::min({inverseInertiaBody.x, inverseInertiaBody.y, inverseInertiaBody.z});
-    return largest - smallest <= kIsotropicTolerance * largest;
+    return sameMoment(largest, smallest);
 }
 
 /// The symmetry axis (0, 1, 2) of a symmetric top, whose other two inverse moments are equal
-/// (within kIsotropicTolerance, relative), or −1 when no two are.
+/// (sameMoment()), or −1 when no two are.
 int symmetryAxis(const Vec3& inverseInertiaBody) {
-    const auto same = [](Real a, Real b) { return std::abs(a - b) <= kIsotropicTolerance * std::max(a, b); };
     for (int axis = 0; axis < 3; ++axis) {
-        if (same(inverseInertiaBody[(axis + 1) % 3], inverseInertiaBody[(axis + 2) % 3])) return axis;
+        if (sameMoment(inverseInertiaBody[(axis + 1) % 3], inverseInertiaBody[(axis + 2) % 3])) return axis;
     }
     return -1;
 }
