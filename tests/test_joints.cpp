@@ -363,8 +363,9 @@ TEST_CASE("The 100-link bench chain whips at 4 substeps without gaining energy o
     // 100 to 300 rad/s: 0.4 to 1.2 rad a substep, 2 to 5 rad a step. While the joints took each
     // body's world inverse inertia once a step, a link turned since then answered an impulse with
     // Δω = I⁻¹(q₀)·ΔL where the integrator then sets ω = I⁻¹(q)·L: for these rods, whose moments
-    // differ 8.3:1, up to 8.3 times the turn the joint asked for, and every warm start fed that
-    // back. The chain went to NaN at 9 s. warmStartJoints() takes I⁻¹ at each substep's start.
+    // differ 8.5:1 (m·(0.2² + 0.05²)/12 against m·(0.05² + 0.05²)/12), up to 8.5 times the turn
+    // the joint asked for, and every warm start fed that back. The chain went to NaN at 9 s.
+    // warmStartJoints() takes I⁻¹ at each substep's start.
     //
     // Nothing drives the chain, so its energy must never rise above the start's (1 % of
     // m g L / 2 = 9810 J for rounding and the O(h) wobble); a joint may give way under the whip's
