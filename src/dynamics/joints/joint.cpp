@@ -196,8 +196,8 @@ void prepareJoints(const BodySet& bodies, std::span<Joint> joints, bool warmStar
         j.joint = &joint;
         j.a = &a;
         j.b = b;
-        j.bodyA = placeOfBody(workspace, bodies.dynamics, joint.bodyA);
-        if (b) j.bodyB = placeOfBody(workspace, bodies.dynamics, joint.bodyB);
+        j.placeA = placeOfBody(workspace, bodies.dynamics, joint.bodyA);
+        if (b) j.placeB = placeOfBody(workspace, bodies.dynamics, joint.bodyB);
         j.inverseMassA = a.inverseMass;
         if (b) j.inverseMassB = b->inverseMass;
         workspace.joints.push_back(j);  // the inverse inertias: each substep (warmStartJoints())
@@ -216,8 +216,8 @@ void warmStartJoints(JointWorkspace& workspace, std::span<const Pose> poses) {
     }
     // Each type is handed what its rows read: the anchors (frameAt()), the orientations (orientationsAt()), or both.
     for (SolverJoint& j : workspace.joints) {
-        j.inverseInertiaA = workspace.inverseInertias[j.bodyA];
-        if (j.b) j.inverseInertiaB = workspace.inverseInertias[j.bodyB];
+        j.inverseInertiaA = workspace.inverseInertias[j.placeA];
+        if (j.b) j.inverseInertiaB = workspace.inverseInertias[j.placeB];
         switch (j.joint->kind) {
             case JointKind::Distance:
             case JointKind::Rope: warmStartAxial(j, frameAt(j, poses)); break;

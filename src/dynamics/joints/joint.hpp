@@ -117,8 +117,8 @@ struct SolverJoint {
     Joint* joint = nullptr;              ///< The joint (its accumulated impulses are updated in place).
     DynamicObject* a = nullptr;          ///< Body A.
     DynamicObject* b = nullptr;          ///< Body B, or nullptr for the world.
-    std::uint32_t bodyA = 0;             ///< A's place in JointWorkspace::bodies.
-    std::uint32_t bodyB = kNoJointBody;  ///< B's, or kNoJointBody for the world.
+    std::uint32_t placeA = 0;            ///< A's place in JointWorkspace::bodies (Joint::bodyA is its index among the dynamic bodies).
+    std::uint32_t placeB = kNoJointBody; ///< B's, or kNoJointBody for the world.
     Real inverseMassA = 0;               ///< 1/m_A, 1/kg.
     Real inverseMassB = 0;               ///< 1/m_B, or 0, 1/kg.
     Mat3 inverseInertiaA{0};             ///< A's world inverse inertia at the start of the substep (warmStartJoints()), 1/(kg·m²).
