@@ -9,6 +9,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -141,6 +142,36 @@ std::string engineSources() {
     return all;
 }
 
+bool isWordCharacter(char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_'; }
+
+std::size_t skipSpaces(const std::string& text, std::size_t at) {
+    while (at < text.size() && std::isspace(static_cast<unsigned char>(text[at])) != 0) ++at;
+    return at;
+}
+
+/// Whether SOURCES define FUNCTION: its name as a whole word, "(", and then, before the next ";",
+/// a ")" followed by an optional "const" and "{". A call or a declaration reaches a ";" first.
+/// This is the regex \bNAME\s*\([^;]*\)\s*(const\s*)?\{ scanned by hand: std::regex
+/// backtracks through every "(" of every engine file for each name, which under the
+/// sanitizers' -O0 made this test one of the slowest of the suite.
+bool definesFunction(const std::string& sources, const std::string& function) {
+    for (std::size_t at = sources.find(function); at != std::string::npos; at = sources.find(function, at + 1)) {
+        const std::size_t end = at + function.size();
+        if ((at > 0 && isWordCharacter(sources[at - 1])) || (end < sources.size() && isWordCharacter(sources[end]))) {
+            continue;  // part of a longer name
+        }
+        const std::size_t open = skipSpaces(sources, end);
+        if (open >= sources.size() || sources[open] != '(') continue;
+        const std::size_t stop = std::min(sources.find(';', open), sources.size());
+        for (std::size_t close = sources.find(')', open); close < stop; close = sources.find(')', close + 1)) {
+            std::size_t next = skipSpaces(sources, close + 1);
+            if (sources.compare(next, 5, "const") == 0) next = skipSpaces(sources, next + 5);
+            if (next < sources.size() && sources[next] == '{') return true;
+        }
+    }
+    return false;
+}
+
 /// The files under src/ whose path ends with /NAME (what stepwise.py's find_file() matches).
 std::vector<fs::path> sourcesNamed(const std::string& name) {
     std::vector<fs::path> found;
@@ -173,6 +204,17 @@ std::vector<fs::path> lectureSessions() {
 
 }  // namespace
 
+TEST_CASE("The breakpoint check tells a definition from a call, a declaration or a longer name", "[lectures]") {
+    CHECK(definesFunction("void World::step(Real dt) {", "step"));
+    CHECK(definesFunction("Real energy(const World& w)\n    const\n{", "energy"));
+    CHECK(definesFunction("bool fits(Vec3 a, std::pair<int, int> b) { return true; }", "fits"));
+    CHECK_FALSE(definesFunction("step(dt); if (x) {", "step"));           // a call: ";" comes first
+    CHECK_FALSE(definesFunction("void step(Real dt);\nint y() {", "step"));  // a declaration
+    CHECK_FALSE(definesFunction("void substep(Real dt) {", "step"));       // a longer name
+    CHECK_FALSE(definesFunction("void step_all(Real dt) {", "step"));
+    CHECK_FALSE(definesFunction("", "step"));
+}
+
 TEST_CASE("launch.json has one entry per lecture scene, with breakpoints that exist", "[lectures]") {
     const std::vector<std::string> entries = launchEntries();
     const std::string sources = engineSources();
@@ -203,7 +245,7 @@ TEST_CASE("launch.json has one entry per lecture scene, with breakpoints that ex
         for (auto it = std::sregex_iterator(text.begin(), text.end(), breakLine); it != std::sregex_iterator(); ++it) {
             const std::string function = (*it)[1];
             INFO("break " << function);
-            CHECK(std::regex_search(sources, std::regex("\\b" + function + "\\s*\\([^;]*\\)\\s*(const\\s*)?\\{")));
+            CHECK(definesFunction(sources, function));
             ++count;
         }
         CHECK(count >= 1);

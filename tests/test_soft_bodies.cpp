@@ -480,7 +480,9 @@ std::string describePatch(const SettledBall& b) {
 
 }  // namespace
 
-TEST_CASE("A soft ball squashes on a floor: the patch shrinks as the pressure rises, and holds up m*g", "[soft]") {
+// [slow]: three balls of 2562 nodes settled from a drop; over three minutes under the sanitizers, whose
+// build runs the soft stage in the shorter tests above. The Release tests run it.
+TEST_CASE("A soft ball squashes on a floor: the patch shrinks as the pressure rises, and holds up m*g", "[soft][slow]") {
     // The floor holds the ball at rest up with N = m·g. The nodes on the floor take N, their own
     // weight m_patch·g, the gas's push down on the patch, P·A (A counted by contactPatch()), and
     // the upward pull S of the springs that leave the patch:
