@@ -235,9 +235,9 @@ std::string whereTheStepGoes(const Scene& scene, int steps, double ourCpu, doubl
     }
     const WorldSettings& s = scene.settings;
     if (s.solver == SolverKind::SequentialImpulse) {
-        const int passes = s.substeps * (s.velocityIterations + s.relaxIterations);
-        text += "; " + std::to_string(passes) + " passes a step (" + std::to_string(s.substeps) + " substeps × " +
-                std::to_string(s.velocityIterations + s.relaxIterations) + "), Bullet " +
+        const int perSubstep = s.velocityIterations + s.relaxIterations;
+        text += "; " + std::to_string(s.substeps * perSubstep) + " passes a step (" + std::to_string(s.substeps) +
+                " substeps × " + std::to_string(perSubstep) + "), Bullet " +
                 std::to_string(bulletIterations) + " iterations";
     }
     return text;
