@@ -7,41 +7,43 @@
 #
 #   cmake -D TEST_EXECUTABLE=<stepwise_tests> -D LABELS_FILE=<out.cmake> -P catch_tags_as_labels.cmake
 #
-# Catch2 prints long tag lists wrapped over several lines in --list-tests, so
-# the tags come from --list-tags, and each tag's test cases from
-# "[tag]" --list-test-names-only, which prints one unwrapped name per line:
-# the same names catch_discover_tests gives the CTest tests.
+# The tags and names come from one run of the program's own listing, `--list-labels` (tests/main.cpp):
+# one line per test case, its tags "[a][b]", a tab, its name; the names are the ones
+# catch_discover_tests gives the CTest tests (Catch2's --list-test-names-only prints the same).
 cmake_minimum_required(VERSION 3.20)
 
-execute_process(COMMAND "${TEST_EXECUTABLE}" --list-tags
-                OUTPUT_VARIABLE tag_listing RESULT_VARIABLE listed)
-if(listed LESS 0)
-  message(FATAL_ERROR "catch_tags_as_labels: cannot run ${TEST_EXECUTABLE} --list-tags")
+execute_process(COMMAND "${TEST_EXECUTABLE}" --list-labels
+                OUTPUT_VARIABLE listing RESULT_VARIABLE listed)
+if(NOT listed EQUAL 0)
+  message(FATAL_ERROR "catch_tags_as_labels: ${TEST_EXECUTABLE} --list-labels failed (${listed})")
 endif()
-string(REGEX MATCHALL "\\[[^]\n]+\\]" tags "${tag_listing}")
+string(REPLACE "\n" ";" lines "${listing}")
 
 set(test_keys "")
-foreach(tag_in_brackets IN LISTS tags)
-  string(REGEX REPLACE "^\\[(.*)\\]$" "\\1" tag "${tag_in_brackets}")
-  # Hidden ([.]) and special ([!mayfail]) tags are switches, not stages.
-  if(tag MATCHES "^[.!]")
+foreach(line IN LISTS lines)
+  string(FIND "${line}" "\t" tab)
+  if(tab LESS 0)
     continue()
   endif()
-  execute_process(COMMAND "${TEST_EXECUTABLE}" "[${tag}]" --list-test-names-only
-                  OUTPUT_VARIABLE names RESULT_VARIABLE listed)
-  string(REPLACE "\n" ";" names "${names}")
-  foreach(name IN LISTS names)
-    if(name STREQUAL "")
+  string(SUBSTRING "${line}" 0 ${tab} tag_text)
+  math(EXPR name_start "${tab} + 1")
+  string(SUBSTRING "${line}" ${name_start} -1 name)
+  # Test names may hold any character; a hash makes a safe variable name.
+  string(MD5 key "${name}")
+  set(name_${key} "${name}")
+  set(labels_${key} "")
+  string(REGEX MATCHALL "\\[[^]]+\\]" tags "${tag_text}")
+  foreach(tag_in_brackets IN LISTS tags)
+    string(REGEX REPLACE "^\\[(.*)\\]$" "\\1" tag "${tag_in_brackets}")
+    # Hidden ([.]) and special ([!mayfail]) tags are switches, not stages.
+    if(tag MATCHES "^[.!]")
       continue()
-    endif()
-    # Test names may hold any character; a hash makes a safe variable name.
-    string(MD5 key "${name}")
-    if(NOT DEFINED name_${key})
-      set(name_${key} "${name}")
-      list(APPEND test_keys ${key})
     endif()
     list(APPEND labels_${key} "${tag}")
   endforeach()
+  if(labels_${key})
+    list(APPEND test_keys ${key})
+  endif()
 endforeach()
 
 set(script "# Written by tests/catch_tags_as_labels.cmake: Catch2 tags as CTest labels.\n")
