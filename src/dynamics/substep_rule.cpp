@@ -44,6 +44,7 @@ const char* substepReasonName(SubstepReason reason) {
         case SubstepReason::Stiffness: return "stiffness";
         case SubstepReason::FreeFlight: return "free flight";
         case SubstepReason::Cap: return "cap";
+        case SubstepReason::Joint: return "joint";
     }
     return "?";
 }
@@ -93,15 +94,16 @@ int islandSubstepCount(std::uint32_t height, Real massRatio, Real speed, Real ha
     return count;
 }
 
-bool chooseIslandSubsteps(const BodySet& bodies, std::span<const Contact> contacts, const SubstepRuleInputs& inputs,
-                          SubstepGroups& g) {
+bool chooseIslandSubsteps(const BodySet& bodies, std::span<const Contact> contacts, std::span<const BodyLink> links,
+                          const SubstepRuleInputs& inputs, SubstepGroups& g) {
     const auto n = static_cast<std::uint32_t>(bodies.dynamics.size());
     g.parent.resize(n);
     g.supported.assign(n, 0);
     g.adjacencyStart.assign(n + 1, 0);
     for (std::uint32_t i = 0; i < n; ++i) g.parent[i] = i;
 
-    // 1. Islands: union–find over the contacts between dynamic bodies; count each body's neighbours.
+    // 1. Islands: union–find over the contacts between dynamic bodies (each body's neighbours
+    //    counted for the height) and over the joints.
     for (const Contact& c : contacts) {
         if (c.b.kind == BodyKind::Dynamic) {
             const std::uint32_t ra = findRoot(g.parent, c.a);
@@ -112,6 +114,14 @@ bool chooseIslandSubsteps(const BodySet& bodies, std::span<const Contact> contac
         } else {
             g.supported[c.a] = 1;  // a plane or a kinematic body carries it
         }
+    }
+    // A joint joins its two bodies into one island too (not into the height's layers: a hanging
+    // chain is not a stack), and one to the world joins nothing.
+    for (const BodyLink& link : links) {
+        if (link.b == kWorldAnchor) continue;
+        const std::uint32_t ra = findRoot(g.parent, link.a);
+        const std::uint32_t rb = findRoot(g.parent, link.b);
+        if (ra != rb) g.parent[std::max(ra, rb)] = std::min(ra, rb);
     }
     for (std::uint32_t i = 0; i < n; ++i) g.adjacencyStart[i + 1] += g.adjacencyStart[i];
     g.adjacency.resize(g.adjacencyStart[n]);
@@ -137,6 +147,8 @@ bool chooseIslandSubsteps(const BodySet& bodies, std::span<const Contact> contac
         ++g.islands[g.islandOfBody[i]].bodies;
         g.halfSize[i] = leastHalfSize(bodies.dynamics[i]);
     }
+
+    for (const BodyLink& link : links) ++g.islands[g.islandOfBody[link.a]].joints;
 
     // 3. Mass ratio and relative speed across each contact
     for (const Contact& c : contacts) {
@@ -202,7 +214,10 @@ bool chooseIslandSubsteps(const BodySet& bodies, std::span<const Contact> contac
         // A free body's integration error depends on h_s if it accelerates or a non-ball turns
         const bool accelerated = first.acceleration != Vec3(0) ||
                                  (first.shape != Shape::Sphere && first.angularVelocity != Vec3(0));
-        if (first.asleep && island.bodies == 1) {
+        if (island.joints > 0) {
+            island.count = inputs.cap;  // the joint passes run at the scene's h_s (the file's header says why)
+            island.reason = SubstepReason::Joint;
+        } else if (first.asleep && island.bodies == 1) {
             island.count = kMinIslandSubsteps;  // not integrated, not solved: nothing depends on h_s
             island.reason = SubstepReason::Minimum;
         } else {

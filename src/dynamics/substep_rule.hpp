@@ -6,8 +6,8 @@
 /// 100:1 stack. A settled pile of a few equal boxes, or balls lying on the
 /// floor, reach the same answer with far fewer, and a scene pays for its
 /// worst island in every island. With `SubstepsPerIsland=true` the World
-/// finds the islands of this step (bodies joined by this step's contacts;
-/// planes and kinematic bodies join nothing) before the substeps, gives each
+/// finds the islands of this step (bodies joined by this step's contacts and
+/// by the joints; planes and kinematic bodies join nothing) before the substeps, gives each
 /// island its own count n ≤ `Substeps`, and runs the substeps of each group
 /// of islands with one count on that group's bodies and contacts alone. An
 /// island's substeps read and write only its own bodies, so the groups do
@@ -51,11 +51,18 @@
 ///   explicit Euler err by ½·a·t·h_s, which the scene's count sets, so an
 ///   accelerated free body keeps the full count.
 ///
-/// **Whole scene at the fixed count.** Joints, springs, attractors and
-/// moving kinematic bodies act inside every substep on whatever they hold
-/// (the joint passes, the forces worked out again each substep, a kinematic
-/// body moved h_s at a time); a scene with any of them runs every island at
-/// N (the plan says so).
+/// **Joints: the island at the fixed count.** A joint is solved in every
+/// pass of every substep, and how well it holds depends on h_s: a chain's
+/// links stretch farther, and its soft rows are stiffer, at fewer substeps
+/// (JointHertz is capped by the substep rate like ContactHertz). The rule has
+/// no term for that, so an island a joint holds (any body of it jointed to
+/// another or to the world) runs N, reason `joint`, and computes the very
+/// numbers of the fixed count; the islands beside it still get their own.
+///
+/// **Whole scene at the fixed count.** Springs, attractors and moving
+/// kinematic bodies act inside every substep on whatever they hold (the
+/// forces worked out again each substep, a kinematic body moved h_s at a
+/// time); a scene with any of them runs every island at N (the plan says so).
 ///
 /// References: Catto, "Solver2D" and "Soft Step" (box2d.org, 2024) on
 /// substeps against stacks and mass ratios; Tonge, "Iterative Rigid Body
@@ -68,6 +75,7 @@
 
 #include "collision/contact.hpp"
 #include "dynamics/contact_solver.hpp"
+#include "dynamics/islands.hpp"
 #include "core/world_settings.hpp"
 #include "objects/body_set.hpp"
 
@@ -93,6 +101,7 @@ enum class SubstepReason : std::uint8_t {
     Stiffness,  ///< n_K: the substeps that keep its contacts at kMinContactHertz.
     FreeFlight, ///< No contacts, integrated by an integrator whose error depends on h_s.
     Cap,        ///< A term asked for more than `Substeps`: the full count.
+    Joint,      ///< A joint holds one of its bodies: the full count (the file's header says why).
 };
 
 /// @brief A one-word name of @p reason ("height", "mass ratio", …).
@@ -103,6 +112,7 @@ struct IslandSubsteps {
     std::uint32_t firstBody = 0;  ///< Its lowest body index (names the island).
     std::uint32_t bodies = 0;     ///< How many dynamic bodies it holds.
     std::uint32_t contacts = 0;   ///< How many contact points it holds.
+    std::uint32_t joints = 0;     ///< How many acting joints hold its bodies (then it runs the full count).
     std::uint32_t height = 0;     ///< H: bodies on the longest path of contacts from a support.
     Real massRatio = 1;           ///< r: the largest mass ratio across one of its contacts.
     Real speed = 0;               ///< v: the relative speed across the contact with the largest v/s, m/s.
@@ -150,11 +160,13 @@ struct SubstepGroups {
 /// smallest half edge, for any other shape its reach (the farthest point from its centre).
 Real leastHalfSize(const DynamicObject& body);
 
-/// @brief Finds this step's islands from @p contacts, applies the rule to each, and lists each
-/// count's bodies (groups.counts, groups.groupBodies). Allocates nothing once the arrays have grown.
+/// @brief Finds this step's islands from @p contacts and the joints' @p links, applies the rule to
+/// each, and lists each count's bodies (groups.counts, groups.groupBodies). Allocates nothing once
+/// the arrays have grown.
+/// @param links one per acting joint (jointLinks()); b is kWorldAnchor for a joint to the world
 /// @return true if some island got fewer than inputs.cap substeps (else the fixed count runs as is).
-bool chooseIslandSubsteps(const BodySet& bodies, std::span<const Contact> contacts, const SubstepRuleInputs& inputs,
-                          SubstepGroups& groups);
+bool chooseIslandSubsteps(const BodySet& bodies, std::span<const Contact> contacts, std::span<const BodyLink> links,
+                          const SubstepRuleInputs& inputs, SubstepGroups& groups);
 
 /// @brief Lists each group's solver records and contacts (groups.groupRecords, groupRound,
 /// groupOther) from the prepared @p workspace, each in the order of the whole step's lists: so a

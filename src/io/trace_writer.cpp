@@ -352,7 +352,9 @@ void TraceObserver::writePreparedConstraints(const std::string& head, const Worl
         if (!objectSelected(first)) continue;
         line(head, "island " + first,
              std::to_string(island.bodies) + " bodies  " + std::to_string(island.contacts) + " contacts  height " +
-                 std::to_string(island.height) + "  mass ratio " + num(island.massRatio) + "  speed " +
+                 std::to_string(island.height) +
+                 (island.joints > 0 ? "  joints " + std::to_string(island.joints) : std::string()) +
+                 "  mass ratio " + num(island.massRatio) + "  speed " +
                  num(island.speed) + " m/s  -> " + std::to_string(island.count) + " substeps (" +
                  substepReasonName(island.reason) + ")");
     }

@@ -199,11 +199,11 @@ PlanDecision packedSubstepsOf(const PlanInputs& in, const StepPlan& plan) {
 }
 
 /// Per-island substeps (src/dynamics/substep_rule.hpp): what acts inside every substep on what it
-/// holds (joints, forces that follow the bodies, a moving kinematic body) keeps the whole scene at Substeps.
+/// holds (forces that follow the bodies, a moving kinematic body) keeps the whole scene at Substeps;
+/// a joint keeps its own island at Substeps, and the rule runs.
 PlanDecision islandSubstepsOf(const PlanInputs& in) {
     if (in.settings.solver == SolverKind::Impulse) return skip("not in the Impulse pipeline (it has no substeps)");
     if (!in.settings.substepsPerIsland) return skip("off: SubstepsPerIsland=false, every island runs Substeps");
-    if (!in.joints.empty()) return skip("off: joints act in every substep; every island runs Substeps");
     if (!in.springs.empty() || !in.attractors.empty() || regionsBesidesConveyors(in)) {
         return skip("off: springs, attractors or regions act in every substep; every island runs Substeps");
     }
@@ -216,7 +216,7 @@ PlanDecision islandSubstepsOf(const PlanInputs& in) {
     if (in.settings.substeps == 1) return skip("off: Substeps=1 leaves nothing to choose");
     if (!in.softBodies.empty()) return skip("off: soft bodies take every substep beside the rigid ones; every island runs Substeps");
     return run("runs (src/dynamics/substep_rule.hpp): each island max(height/P, 2*mass ratio, speed*h/(0.1*size), "
-               "4*h*60 Hz), a power of two, at most Substeps");
+               "4*h*60 Hz), a power of two, at most Substeps; an island a joint holds runs Substeps");
 }
 
 /// The order of a pass (src/dynamics/contact_colours.hpp): a setting that changes the numbers, shown so
@@ -534,6 +534,7 @@ std::string describeIslandSubsteps(std::span<const IslandSubsteps> islands, std:
         text += "  island " + bodies[island.firstBody].name + ": " + std::to_string(island.bodies) +
                 (island.bodies == 1 ? " body, " : " bodies, ") +
                 std::to_string(island.contacts) + " contacts, height " + std::to_string(island.height);
+        if (island.joints > 0) text += ", " + std::to_string(island.joints) + (island.joints == 1 ? " joint" : " joints");
         std::snprintf(number, sizeof number, "%.3g", double(island.massRatio));
         text += std::string(", mass ratio ") + number;
         std::snprintf(number, sizeof number, "%.3g", double(island.speed));

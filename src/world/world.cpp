@@ -391,7 +391,7 @@ void World::stepWithSequentialImpulses() {
         if (plan_.jointSolver.runs) prepareJoints(bodies(), joints_, settings_.warmStarting, jointWorkspace_);
         // Each island's substeps, from this step's contacts (src/dynamics/substep_rule.hpp)
         islandRuleRan_ = plan_.islandSubsteps.runs;
-        perIsland = islandRuleRan_ && chooseIslandSubsteps(bodies(), contacts_, ruleInputs, substepGroups_);
+        perIsland = islandRuleRan_ && chooseIslandSubsteps(bodies(), contacts_, links_, ruleInputs, substepGroups_);
         if (perIsland) splitSolverWork(solverWorkspace_, substepGroups_);
     });
 
@@ -400,7 +400,7 @@ void World::stepWithSequentialImpulses() {
     //      so that what a student watches is the textbook step.
     //      With an island given fewer than Substeps, each group of islands runs its own count (runIslandGroups()).
     if (perIsland) {
-        runIslandGroups(forces);
+        runIslandGroups(forces, jointSettings);
     } else if (plan_.fastPath.runs && observer_ == nullptr) {
         runFastPath(forces, contactSettings, jointSettings);
     } else {
@@ -479,7 +479,10 @@ void World::stepWithSequentialImpulses() {
 /// the rule runs in: step_plan.hpp), so running one group's substeps after another's gives what
 /// running them side by side would. Within a group every list keeps the order of the whole step's,
 /// so an island given the full count computes the numbers of `SubstepsPerIsland=false`.
-void World::runIslandGroups(const AccelerationFunction& forces) {
+///
+/// Every island a joint holds is in the group at the full count (substep_rule.hpp): that group runs
+/// the joint passes too, and warm-starts every substep from the impulses, as warmStart() does with joints.
+void World::runIslandGroups(const AccelerationFunction& forces, const JointSolverSettings& jointSettings) {
     const Real h = settings_.timeStep;
     SubstepGroups& g = substepGroups_;
     SolverWorkspace& w = solverWorkspace_;
@@ -500,6 +503,7 @@ void World::runIslandGroups(const AccelerationFunction& forces) {
         w.roundContacts.assign(round.begin(), round.end());
         w.otherContacts.assign(other.begin(), other.end());
         groupSubsteps_ = count;
+        const bool joints = plan_.jointSolver.runs && !jointWorkspace_.joints.empty() && count == settings_.substeps;
         for (int substep = 0; substep < count; ++substep) {
             substep_ = substep;
             runStage(Stage::Integrate, [&] {
@@ -509,19 +513,26 @@ void World::runIslandGroups(const AccelerationFunction& forces) {
                 }
             });
             runStage(Stage::SolveConstraints, [&] {
-                if (substep > 0) {  // the plan runs the rule only with accumulated impulses and no joints
+                if (substep > 0 && !joints) {  // the plan runs the rule only with accumulated impulses
                     warmStartFromLastSubstep(w, records);
                 } else {
                     recordSubstepStart(w, records);
+                    if (joints) warmStartJoints(jointWorkspace_, w.poses);
                     copyVelocitiesIn(w, records);
                     warmStartContacts(w, settings_.accumulateImpulses);
                 }
-                for (int pass = 0; pass < settings_.velocityIterations; ++pass) solveContacts(w, contactSettings, true);
+                for (int pass = 0; pass < settings_.velocityIterations; ++pass) {
+                    if (joints) solveJointsBetweenContactPasses(jointWorkspace_, w, records, jointSettings, true);
+                    solveContacts(w, contactSettings, true);
+                }
                 driftByVelocityChange(w, records, hs, settings_.integrator, substep + 1 == count);
             });
             runStage(Stage::RelaxConstraints, [&] {
                 recordKinematicPoses(bodies(), w);
-                for (int pass = 0; pass < settings_.relaxIterations; ++pass) solveContacts(w, contactSettings, false);
+                for (int pass = 0; pass < settings_.relaxIterations; ++pass) {
+                    if (joints) solveJointsBetweenContactPasses(jointWorkspace_, w, records, jointSettings, false);
+                    solveContacts(w, contactSettings, false);
+                }
                 copyVelocitiesOut(w, records);
             });
         }

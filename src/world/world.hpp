@@ -159,7 +159,7 @@ private:
     void solvePass(const ContactSolverSettings& contactSettings, const JointSolverSettings& jointSettings, bool useBias);
     void runFastPath(const AccelerationFunction& forces, const ContactSolverSettings& contactSettings,
                      const JointSolverSettings& jointSettings);
-    void runIslandGroups(const AccelerationFunction& forces);
+    void runIslandGroups(const AccelerationFunction& forces, const JointSolverSettings& jointSettings);
     void findRegionMembers(bool throughBroadphase);  // world_regions.cpp
     RegionForces regionForces(Real substepTime) const;  // world_regions.cpp
     void removeKilledBodies();                       // world_regions.cpp

@@ -251,6 +251,15 @@ void solveJointsBetweenContactPasses(JointWorkspace& joints, SolverWorkspace& co
     copyVelocitiesIn(contacts);
 }
 
+void solveJointsBetweenContactPasses(JointWorkspace& joints, SolverWorkspace& contacts,
+                                     std::span<const std::uint32_t> records, const JointSolverSettings& settings,
+                                     bool useBias) {
+    if (joints.joints.empty()) return;
+    copyVelocitiesOut(contacts, records);
+    solveJoints(joints, contacts.poses, settings, useBias);
+    copyVelocitiesIn(contacts, records);
+}
+
 std::size_t finishJoints(JointWorkspace& workspace, std::span<Joint> joints, Real substep, std::uint64_t step,
                          Real time, std::vector<BodyLink>& links) {
     std::size_t broke = 0;

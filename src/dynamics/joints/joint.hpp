@@ -198,6 +198,12 @@ void solveJoints(JointWorkspace& workspace, std::span<const Pose> poses, const J
 void solveJointsBetweenContactPasses(JointWorkspace& joints, SolverWorkspace& contacts,
                                      const JointSolverSettings& settings, bool useBias);
 
+/// @brief The same for one group of islands (World::runIslandGroups()): only the solver records
+/// @p records, the group's, are handed across. Every acting joint must hold bodies of that group.
+void solveJointsBetweenContactPasses(JointWorkspace& joints, SolverWorkspace& contacts,
+                                     std::span<const std::uint32_t> records, const JointSolverSettings& settings,
+                                     bool useBias);
+
 /// @brief After the substeps: breaks every joint whose force |λ_acc|/h_s exceeds its MaxForce (recorded with
 /// @p step and @p time), refreshes @p links when one broke, and makes each body's ω agree with its L again.
 /// @return the number of joints that broke in this step.
