@@ -2,7 +2,7 @@
 # Fuzzes the scene loader and the command line (tests/fuzz/): libFuzzer, with AddressSanitizer
 # and UndefinedBehaviorSanitizer, built by clang-14 (the `fuzz` preset).
 #
-#   scripts/fuzz.sh              builds, then runs each fuzzer for 60 s (what CI does)
+#   scripts/fuzz.sh              builds, then runs each fuzzer for 60 s, the two side by side (what CI does)
 #   scripts/fuzz.sh 3600         one hour each
 #   scripts/fuzz.sh --no-build 60
 #
@@ -43,21 +43,37 @@ find config lectures tests/fuzz/regressions/scenes -name '*.scene' -exec cp {} "
     printf '"%s"\n' "," "(" ")" "1/60" "true" "false" "1e308" "-0" "nan" "inf" "#" '\x0A'
 } > "$work/scene.dict"
 
-status=0
+# Each fuzzer's messages go to its own report, printed once both have stopped, so that two
+# fuzzers running side by side do not interleave their lines.
 run() {
     local target=$1
     shift
-    echo "fuzz.sh: $target for $seconds s" >&2
+    local report="$work/$target.report"
+    echo "fuzz.sh: $target for $seconds s" > "$report"
     if ! "$bin/$target" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
             -artifact_prefix="$work/artifacts/$target-" "$@" 2> "$work/$target.log"; then
-        echo "fuzz.sh: $target FAILED; the end of its log ($work/$target.log):" >&2
-        tail -40 "$work/$target.log" >&2
-        echo "fuzz.sh: reproduce with: $bin/$target $work/artifacts/$target-<crash file>" >&2
-        status=1
-        return
+        {
+            echo "fuzz.sh: $target FAILED; the end of its log ($work/$target.log):"
+            tail -40 "$work/$target.log"
+            echo "fuzz.sh: reproduce with: $bin/$target $work/artifacts/$target-<crash file>"
+        } >> "$report"
+        return 1
     fi
-    grep -E '^stat::(number_of_executed_units|new_units_added)' "$work/$target.log" | sed "s/^/fuzz.sh: $target: /" >&2
+    grep -E '^stat::(number_of_executed_units|new_units_added)' "$work/$target.log" | sed "s/^/fuzz.sh: $target: /" >> "$report"
 }
-run fuzz_scene_loader -dict="$work/scene.dict" "$work/corpus/scenes" "$work/seeds/scenes"
-run fuzz_command_line "$work/corpus/cli" tests/fuzz/seeds/cli tests/fuzz/regressions/cli
+# Side by side, a core each, when STEPWISE_JOBS (default 2) allows: each still fuzzes for its
+# $seconds, and the run takes half the time. STEPWISE_JOBS=1 runs one after the other.
+status=0
+if [[ ${STEPWISE_JOBS:-2} -ge 2 ]]; then
+    run fuzz_scene_loader -dict="$work/scene.dict" "$work/corpus/scenes" "$work/seeds/scenes" &
+    loader=$!
+    run fuzz_command_line "$work/corpus/cli" tests/fuzz/seeds/cli tests/fuzz/regressions/cli &
+    cli=$!
+    wait "$loader" || status=1
+    wait "$cli" || status=1
+else
+    run fuzz_scene_loader -dict="$work/scene.dict" "$work/corpus/scenes" "$work/seeds/scenes" || status=1
+    run fuzz_command_line "$work/corpus/cli" tests/fuzz/seeds/cli tests/fuzz/regressions/cli || status=1
+fi
+cat "$work/fuzz_scene_loader.report" "$work/fuzz_command_line.report" >&2
 exit $status
