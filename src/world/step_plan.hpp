@@ -178,9 +178,10 @@ struct PlanInputs {
 /// - **Substeps per island** (`SubstepsPerIsland=true`): not a skip, a
 ///   setting that changes the numbers of the islands it gives fewer than
 ///   `Substeps` (src/dynamics/substep_rule.hpp). It runs unless the scene has
-///   joints, springs or attractors, a moving kinematic body, or
+///   springs or attractors, a moving kinematic body, or
 ///   `AccumulateImpulses=false`: those act inside every substep, and the
-///   whole scene then keeps `Substeps`. A step in which some island gets
+///   whole scene then keeps `Substeps`. A joint keeps only its own island at
+///   `Substeps`. A step in which some island gets
 ///   fewer runs its groups of islands on the plain loop (the fast path then
 ///   waits for a step in which every island gets the full count).
 /// - **Soft bodies**: their stage runs when the scene has one; without, it

@@ -389,7 +389,7 @@ void World::stepWithSequentialImpulses() {
         // A joint's or a spring's anchor on a ball turns with it; nothing else inside a step reads how a ball is turned
         solverWorkspace_.ballsTurnOnce = links_.empty() && springs_.empty();
         if (plan_.jointSolver.runs) prepareJoints(bodies(), joints_, settings_.warmStarting, jointWorkspace_);
-        // Each island's substeps, from this step's contacts (src/dynamics/substep_rule.hpp)
+        // Each island's substeps, from this step's contacts and the joints (src/dynamics/substep_rule.hpp)
         islandRuleRan_ = plan_.islandSubsteps.runs;
         perIsland = islandRuleRan_ && chooseIslandSubsteps(bodies(), contacts_, links_, ruleInputs, substepGroups_);
         if (perIsland) splitSolverWork(solverWorkspace_, substepGroups_);
