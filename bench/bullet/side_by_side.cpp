@@ -181,11 +181,13 @@ void printIssue33Targets(std::FILE* out, const Targets& t, bool markdown) {
         // A figure a run could not measure (NaN: too few steps for a period) has no verdict.
         const bool better = f.ours < f.theirs || (f.ours == 0 && f.theirs == 0);
         const bool measured = !std::isnan(f.ours) && !std::isnan(f.theirs);
+        // "unmeasured", not "nan": the scene's own table gives the reason in its note row
+        const auto figure = [](double value) { return std::isnan(value) ? std::string("unmeasured") : format("%.3g", value); };
         rows.push_back({f.scene,
                         format("%.3f", kMs * f.ourCpu) + " / " + format("%.3f", kMs * f.theirCpu) + " ms (" +
                             format("%.2f×", speed) + ")",
                         verdict(speed >= kSpeedTarget), f.accuracy,
-                        format("%.3g", f.ours) + " / " + format("%.3g", f.theirs), measured ? verdict(better) : "—",
+                        figure(f.ours) + " / " + figure(f.theirs), measured ? verdict(better) : "—",
                         f.whereTimeGoes});
     }
     if (markdown) {
