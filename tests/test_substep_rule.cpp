@@ -155,7 +155,8 @@ namespace {
 /// Three islands: a pendulum swinging from the world (a joint, no contact), a dumbbell of two balls
 /// joined by a rod lying on the ground (a joint and contacts), and a ball at rest on the ground.
 /// The bodies are listed so that each island's first body is the one named: bob, left, ball.
-Scene jointedScene(bool perIsland) {
+/// @p sleeping sets Sleep (the file's World record says false).
+Scene jointedScene(bool perIsland, bool sleeping = false) {
     Scene scene = parseScene(
         "World, Sleep=false\n"
         "CollisionPlane, 0, 0, 0, 0, 1, 0\n"
@@ -167,6 +168,7 @@ Scene jointedScene(bool perIsland) {
         "DynamicObject, Name=ball, Shape=Sphere, Radius=0.5, Position=(20, 0.5, 0)\n",
         "test");
     scene.settings.substepsPerIsland = perIsland;
+    scene.settings.sleeping = sleeping;
     return scene;
 }
 
@@ -195,8 +197,12 @@ TEST_CASE("A joint keeps its own island at the full count, and the islands besid
 }
 
 TEST_CASE("An island a joint holds computes what the fixed count computes, bit for bit", "[substeps][joints]") {
-    World perIsland(jointedScene(true));
-    World fixed(jointedScene(false));
+    // With Sleep=true the dumbbell, at rest from the start, falls asleep with its joint; the pendulum
+    // swings on, and its island (now of one joint among two, the other asleep) keeps the full count.
+    const bool sleeping = GENERATE(false, true);
+    INFO((sleeping ? "Sleep=true" : "Sleep=false"));
+    World perIsland(jointedScene(true, sleeping));
+    World fixed(jointedScene(false, sleeping));
     constexpr int kSteps = 120;  // two seconds: most of a swing of the pendulum (period 2.4 s)
     constexpr std::size_t kJointed = 3;  // bob, left, right
     Real lowest = perIsland.dynamics()[0].position.y;
@@ -211,6 +217,8 @@ TEST_CASE("An island a joint holds computes what the fixed count computes, bit f
     // √2 m below the pivot (a step of 1/60 s there, at 2.85 m/s, samples it within 1 mm)
     CHECK(lowest == Approx(6 - std::sqrt(Real(2))).margin(0.005));
     CHECK(fixed.islandSubsteps().empty());
+    CHECK(perIsland.dynamics()[1].asleep == sleeping);  // the dumbbell slept, or never could
+    CHECK_FALSE(perIsland.dynamics()[0].asleep);       // the pendulum never stops
 }
 
 TEST_CASE("A ball in free flight under Verlet runs one substep and falls exactly", "[substeps]") {
