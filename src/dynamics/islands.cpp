@@ -12,21 +12,6 @@ namespace stepwise {
 
 namespace {
 
-/// Root of i's tree, halving the path on the way (Tarjan): near-constant time.
-std::uint32_t findRoot(std::vector<std::uint32_t>& parent, std::uint32_t i) {
-    while (parent[i] != i) {
-        parent[i] = parent[parent[i]];
-        i = parent[i];
-    }
-    return i;
-}
-
-void join(std::vector<std::uint32_t>& parent, std::uint32_t a, std::uint32_t b) {
-    const std::uint32_t ra = findRoot(parent, a);
-    const std::uint32_t rb = findRoot(parent, b);
-    if (ra != rb) parent[std::max(ra, rb)] = std::min(ra, rb);  // the lower index is the root: deterministic
-}
-
 bool isMovingKinematic(const BodySet& bodies, const BodyRef& ref) {
     if (ref.kind != BodyKind::Kinematic) return false;
     const KinematicsObject& k = bodies.kinematics[ref.index];
@@ -165,17 +150,17 @@ std::size_t updateSleep(const BodySet& bodies, std::span<const Contact> contacts
     for (std::uint32_t i = 0; i < units; ++i) workspace.parent[i] = i;
     workspace.carried.clear();
     for (const Contact& contact : contacts) {
-        if (contact.b.kind == BodyKind::Dynamic) join(workspace.parent, contact.a, contact.b.index);
+        if (contact.b.kind == BodyKind::Dynamic) joinIslands(workspace.parent, contact.a, contact.b.index);
         else if (isMovingKinematic(bodies, contact.b)) workspace.carried.push_back(contact.a);
     }
     for (const BodyLink& link : links) {
-        if (link.b != kWorldAnchor) join(workspace.parent, link.a, link.b);
+        if (link.b != kWorldAnchor) joinIslands(workspace.parent, link.a, link.b);
     }
     for (std::uint32_t k = 0; k < softBodies.size(); ++k) {  // what each soft body's nodes touched (src/soft/)
         const auto unit = static_cast<std::uint32_t>(n + k);
-        for (const std::uint32_t body : softBodies[k].touchedDynamics) join(workspace.parent, unit, body);
+        for (const std::uint32_t body : softBodies[k].touchedDynamics) joinIslands(workspace.parent, unit, body);
         for (const std::uint32_t other : softBodies[k].touchedSoftBodies) {
-            join(workspace.parent, unit, static_cast<std::uint32_t>(n + other));
+            joinIslands(workspace.parent, unit, static_cast<std::uint32_t>(n + other));
         }
     }
 
@@ -210,12 +195,12 @@ std::size_t updateSleep(const BodySet& bodies, std::span<const Contact> contacts
         lastVelocity = body.velocity;
         lastAngularVelocity = body.angularVelocity;
         body.stillTime = slow && balanced ? body.stillTime + h : Real(0);
-        Real& least = workspace.islandStillTime[findRoot(workspace.parent, i)];
+        Real& least = workspace.islandStillTime[findIslandRoot(workspace.parent, i)];
         least = std::min(least, body.stillTime);
     }
     for (const std::uint32_t a : workspace.carried) {  // carried by a moving platform is not still
         dynamics[a].stillTime = 0;
-        if (!dynamics[a].asleep) workspace.islandStillTime[findRoot(workspace.parent, a)] = 0;
+        if (!dynamics[a].asleep) workspace.islandStillTime[findIslandRoot(workspace.parent, a)] = 0;
     }
     // A soft body is still when every node is slower than the linear sleep speed (a node has no
     // spin); one node on a moving kinematic body makes it carried, never still.
@@ -228,7 +213,7 @@ std::size_t updateSleep(const BodySet& bodies, std::span<const Contact> contacts
         workspace.softNodeSpeed[k] = std::sqrt(fastest2);
         const bool still = !soft.carried && fastest2 < linear2;
         soft.stillTime = still ? soft.stillTime + h : Real(0);
-        Real& least = workspace.islandStillTime[findRoot(workspace.parent, static_cast<std::uint32_t>(n + k))];
+        Real& least = workspace.islandStillTime[findIslandRoot(workspace.parent, static_cast<std::uint32_t>(n + k))];
         least = std::min(least, soft.stillTime);
     }
 
@@ -242,7 +227,7 @@ std::size_t updateSleep(const BodySet& bodies, std::span<const Contact> contacts
     for (std::uint32_t i = 0; i < n; ++i) {
         DynamicObject& body = dynamics[i];
         if (body.asleep) continue;
-        const std::uint32_t root = findRoot(workspace.parent, i);
+        const std::uint32_t root = findIslandRoot(workspace.parent, i);
         if (workspace.islandStillTime[root] >= settings.timeToSleep) {
             body.asleep = true;
             body.sleepIsland = workspace.nextSleepIsland + root;
@@ -255,7 +240,7 @@ std::size_t updateSleep(const BodySet& bodies, std::span<const Contact> contacts
     for (std::uint32_t k = 0; k < softBodies.size(); ++k) {
         SoftBody& soft = softBodies[k];
         if (soft.asleep) continue;
-        const std::uint32_t root = findRoot(workspace.parent, static_cast<std::uint32_t>(n + k));
+        const std::uint32_t root = findIslandRoot(workspace.parent, static_cast<std::uint32_t>(n + k));
         if (workspace.islandStillTime[root] >= settings.timeToSleep) {
             soft.asleep = true;
             soft.sleepIsland = workspace.nextSleepIsland + root;

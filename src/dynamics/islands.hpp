@@ -50,6 +50,7 @@
 /// References: Catto, Box2D `b2_island.c`/`solver_set.c`; Ericson §6.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -68,6 +69,24 @@ struct BodyLink {
     std::uint32_t a = 0;  ///< Index of a dynamic body.
     std::uint32_t b = 0;  ///< Index of a dynamic body, or kWorldAnchor.
 };
+
+/// @brief The root of @p i's tree in the union–find forest @p parent, halving the path on the way
+/// (Tarjan): near-constant time. Shared by the sleep's islands and the substep rule's.
+inline std::uint32_t findIslandRoot(std::vector<std::uint32_t>& parent, std::uint32_t i) {
+    while (parent[i] != i) {
+        parent[i] = parent[parent[i]];
+        i = parent[i];
+    }
+    return i;
+}
+
+/// @brief Joins the trees of @p a and @p b in @p parent; the lower index is the root, so an island's
+/// root is its lowest body whatever the order of the joins.
+inline void joinIslands(std::vector<std::uint32_t>& parent, std::uint32_t a, std::uint32_t b) {
+    const std::uint32_t ra = findIslandRoot(parent, a);
+    const std::uint32_t rb = findIslandRoot(parent, b);
+    if (ra != rb) parent[std::max(ra, rb)] = std::min(ra, rb);
+}
 
 /// @brief Scratch arrays for building islands, reused every step.
 struct IslandWorkspace {

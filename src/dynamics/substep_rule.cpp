@@ -15,14 +15,6 @@ namespace {
 /// 60 Hz · (1/60 s) / 0.25 is 4 on paper and 4.000000000000001 in floating point: what is taken off before ⌈·⌉.
 constexpr Real kStiffnessRounding = Real(1e-9);
 
-std::uint32_t findRoot(std::vector<std::uint32_t>& parent, std::uint32_t i) {
-    while (parent[i] != i) {
-        parent[i] = parent[parent[i]];  // path halving
-        i = parent[i];
-    }
-    return i;
-}
-
 /// The smallest power of two ≥ @p n, or @p cap if that is smaller: the counts fall into few groups.
 int roundUpToGroup(int n, int cap) {
     int count = 1;
@@ -106,9 +98,7 @@ bool chooseIslandSubsteps(const BodySet& bodies, std::span<const Contact> contac
     //    counted for the height) and over the joints.
     for (const Contact& c : contacts) {
         if (c.b.kind == BodyKind::Dynamic) {
-            const std::uint32_t ra = findRoot(g.parent, c.a);
-            const std::uint32_t rb = findRoot(g.parent, c.b.index);
-            if (ra != rb) g.parent[std::max(ra, rb)] = std::min(ra, rb);  // the lower index stays the root
+            joinIslands(g.parent, c.a, c.b.index);  // the lower index stays the root
             ++g.adjacencyStart[c.a + 1];
             ++g.adjacencyStart[c.b.index + 1];
         } else {
@@ -118,10 +108,7 @@ bool chooseIslandSubsteps(const BodySet& bodies, std::span<const Contact> contac
     // A joint joins its two bodies into one island too (not into the height's layers: a hanging
     // chain is not a stack), and one to the world joins nothing.
     for (const BodyLink& link : links) {
-        if (link.b == kWorldAnchor) continue;
-        const std::uint32_t ra = findRoot(g.parent, link.a);
-        const std::uint32_t rb = findRoot(g.parent, link.b);
-        if (ra != rb) g.parent[std::max(ra, rb)] = std::min(ra, rb);
+        if (link.b != kWorldAnchor) joinIslands(g.parent, link.a, link.b);
     }
     for (std::uint32_t i = 0; i < n; ++i) g.adjacencyStart[i + 1] += g.adjacencyStart[i];
     g.adjacency.resize(g.adjacencyStart[n]);
@@ -137,7 +124,7 @@ bool chooseIslandSubsteps(const BodySet& bodies, std::span<const Contact> contac
     g.islandOfBody.resize(n);
     g.halfSize.resize(n);
     for (std::uint32_t i = 0; i < n; ++i) {
-        const std::uint32_t root = findRoot(g.parent, i);
+        const std::uint32_t root = findIslandRoot(g.parent, i);
         if (root == i) {
             g.islandOfBody[i] = static_cast<std::uint32_t>(g.islands.size());
             g.islands.push_back(IslandSubsteps{.firstBody = i});
